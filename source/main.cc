@@ -1,0 +1,10 @@
+#include <ddcontact/version.h>
+
+#include <iostream>
+
+int
+main()
+{
+  std::cout << ddcontact::version_banner() << std::endl;
+  return 0;
+}
