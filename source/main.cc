@@ -1,10 +1,110 @@
-#include <ddcontact/version.h>
+// ddcontact: frictionless contact of linear elastic bodies in plane strain,
+// by penalty and parallel Neumann domain decomposition. This file only reads
+// the command line; everything else is in the library.
 
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
+
+#include <ddcontact/parameters.h>
+#include <ddcontact/simulation.h>
+
+#include <filesystem>
 #include <iostream>
 
-int
-main()
+namespace
 {
-  std::cout << ddcontact::version_banner() << std::endl;
+  void
+  print_usage(std::ostream &out)
+  {
+    out << "Usage: ddcontact [options] FILE.prm\n"
+           "  --output DIR               write results to DIR (overrides "
+           "'Output directory')\n"
+           "  --set \"Section/Entry=value\" override one entry of FILE.prm "
+           "(repeatable)\n"
+           "  --print-parameters         print all entries with their "
+           "documentation\n"
+           "                             (of FILE.prm if given, else the "
+           "defaults)\n"
+           "  --help                     this text\n";
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  using namespace ddcontact;
+  try
+  {
+    Utilities::MPI::MPI_InitFinalize mpi(
+      argc, argv, numbers::invalid_unsigned_int);
+
+    std::string              parameter_file, output_directory;
+    std::vector<std::string> overrides;
+    bool                     print_parameters = false;
+    for (int i = 1; i < argc; ++i)
+    {
+      const std::string arg = argv[i];
+      if (arg == "--help" || arg == "-h")
+      {
+        print_usage(std::cout);
+        return 0;
+      }
+      else if (arg == "--print-parameters")
+        print_parameters = true;
+      else if (arg == "--output" || arg == "--set")
+      {
+        if (i + 1 == argc)
+          throw InputError(arg + " needs a value");
+        (arg == "--output" ? output_directory = argv[++i]
+                           : (overrides.emplace_back(argv[++i]), ""));
+      }
+      else if (arg.rfind("--", 0) == 0)
+        throw InputError("unknown option '" + arg + "' (see --help)");
+      else if (parameter_file.empty())
+        parameter_file = arg;
+      else
+        throw InputError("more than one parameter file given ('" +
+                         parameter_file + "', '" + arg + "')");
+    }
+
+    if (print_parameters && parameter_file.empty())
+    {
+      ParameterReader::print_defaults(std::cout);
+      return 0;
+    }
+    if (parameter_file.empty())
+    {
+      print_usage(std::cerr);
+      return 2;
+    }
+
+    if (!output_directory.empty())
+      overrides.push_back("Output directory=" + output_directory);
+    const ParameterReader reader(parameter_file, overrides);
+    if (print_parameters)
+    {
+      reader.print(std::cout);
+      return 0;
+    }
+
+    const auto &scene = reader.scene();
+    if (scene.n_threads > 0)
+      MultithreadInfo::set_thread_limit(scene.n_threads);
+    std::filesystem::create_directories(scene.output_directory);
+    reader.write_used(scene.output_directory + "/parameters.prm");
+
+    Simulation simulation(scene, std::cout);
+    simulation.run();
+  }
+  catch (const InputError &e)
+  {
+    std::cerr << "ddcontact: error: " << e.what() << std::endl;
+    return 1;
+  }
+  catch (const std::exception &e)
+  {
+    std::cerr << "ddcontact: error: " << e.what() << std::endl;
+    return 3;
+  }
   return 0;
 }

@@ -22,7 +22,7 @@ namespace ddcontact
   template <int dim>
   struct DirichletCondition
   {
-    ComponentMask                   mask;
+    ComponentMask                  mask;
     std::shared_ptr<Function<dim>> displacement;
   };
 
@@ -34,9 +34,9 @@ namespace ddcontact
   template <int dim>
   struct BoundaryConditions
   {
-    std::map<types::boundary_id, DirichletCondition<dim>>         dirichlet;
+    std::map<types::boundary_id, DirichletCondition<dim>>        dirichlet;
     std::map<types::boundary_id, std::shared_ptr<Function<dim>>> neumann;
-    std::set<types::boundary_id>                                  contact;
+    std::set<types::boundary_id>                                 contact;
 
     /** Optional body force (dim components); nullptr means none. */
     std::shared_ptr<Function<dim>> body_force;

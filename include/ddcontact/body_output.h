@@ -1,0 +1,50 @@
+#ifndef ddcontact_body_output_h
+#define ddcontact_body_output_h
+
+#include <deal.II/lac/vector.h>
+
+#include <ddcontact/elastic_body.h>
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * Writes the bodies of a scene for ParaView: per step one VTU file per
+   * body, a .pvtu that groups the bodies of that step, and a .pvd record
+   * (solution.pvd) that lists all steps, so that ParaView opens the whole
+   * run at once. Every body carries the displacement (vector), the stress
+   * components sigma_11, sigma_22, sigma_12, sigma_33 = nu (sigma_11 +
+   * sigma_22), the von Mises stress, the body id and the refinement level;
+   * further cell fields (e.g. an error estimator) may be added per body;
+   * bodies that lack a field get zeros so that all pieces match.
+   */
+  class OutputWriter
+  {
+  public:
+    /** Cell fields by name, each of size n_active_cells. */
+    using CellData = std::map<std::string, Vector<double>>;
+
+    explicit OutputWriter(const std::string &directory);
+
+    /** Write step @p step (labelled @p time in ParaView) for all bodies;
+     * @p solutions[b] is the displacement of bodies[b]. */
+    void
+    write_step(unsigned int                               step,
+               double                                     time,
+               const std::vector<const ElasticBody<2> *> &bodies,
+               const std::vector<const Vector<double> *> &solutions,
+               const std::vector<CellData>               &cell_data = {});
+
+  private:
+    const std::string                           directory;
+    std::vector<std::pair<double, std::string>> records;
+  };
+} // namespace ddcontact
+
+#endif

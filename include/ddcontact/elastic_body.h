@@ -1,0 +1,251 @@
+#ifndef ddcontact_elastic_body_h
+#define ddcontact_elastic_body_h
+
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <ddcontact/boundary_conditions.h>
+#include <ddcontact/material.h>
+#include <ddcontact/parameters.h>
+
+#include <memory>
+#include <string>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /** Displacement and stress of a body at one point. */
+  template <int dim>
+  struct PointValues
+  {
+    Point<dim>              x;
+    Tensor<1, dim>          displacement;
+    SymmetricTensor<2, dim> stress;
+    double                  von_mises = 0.;
+  };
+
+  /**
+   * One linear elastic body Omega_a in plane strain: its triangulation
+   * (quadrilaterals with hanging nodes, or triangles), its finite element
+   * space, its constraints (hanging nodes merged with the Dirichlet data
+   * (5)), and the stiffness of the bilinear form a_a of (11).
+   *
+   * The domain decomposition solves the body problem (20) hundreds of
+   * times with the same matrix and a new contact load, so the matrix is
+   * factorized once per mesh (factorize()) and solve() only does the
+   * forward and backward substitution. solve() is const and may be called
+   * for several bodies at once from different threads.
+   */
+  template <int dim>
+  class ElasticBody
+  {
+  public:
+    ElasticBody(const BodyParameters &parameters, const Constants &constants);
+
+    /**
+     * Create the initial mesh (rectangle or Gmsh file; a .geo file is
+     * meshed into @p work_directory) and check that every boundary id
+     * named in the boundary conditions exists.
+     */
+    void
+    make_mesh(const std::string &work_directory = ".");
+
+    /** Distribute dofs, build constraints and the sparsity pattern. Call
+     * again after the mesh has been refined. */
+    void
+    setup_system();
+
+    /** Assemble the stiffness matrix and the load vector of body force and
+     * Neumann tractions (12), with the Dirichlet data condensed. */
+    void
+    assemble_system();
+
+    /** Factorize (direct) or build the AMG preconditioner (cg-amg). */
+    void
+    factorize();
+
+    /** setup_system(), assemble_system() and factorize() in a row. */
+    void
+    setup_and_factorize();
+
+    /**
+     * Solve a_a(u, v) = l_a(v) + load(v) for all v: @p load is an
+     * additional right-hand side (e.g. the contact traction of (20))
+     * assembled with get_constraints().distribute_local_to_global() and
+     * may be empty (size 0) for none. Constraints are distributed in @p u.
+     */
+    void
+    solve(const Vector<double> &load, Vector<double> &u) const;
+
+    /** Solve with no extra load into the body's own solution vector. */
+    void
+    solve();
+
+    /**
+     * The mesh may be changed (refined) through this reference, e.g. by
+     * tests and by the adaptive driver; call setup_and_factorize() after.
+     */
+    Triangulation<dim> &
+    get_triangulation()
+    {
+      return *triangulation;
+    }
+
+    const Triangulation<dim> &
+    get_triangulation() const
+    {
+      return *triangulation;
+    }
+
+    const DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    const Mapping<dim> &
+    get_mapping() const
+    {
+      return *mapping;
+    }
+
+    const FiniteElement<dim> &
+    get_fe() const
+    {
+      return *fe;
+    }
+
+    const Quadrature<dim> &
+    get_cell_quadrature() const
+    {
+      return *cell_quadrature;
+    }
+
+    const Quadrature<dim - 1> &
+    get_face_quadrature() const
+    {
+      return *face_quadrature;
+    }
+
+    const AffineConstraints<double> &
+    get_constraints() const
+    {
+      return constraints;
+    }
+
+    const SparseMatrix<double> &
+    get_stiffness_matrix() const
+    {
+      return stiffness_matrix;
+    }
+
+    const Material &
+    get_material() const
+    {
+      return material;
+    }
+
+    const BoundaryConditions<dim> &
+    get_boundary_conditions() const
+    {
+      return boundary_conditions;
+    }
+
+    const std::string &
+    name() const
+    {
+      return parameters.name;
+    }
+
+    bool
+    is_simplex() const
+    {
+      return parameters.cell_type == "triangle";
+    }
+
+    Vector<double> &
+    get_solution()
+    {
+      return solution;
+    }
+
+    const Vector<double> &
+    get_solution() const
+    {
+      return solution;
+    }
+
+    types::global_dof_index
+    n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+
+    /** Plane-strain stress sigma(u) (2) at every quadrature point of every
+     * active cell, indexed [active_cell_index][q]. */
+    std::vector<std::vector<SymmetricTensor<2, dim>>>
+    stress_at_quadrature_points(const Vector<double> &u) const;
+
+    /** Elastic energy 1/2 a_a(u, u) (11). */
+    double
+    strain_energy(const Vector<double> &u) const;
+
+    /** Displacement, stress and von Mises stress at a point of the body;
+     * throws InputError if the point lies outside the body. */
+    PointValues<dim>
+    point_values(const Point<dim> &x, const Vector<double> &u) const;
+
+    /** Smallest cell diameter of the mesh. */
+    double
+    min_cell_diameter() const;
+
+  private:
+    void
+    read_mesh_file(const std::string &work_directory);
+
+    void
+    check_boundary_ids() const;
+
+    const BodyParameters          parameters;
+    const Material                material;
+    const BoundaryConditions<dim> boundary_conditions;
+
+    std::unique_ptr<Triangulation<dim>>  triangulation;
+    std::unique_ptr<FiniteElement<dim>>  fe;
+    std::unique_ptr<Mapping<dim>>        mapping;
+    std::unique_ptr<Quadrature<dim>>     cell_quadrature;
+    std::unique_ptr<Quadrature<dim - 1>> face_quadrature;
+    DoFHandler<dim>                      dof_handler;
+
+    AffineConstraints<double> constraints;
+    SparsityPattern           sparsity_pattern;
+    SparseMatrix<double>      stiffness_matrix;
+    Vector<double>            load_vector;
+    Vector<double>            solution;
+
+    // Direct solver: factorized once per mesh.
+    SparseDirectUMFPACK direct_solver;
+    // Iterative alternative: CG with algebraic multigrid.
+    TrilinosWrappers::SparseMatrix    trilinos_matrix;
+    TrilinosWrappers::PreconditionAMG amg_preconditioner;
+    bool                              is_factorized = false;
+  };
+} // namespace ddcontact
+
+#endif

@@ -1,0 +1,184 @@
+#ifndef ddcontact_parameters_h
+#define ddcontact_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <ddcontact/boundary_conditions.h>
+#include <ddcontact/material.h>
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * An error in the user's input: a parameter, a file or a value. main()
+   * prints its message as one line and exits with a non-zero code. The
+   * message names the parameter (with its section) or the file.
+   */
+  class InputError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /** Named constants usable in every expression ("r0=1e-3, Delta=..."). */
+  using Constants = std::map<std::string, double>;
+
+  /**
+   * Everything that describes one elastic body: its mesh, its element, its
+   * material and its boundary conditions by boundary id. Declared in the
+   * subsection "Body <name>" of the parameter file, one per name listed in
+   * "Bodies".
+   */
+  struct BodyParameters
+  {
+    std::string name;
+
+    // Mesh
+    std::string               mesh_type = "rectangle"; // "rectangle" or "file"
+    Point<2>                  corner_1{0., 0.};
+    Point<2>                  corner_2{1., 1.};
+    std::vector<unsigned int> subdivisions{1, 1};
+    std::string               mesh_file;
+    unsigned int              initial_refinement = 0;
+
+    // Element
+    std::string  cell_type = "quadrilateral"; // or "triangle"
+    unsigned int degree    = 1;
+
+    Material material;
+
+    // Boundary conditions as written in the file, parsed by
+    // make_boundary_conditions() once the constants are known.
+    std::string dirichlet;
+    std::string neumann;
+    std::string contact_ids;
+    std::string body_force;
+
+    // Linear solver of the body problem (20).
+    std::string  solver                = "direct"; // or "cg-amg"
+    double       solver_tolerance      = 1e-12;
+    unsigned int solver_max_iterations = 10000;
+
+    static void
+    declare(ParameterHandler &prm);
+
+    /** Read from the current subsection; checks values and throws
+     * InputError naming "Body <name>/<entry>". */
+    void
+    parse(ParameterHandler &prm);
+
+    /** "Body <name>/" for error messages. */
+    std::string
+    section() const
+    {
+      return "Body " + name;
+    }
+  };
+
+  /** A point at which displacement and stress of one body are reported. */
+  struct ReportPoint
+  {
+    std::string body;
+    Point<2>    x;
+  };
+
+  /**
+   * The top level of a parameter file: the scene's name, where results go,
+   * which bodies exist (each with its own "Body <name>" subsection), named
+   * constants for expressions, and output options.
+   */
+  struct SceneParameters
+  {
+    std::string              scene_name       = "scene";
+    std::string              output_directory = "output";
+    std::vector<std::string> body_names;
+    Constants                constants;
+    std::vector<ReportPoint> points;
+    bool                     write_vtu = true;
+    unsigned int             n_threads = 0; // 0 = all cores
+
+    std::vector<BodyParameters> bodies;
+
+    /** Declare the scene entries and, for each name, a body subsection. */
+    static void
+    declare(ParameterHandler &prm, const std::vector<std::string> &bodies);
+
+    void
+    parse(ParameterHandler &prm);
+  };
+
+  /**
+   * Reads a parameter file the way the executable does: a first pass
+   * learns the names of the bodies, then all subsections are declared and
+   * the file is parsed strictly (an unknown entry is an error). Overrides
+   * "Section/Entry=value" are applied after the file. Every failure is an
+   * InputError naming the file or the entry.
+   */
+  class ParameterReader
+  {
+  public:
+    ParameterReader(const std::string              &filename,
+                    const std::vector<std::string> &overrides);
+
+    /** The scene as read, checked. */
+    const SceneParameters &
+    scene() const
+    {
+      return scene_parameters;
+    }
+
+    /** Print all entries with their documentation (and current values). */
+    void
+    print(std::ostream &out) const;
+
+    /** The parameters as used, to copy into the output directory. */
+    void
+    write_used(const std::string &filename) const;
+
+    /** Declared but empty: for --print-parameters without a file. */
+    static void
+    print_defaults(std::ostream &out);
+
+  private:
+    mutable ParameterHandler prm;
+    SceneParameters          scene_parameters;
+  };
+
+  /** Parse "x1, x2" into a point; `what` names the entry in errors. */
+  Point<2>
+  parse_point(const std::string &text, const std::string &what);
+
+  /** Parse "name=value, name=value". */
+  Constants
+  parse_constants(const std::string &text, const std::string &what);
+
+  /**
+   * Turn the boundary-condition entries of a body into functions:
+   *  - Dirichlet: "id: components: expr_x; expr_y | id: ...", components
+   *    one of x, y, xy (e.g. "0: xy: 0; 0 | 3: y: 0; -Delta");
+   *  - Neumann:   "id: expr_x; expr_y | ..." (traction, force per length);
+   *  - Contact ids: "3, 4";
+   *  - Body force: "expr_x; expr_y" or empty.
+   * Expressions are in x, y and the scene's constants.
+   */
+  BoundaryConditions<2>
+  make_boundary_conditions(const BodyParameters &body,
+                           const Constants      &constants);
+
+  /** A vector-valued FunctionParser in x, y, checked; `what` names the
+   * entry in the error message if the expression does not parse. */
+  std::shared_ptr<Function<2>>
+  make_function(const std::string &expression,
+                unsigned int       n_components,
+                const Constants   &constants,
+                const std::string &what);
+} // namespace ddcontact
+
+#endif

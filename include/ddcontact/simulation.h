@@ -1,0 +1,72 @@
+#ifndef ddcontact_simulation_h
+#define ddcontact_simulation_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <ddcontact/body_output.h>
+#include <ddcontact/elastic_body.h>
+#include <ddcontact/parameters.h>
+#include <ddcontact/summary.h>
+
+#include <memory>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * The driver of one run of a scene: builds the bodies from the
+   * parameters, solves, reports the requested point values, writes VTU/PVD
+   * for ParaView and summary.json into the output directory.
+   */
+  class Simulation
+  {
+  public:
+    Simulation(const SceneParameters &parameters, std::ostream &screen);
+
+    /** Run the scene; returns normally on success, throws InputError on
+     * bad input. */
+    void
+    run();
+
+    /** The summary written at the end (also for tests). */
+    const Json &
+    summary() const
+    {
+      return summary_json;
+    }
+
+    const std::vector<std::unique_ptr<ElasticBody<2>>> &
+    get_bodies() const
+    {
+      return bodies;
+    }
+
+  private:
+    void
+    setup_bodies();
+
+    /** Solve every body problem at once (one task per body). */
+    void
+    solve_bodies();
+
+    void
+    output_results(unsigned int step);
+
+    void
+    write_summary(const std::string &status);
+
+    const SceneParameters parameters;
+    ConditionalOStream    pcout;
+    TimerOutput           timer;
+    Timer                 wall_clock;
+
+    std::vector<std::unique_ptr<ElasticBody<2>>> bodies;
+    std::unique_ptr<OutputWriter>                output_writer;
+    Json                                         summary_json;
+  };
+} // namespace ddcontact
+
+#endif

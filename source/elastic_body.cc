@@ -1,0 +1,488 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
+#include <deal.II/meshworker/copy_data.h>
+#include <deal.II/meshworker/mesh_loop.h>
+#include <deal.II/meshworker/scratch_data.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <ddcontact/elastic_body.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace ddcontact
+{
+  template <int dim>
+  ElasticBody<dim>::ElasticBody(const BodyParameters &parameters,
+                                const Constants      &constants)
+    : parameters(parameters)
+    , material(parameters.material)
+    , boundary_conditions(make_boundary_conditions(parameters, constants))
+    // Mesh smoothing keeps adapted quadrilateral meshes graded; deal.II 9.4
+    // refines triangles only globally and without smoothing.
+    , triangulation(std::make_unique<Triangulation<dim>>(
+        parameters.cell_type == "triangle"
+          ? Triangulation<dim>::none
+          : Triangulation<dim>::limit_level_difference_at_vertices))
+  {
+    static_assert(dim == 2, "ddcontact bodies are two-dimensional");
+    const unsigned int p = parameters.degree;
+    if (is_simplex())
+    {
+      fe      = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(p), dim);
+      mapping = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
+      cell_quadrature = std::make_unique<QGaussSimplex<dim>>(p + 1);
+    }
+    else
+    {
+      fe              = std::make_unique<FESystem<dim>>(FE_Q<dim>(p), dim);
+      mapping         = std::make_unique<MappingQ<dim>>(1);
+      cell_quadrature = std::make_unique<QGauss<dim>>(p + 1);
+    }
+    face_quadrature = std::make_unique<QGauss<dim - 1>>(p + 1);
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::read_mesh_file(const std::string &work_directory)
+  {
+    const std::string what = parameters.section() + "/Mesh/File";
+    std::string       file = parameters.mesh_file;
+    if (!std::ifstream(file))
+      throw InputError(what + ": mesh file '" + file +
+                       "' does not exist or cannot be read");
+
+    const auto ends_with = [&](const std::string &suffix)
+    {
+      return file.size() >= suffix.size() &&
+             file.compare(file.size() - suffix.size(), suffix.size(), suffix) ==
+               0;
+    };
+
+    if (ends_with(".geo"))
+    {
+      // Mesh the geometry with the gmsh binary, in the legacy ASCII format
+      // that GridIn reads without the Gmsh API.
+      const std::string msh = work_directory + "/" + parameters.name + ".msh";
+      const std::string log =
+        work_directory + "/" + parameters.name + ".gmsh.log";
+      const std::string command = "gmsh -2 -format msh22 -v 2 -o '" + msh +
+                                  "' '" + file + "' > '" + log + "' 2>&1";
+      if (std::system(command.c_str()) != 0)
+        throw InputError(what + ": gmsh could not mesh '" + file + "' (see " +
+                         log + ")");
+      file = msh;
+    }
+    else if (!ends_with(".msh"))
+      throw InputError(what + ": '" + file +
+                       "' is neither a Gmsh .msh nor a .geo file");
+
+    GridIn<dim> grid_in;
+    grid_in.attach_triangulation(*triangulation);
+    std::ifstream in(file);
+    try
+    {
+      grid_in.read_msh(in);
+    }
+    catch (const std::exception &e)
+    {
+      throw InputError(what + ": cannot read '" + file + "' as a Gmsh mesh");
+    }
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::make_mesh(const std::string &work_directory)
+  {
+    triangulation->clear();
+    if (parameters.mesh_type == "rectangle")
+    {
+      if (is_simplex())
+        GridGenerator::subdivided_hyper_rectangle_with_simplices(
+          *triangulation,
+          parameters.subdivisions,
+          parameters.corner_1,
+          parameters.corner_2);
+      else
+        GridGenerator::subdivided_hyper_rectangle(*triangulation,
+                                                  parameters.subdivisions,
+                                                  parameters.corner_1,
+                                                  parameters.corner_2);
+      // Ids 0 left, 1 right, 2 bottom, 3 top (deal.II 9.4 cannot colorize
+      // the simplex variant, so both are labelled here).
+      const double tolerance =
+        1e-10 * parameters.corner_1.distance(parameters.corner_2);
+      for (const auto &face : triangulation->active_face_iterators())
+        if (face->at_boundary())
+        {
+          const auto c = face->center();
+          if (std::abs(c[0] - parameters.corner_1[0]) < tolerance)
+            face->set_boundary_id(0);
+          else if (std::abs(c[0] - parameters.corner_2[0]) < tolerance)
+            face->set_boundary_id(1);
+          else if (std::abs(c[1] - parameters.corner_1[1]) < tolerance)
+            face->set_boundary_id(2);
+          else
+            face->set_boundary_id(3);
+        }
+    }
+    else
+      read_mesh_file(work_directory);
+
+    const bool simplex_mesh = triangulation->all_reference_cells_are_simplex();
+    const bool quad_mesh = triangulation->all_reference_cells_are_hyper_cube();
+    if (is_simplex() && !simplex_mesh)
+      throw InputError(parameters.section() +
+                       "/Element/Cell type: 'triangle', but the mesh '" +
+                       parameters.mesh_file + "' holds other cells");
+    if (!is_simplex() && !quad_mesh)
+      throw InputError(parameters.section() +
+                       "/Element/Cell type: 'quadrilateral', but the mesh '" +
+                       parameters.mesh_file +
+                       "' holds other cells (recombine it in Gmsh, or choose "
+                       "triangle)");
+
+    triangulation->refine_global(parameters.initial_refinement);
+    check_boundary_ids();
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::check_boundary_ids() const
+  {
+    const auto ids = triangulation->get_boundary_ids();
+    const auto check =
+      [&](const types::boundary_id id, const std::string &entry)
+    {
+      if (std::find(ids.begin(), ids.end(), id) == ids.end())
+      {
+        std::string list;
+        for (const auto i : ids)
+          list += (list.empty() ? "" : ", ") + std::to_string(i);
+        throw InputError(parameters.section() + "/Boundary conditions/" +
+                         entry + ": boundary id " + std::to_string(id) +
+                         " does not exist in the mesh (its ids: " + list + ")");
+      }
+    };
+    for (const auto &[id, d] : boundary_conditions.dirichlet)
+      check(id, "Dirichlet");
+    for (const auto &[id, f] : boundary_conditions.neumann)
+      check(id, "Neumann");
+    for (const auto id : boundary_conditions.contact)
+      check(id, "Contact ids");
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::setup_system()
+  {
+    dof_handler.reinit(*triangulation);
+    dof_handler.distribute_dofs(*fe);
+
+    // Hanging nodes first, then the Dirichlet data (5); merged in one
+    // object so that a Dirichlet node that is also hanging is handled.
+    constraints.clear();
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    for (const auto &[id, d] : boundary_conditions.dirichlet)
+      VectorTools::interpolate_boundary_values(
+        *mapping, dof_handler, id, *d.displacement, constraints, d.mask);
+    constraints.close();
+
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    sparsity_pattern.copy_from(dsp);
+    stiffness_matrix.reinit(sparsity_pattern);
+    load_vector.reinit(dof_handler.n_dofs());
+    solution.reinit(dof_handler.n_dofs());
+    is_factorized = false;
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::assemble_system()
+  {
+    stiffness_matrix = 0;
+    load_vector      = 0;
+
+    using Iterator = typename DoFHandler<dim>::active_cell_iterator;
+    const FEValuesExtractors::Vector displacement(0);
+    const double                     lambda = material.lambda();
+    const double                     mu     = material.mu();
+
+    // a_a(u, v) of (11) and the body-force part of l_a(v).
+    const auto cell_worker = [&](const Iterator                &cell,
+                                 MeshWorker::ScratchData<dim>  &scratch,
+                                 MeshWorker::CopyData<1, 1, 1> &copy)
+    {
+      const auto        &fe_values     = scratch.reinit(cell);
+      const unsigned int dofs_per_cell = fe_values.dofs_per_cell;
+      copy.reinit(dofs_per_cell);
+      cell->get_dof_indices(copy.local_dof_indices[0]);
+      auto &cell_matrix = copy.matrices[0];
+      auto &cell_rhs    = copy.vectors[0];
+
+      std::vector<Vector<double>> force(fe_values.n_quadrature_points,
+                                        Vector<double>(dim));
+      if (boundary_conditions.body_force)
+        boundary_conditions.body_force->vector_value_list(
+          fe_values.get_quadrature_points(), force);
+
+      std::vector<SymmetricTensor<2, dim>> eps(dofs_per_cell);
+      std::vector<double>                  div(dofs_per_cell);
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
+          eps[i] = fe_values[displacement].symmetric_gradient(i, q);
+          div[i] = trace(eps[i]);
+        }
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
+          for (unsigned int j = 0; j < dofs_per_cell; ++j)
+            cell_matrix(i, j) +=
+              (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) * JxW;
+          if (boundary_conditions.body_force)
+          {
+            const unsigned int c = fe->system_to_component_index(i).first;
+            cell_rhs(i) += fe_values.shape_value(i, q) * force[q](c) * JxW;
+          }
+        }
+      }
+    };
+
+    // The traction part of l_a(v), (12), on Gamma_p.
+    const auto boundary_worker = [&](const Iterator                &cell,
+                                     const unsigned int             face_no,
+                                     MeshWorker::ScratchData<dim>  &scratch,
+                                     MeshWorker::CopyData<1, 1, 1> &copy)
+    {
+      const auto it =
+        boundary_conditions.neumann.find(cell->face(face_no)->boundary_id());
+      if (it == boundary_conditions.neumann.end())
+        return;
+      const auto                 &fe_face = scratch.reinit(cell, face_no);
+      std::vector<Vector<double>> traction(fe_face.n_quadrature_points,
+                                           Vector<double>(dim));
+      it->second->vector_value_list(fe_face.get_quadrature_points(), traction);
+      auto &cell_rhs = copy.vectors[0];
+      for (const unsigned int q : fe_face.quadrature_point_indices())
+        for (unsigned int i = 0; i < fe_face.dofs_per_cell; ++i)
+        {
+          const unsigned int c = fe->system_to_component_index(i).first;
+          cell_rhs(i) +=
+            fe_face.shape_value(i, q) * traction[q](c) * fe_face.JxW(q);
+        }
+    };
+
+    const auto copier = [&](const MeshWorker::CopyData<1, 1, 1> &copy)
+    {
+      constraints.distribute_local_to_global(copy.matrices[0],
+                                             copy.vectors[0],
+                                             copy.local_dof_indices[0],
+                                             stiffness_matrix,
+                                             load_vector);
+    };
+
+    MeshWorker::ScratchData<dim> scratch(
+      *mapping,
+      *fe,
+      *cell_quadrature,
+      update_values | update_gradients | update_quadrature_points |
+        update_JxW_values,
+      *face_quadrature,
+      update_values | update_quadrature_points | update_JxW_values);
+    MeshWorker::CopyData<1, 1, 1> copy;
+    MeshWorker::mesh_loop(dof_handler.active_cell_iterators(),
+                          cell_worker,
+                          copier,
+                          scratch,
+                          copy,
+                          MeshWorker::assemble_own_cells |
+                            MeshWorker::assemble_boundary_faces,
+                          boundary_worker);
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::factorize()
+  {
+    if (parameters.solver == "direct")
+      direct_solver.initialize(stiffness_matrix);
+    else
+    {
+      trilinos_matrix.reinit(stiffness_matrix);
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic              = true;
+      data.higher_order_elements = (parameters.degree > 1);
+      data.smoother_sweeps       = 2;
+      data.aggregation_threshold = 0.02;
+      DoFTools::extract_constant_modes(
+        dof_handler, ComponentMask(dim, true), data.constant_modes);
+      amg_preconditioner.initialize(trilinos_matrix, data);
+    }
+    is_factorized = true;
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::setup_and_factorize()
+  {
+    setup_system();
+    assemble_system();
+    factorize();
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::solve(const Vector<double> &load, Vector<double> &u) const
+  {
+    Assert(is_factorized, ExcMessage("factorize() must be called first"));
+    Vector<double> rhs(load_vector);
+    if (load.size() > 0)
+    {
+      AssertDimension(load.size(), rhs.size());
+      rhs += load;
+    }
+    u.reinit(dof_handler.n_dofs());
+    if (parameters.solver == "direct")
+      direct_solver.vmult(u, rhs);
+    else
+    {
+      SolverControl            control(parameters.solver_max_iterations,
+                            parameters.solver_tolerance * rhs.l2_norm());
+      SolverCG<Vector<double>> cg(control);
+      try
+      {
+        cg.solve(trilinos_matrix, u, rhs, amg_preconditioner);
+      }
+      catch (const SolverControl::NoConvergence &e)
+      {
+        throw InputError(
+          parameters.section() + "/Solver: cg-amg did not converge in " +
+          std::to_string(e.last_step) + " iterations (residual " +
+          std::to_string(e.last_residual) +
+          "); raise Max iterations or use Type = direct");
+      }
+    }
+    constraints.distribute(u);
+    for (const double v : u)
+      if (!std::isfinite(v))
+        throw InputError(parameters.section() +
+                         ": the body problem gave a non-finite displacement; "
+                         "check the Dirichlet conditions and the material");
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::solve()
+  {
+    solve(Vector<double>(), solution);
+  }
+
+  template <int dim>
+  std::vector<std::vector<SymmetricTensor<2, dim>>>
+  ElasticBody<dim>::stress_at_quadrature_points(const Vector<double> &u) const
+  {
+    std::vector<std::vector<SymmetricTensor<2, dim>>> stress(
+      triangulation->n_active_cells());
+    FEValues<dim> fe_values(*mapping, *fe, *cell_quadrature, update_gradients);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strain(cell_quadrature->size());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+    {
+      fe_values.reinit(cell);
+      fe_values[displacement].get_function_symmetric_gradients(u, strain);
+      auto &s = stress[cell->active_cell_index()];
+      s.resize(strain.size());
+      for (unsigned int q = 0; q < strain.size(); ++q)
+        s[q] = material.stress(strain[q]);
+    }
+    return stress;
+  }
+
+  template <int dim>
+  double
+  ElasticBody<dim>::strain_energy(const Vector<double> &u) const
+  {
+    FEValues<dim> fe_values(
+      *mapping, *fe, *cell_quadrature, update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strain(cell_quadrature->size());
+    double                               energy = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+    {
+      fe_values.reinit(cell);
+      fe_values[displacement].get_function_symmetric_gradients(u, strain);
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        energy +=
+          0.5 * (material.stress(strain[q]) * strain[q]) * fe_values.JxW(q);
+    }
+    return energy;
+  }
+
+  template <int dim>
+  PointValues<dim>
+  ElasticBody<dim>::point_values(const Point<dim>     &x,
+                                 const Vector<double> &u) const
+  {
+    std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>> found;
+    try
+    {
+      found =
+        GridTools::find_active_cell_around_point(*mapping, dof_handler, x);
+    }
+    catch (...)
+    {
+      std::ostringstream s;
+      s << "Output/Points: the point (" << x << ") does not lie in body '"
+        << parameters.name << "'";
+      throw InputError(s.str());
+    }
+    const Quadrature<dim> at_point(std::vector<Point<dim>>{found.second});
+    FEValues<dim>         fe_values(
+      *mapping, *fe, at_point, update_values | update_gradients);
+    fe_values.reinit(found.first);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<Tensor<1, dim>>          value(1);
+    std::vector<SymmetricTensor<2, dim>> strain(1);
+    fe_values[displacement].get_function_values(u, value);
+    fe_values[displacement].get_function_symmetric_gradients(u, strain);
+
+    PointValues<dim> result;
+    result.x            = x;
+    result.displacement = value[0];
+    result.stress       = material.stress(strain[0]);
+    result.von_mises    = material.von_mises(result.stress);
+    return result;
+  }
+
+  template <int dim>
+  double
+  ElasticBody<dim>::min_cell_diameter() const
+  {
+    double h = std::numeric_limits<double>::max();
+    for (const auto &cell : triangulation->active_cell_iterators())
+      h = std::min(h, cell->diameter(*mapping));
+    return h;
+  }
+
+  template class ElasticBody<2>;
+} // namespace ddcontact

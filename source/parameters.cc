@@ -1,0 +1,614 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <ddcontact/parameters.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace ddcontact
+{
+  namespace
+  {
+    /** deal.II's exception texts span several lines; we want one. */
+    std::string
+    one_line(const std::string &text)
+    {
+      std::string out;
+      bool        space = false;
+      for (const char c : text)
+        if (c == '\n' || c == '\r' || c == '\t' || c == ' ')
+          space = !out.empty();
+        else
+        {
+          if (space)
+            out += ' ';
+          out += c;
+          space = false;
+        }
+      return out;
+    }
+
+    std::string
+    message_of(const std::exception &e)
+    {
+      if (const auto *dealii_exc = dynamic_cast<const ExceptionBase *>(&e))
+      {
+        std::ostringstream s;
+        dealii_exc->print_info(s);
+        return one_line(s.str());
+      }
+      return one_line(e.what());
+    }
+
+    std::vector<std::string>
+    split(const std::string &text, const char delimiter)
+    {
+      std::vector<std::string> parts;
+      for (const auto &p : Utilities::split_string_list(text, delimiter))
+        if (!p.empty())
+          parts.push_back(p);
+      return parts;
+    }
+
+    unsigned int
+    parse_boundary_id(const std::string &text, const std::string &what)
+    {
+      try
+      {
+        const int id = Utilities::string_to_int(Utilities::trim(text));
+        if (id < 0 || id >= 255)
+          throw InputError("");
+        return static_cast<unsigned int>(id);
+      }
+      catch (...)
+      {
+        throw InputError(what + ": '" + text +
+                         "' is not a boundary id (a non-negative integer)");
+      }
+    }
+
+    double
+    parse_double(const std::string &text, const std::string &what)
+    {
+      try
+      {
+        std::size_t  pos   = 0;
+        const auto   t     = Utilities::trim(text);
+        const double value = std::stod(t, &pos);
+        if (pos != t.size())
+          throw InputError("");
+        return value;
+      }
+      catch (...)
+      {
+        throw InputError(what + ": '" + text + "' is not a number");
+      }
+    }
+  } // namespace
+
+  Point<2>
+  parse_point(const std::string &text, const std::string &what)
+  {
+    const auto parts = Utilities::split_string_list(text, ',');
+    if (parts.size() != 2)
+      throw InputError(what + ": '" + text + "' is not a point 'x1, x2'");
+    return Point<2>(parse_double(parts[0], what), parse_double(parts[1], what));
+  }
+
+  Constants
+  parse_constants(const std::string &text, const std::string &what)
+  {
+    Constants constants;
+    for (const auto &item : split(text, ','))
+    {
+      const auto eq = item.find('=');
+      if (eq == std::string::npos)
+        throw InputError(what + ": '" + item + "' is not 'name=value'");
+      const std::string name = Utilities::trim(item.substr(0, eq));
+      if (name.empty() || name == "x" || name == "y")
+        throw InputError(what + ": '" + item + "' has no usable name");
+      constants[name] = parse_double(item.substr(eq + 1), what);
+    }
+    return constants;
+  }
+
+  std::shared_ptr<Function<2>>
+  make_function(const std::string &expression,
+                const unsigned int n_components,
+                const Constants   &constants,
+                const std::string &what)
+  {
+    const auto parts = Utilities::split_string_list(expression, ';');
+    if (parts.size() != n_components)
+      throw InputError(what + ": '" + expression + "' must have " +
+                       std::to_string(n_components) +
+                       " expression(s) separated by ';'");
+    auto function = std::make_shared<FunctionParser<2>>(n_components);
+    try
+    {
+      function->initialize("x,y", parts, constants);
+      // muparser compiles lazily: evaluate once so that a syntax error
+      // shows up here, with the entry's name, and not in a worker thread.
+      Vector<double> values(n_components);
+      function->vector_value(Point<2>(0.123, 0.456), values);
+    }
+    catch (const std::exception &e)
+    {
+      throw InputError(what + ": cannot parse '" + expression +
+                       "': " + message_of(e));
+    }
+    return function;
+  }
+
+  BoundaryConditions<2>
+  make_boundary_conditions(const BodyParameters &body,
+                           const Constants      &constants)
+  {
+    BoundaryConditions<2> bc;
+    const std::string     section = body.section() + "/";
+
+    for (const auto &item : split(body.dirichlet, '|'))
+    {
+      const std::string what = section + "Dirichlet";
+      const auto        c1   = item.find(':');
+      const auto c2 = (c1 == std::string::npos) ? c1 : item.find(':', c1 + 1);
+      if (c2 == std::string::npos)
+        throw InputError(what + ": '" + item +
+                         "' is not 'id: components: expr_x; expr_y'");
+      const auto id         = parse_boundary_id(item.substr(0, c1), what);
+      const auto components = Utilities::trim(item.substr(c1 + 1, c2 - c1 - 1));
+      if (components != "x" && components != "y" && components != "xy")
+        throw InputError(what + ": components '" + components +
+                         "' must be x, y or xy");
+      if (bc.dirichlet.count(id))
+        throw InputError(what + ": boundary id " + std::to_string(id) +
+                         " appears twice");
+      DirichletCondition<2> d;
+      d.mask = ComponentMask(
+        std::vector<bool>{components.find('x') != std::string::npos,
+                          components.find('y') != std::string::npos});
+      d.displacement   = make_function(item.substr(c2 + 1), 2, constants, what);
+      bc.dirichlet[id] = d;
+    }
+
+    for (const auto &item : split(body.neumann, '|'))
+    {
+      const std::string what = section + "Neumann";
+      const auto        c1   = item.find(':');
+      if (c1 == std::string::npos)
+        throw InputError(what + ": '" + item + "' is not 'id: expr_x; expr_y'");
+      const auto id = parse_boundary_id(item.substr(0, c1), what);
+      if (bc.neumann.count(id) || bc.dirichlet.count(id))
+        throw InputError(what + ": boundary id " + std::to_string(id) +
+                         " already has a boundary condition");
+      bc.neumann[id] = make_function(item.substr(c1 + 1), 2, constants, what);
+    }
+
+    for (const auto &item : split(body.contact_ids, ','))
+    {
+      const std::string what = section + "Contact ids";
+      const auto        id   = parse_boundary_id(item, what);
+      if (bc.neumann.count(id) || bc.dirichlet.count(id))
+        throw InputError(what + ": boundary id " + std::to_string(id) +
+                         " already has a Dirichlet or Neumann condition");
+      bc.contact.insert(id);
+    }
+
+    if (!Utilities::trim(body.body_force).empty())
+      bc.body_force =
+        make_function(body.body_force, 2, constants, section + "Body force");
+
+    // A body without any prescribed displacement can move rigidly: its
+    // stiffness matrix is singular and the body problem (20) has no
+    // unique solution.
+    if (bc.dirichlet.empty())
+      throw InputError(section +
+                       "Dirichlet: the body has no Dirichlet boundary, so its "
+                       "stiffness is singular; prescribe a displacement on at "
+                       "least one boundary id");
+    bool has_x = false, has_y = false;
+    for (const auto &[id, d] : bc.dirichlet)
+    {
+      has_x = has_x || d.mask[0];
+      has_y = has_y || d.mask[1];
+    }
+    if (!(has_x && has_y))
+      throw InputError(
+        section + "Dirichlet: only the " + (has_x ? "x" : "y") +
+        " component is prescribed anywhere, so the body can "
+        "slide rigidly; prescribe the other component somewhere");
+    return bc;
+  }
+
+  void
+  BodyParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      prm.declare_entry(
+        "Type",
+        "rectangle",
+        Patterns::Selection("rectangle|file"),
+        "rectangle: a subdivided rectangle with boundary ids "
+        "0 (left), 1 (right), 2 (bottom), 3 (top); file: a Gmsh "
+        "mesh (.msh, or .geo meshed by the gmsh binary) whose "
+        "physical curve tags become boundary ids.");
+      prm.declare_entry(
+        "Corner 1",
+        "0, 0",
+        Patterns::Anything(),
+        "Lower left corner of the rectangle (x1, x2) [length].");
+      prm.declare_entry(
+        "Corner 2",
+        "1, 1",
+        Patterns::Anything(),
+        "Upper right corner of the rectangle (x1, x2) [length].");
+      prm.declare_entry("Subdivisions",
+                        "1, 1",
+                        Patterns::List(Patterns::Integer(1), 2, 2),
+                        "Cells of the rectangle in x1 and x2.");
+      prm.declare_entry("File",
+                        "",
+                        Patterns::Anything(),
+                        "Gmsh file (.msh or .geo), relative to the parameter "
+                        "file's directory or absolute.");
+      prm.declare_entry("Initial refinement",
+                        "0",
+                        Patterns::Integer(0, 20),
+                        "Number of global refinements of the initial mesh.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Element");
+    {
+      prm.declare_entry("Cell type",
+                        "quadrilateral",
+                        Patterns::Selection("quadrilateral|triangle"),
+                        "quadrilateral: FE_Q with hanging-node constraints; "
+                        "triangle: FE_SimplexP (a rectangle is split into "
+                        "triangles; a Gmsh file must hold triangles).");
+      prm.declare_entry("Degree",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Polynomial degree of the displacement (1 or 2).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry(
+        "Young's modulus", "2.1e5", Patterns::Double(), "E [stress], > 0.");
+      prm.declare_entry("Poisson's ratio",
+                        "0.3",
+                        Patterns::Double(),
+                        "nu, in (-1, 0.5) (plane strain).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    {
+      prm.declare_entry("Dirichlet",
+                        "",
+                        Patterns::Anything(),
+                        "Prescribed displacements (5) (Gamma_u): 'id: "
+                        "components: expr_x; expr_y | id: ...' with "
+                        "components x, y or xy; expressions in x, y and the "
+                        "scene's constants [length].");
+      prm.declare_entry("Neumann",
+                        "",
+                        Patterns::Anything(),
+                        "Prescribed tractions p (6) (Gamma_p): 'id: expr_x; "
+                        "expr_y | ...' [stress]. Ids with no condition are "
+                        "traction free.");
+      prm.declare_entry("Contact ids",
+                        "",
+                        Patterns::Anything(),
+                        "Boundary ids that form the possible contact zone S "
+                        "(comma separated).");
+      prm.declare_entry("Body force",
+                        "",
+                        Patterns::Anything(),
+                        "Body force 'expr_x; expr_y' [force/volume]; empty "
+                        "for none.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Solver");
+    {
+      prm.declare_entry("Type",
+                        "direct",
+                        Patterns::Selection("direct|cg-amg"),
+                        "direct: UMFPACK factorization, computed once per "
+                        "mesh and reused for every right-hand side; cg-amg: "
+                        "conjugate gradients with Trilinos ML AMG (large "
+                        "meshes).");
+      prm.declare_entry("Tolerance",
+                        "1e-12",
+                        Patterns::Double(0),
+                        "Relative residual tolerance of cg-amg.");
+      prm.declare_entry("Max iterations",
+                        "10000",
+                        Patterns::Integer(1),
+                        "Iteration limit of cg-amg.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  BodyParameters::parse(ParameterHandler &prm)
+  {
+    const std::string section = this->section() + "/";
+    prm.enter_subsection("Mesh");
+    {
+      mesh_type = prm.get("Type");
+      corner_1  = parse_point(prm.get("Corner 1"), section + "Mesh/Corner 1");
+      corner_2  = parse_point(prm.get("Corner 2"), section + "Mesh/Corner 2");
+      const auto n = Utilities::string_to_int(
+        Utilities::split_string_list(prm.get("Subdivisions")));
+      subdivisions       = {static_cast<unsigned int>(n[0]),
+                            static_cast<unsigned int>(n[1])};
+      mesh_file          = prm.get("File");
+      initial_refinement = prm.get_integer("Initial refinement");
+      if (mesh_type == "rectangle" &&
+          !(corner_1[0] < corner_2[0] && corner_1[1] < corner_2[1]))
+        throw InputError(section +
+                         "Mesh/Corner 2: must lie above and to the right of "
+                         "Corner 1");
+      if (mesh_type == "file" && Utilities::trim(mesh_file).empty())
+        throw InputError(section + "Mesh/File: empty, but Mesh/Type = file");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Element");
+    {
+      cell_type = prm.get("Cell type");
+      degree    = prm.get_integer("Degree");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      material.youngs_modulus = prm.get_double("Young's modulus");
+      material.poisson_ratio  = prm.get_double("Poisson's ratio");
+      if (!(material.youngs_modulus > 0.) ||
+          !std::isfinite(material.youngs_modulus))
+        throw InputError(section + "Material/Young's modulus: E = " +
+                         prm.get("Young's modulus") + " must be positive");
+      if (!(material.poisson_ratio > -1. && material.poisson_ratio < 0.5))
+        throw InputError(section + "Material/Poisson's ratio: nu = " +
+                         prm.get("Poisson's ratio") + " must lie in (-1, 0.5)");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    {
+      dirichlet   = prm.get("Dirichlet");
+      neumann     = prm.get("Neumann");
+      contact_ids = prm.get("Contact ids");
+      body_force  = prm.get("Body force");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Solver");
+    {
+      solver                = prm.get("Type");
+      solver_tolerance      = prm.get_double("Tolerance");
+      solver_max_iterations = prm.get_integer("Max iterations");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  SceneParameters::declare(ParameterHandler               &prm,
+                           const std::vector<std::string> &bodies)
+  {
+    prm.declare_entry("Scene name",
+                      "scene",
+                      Patterns::Anything(),
+                      "Name of the scene, written to summary.json.");
+    prm.declare_entry("Output directory",
+                      "output",
+                      Patterns::Anything(),
+                      "Where VTU/PVD, CSV and summary.json go (created if "
+                      "missing; overridden by --output).");
+    prm.declare_entry("Bodies",
+                      "",
+                      Patterns::Anything(),
+                      "Names of the bodies (comma separated); each needs a "
+                      "subsection 'Body <name>'.");
+    prm.declare_entry("Constants",
+                      "",
+                      Patterns::Anything(),
+                      "Named constants for all expressions, 'r0=1e-3, "
+                      "Delta=1.366e-3'.");
+    prm.declare_entry("Threads",
+                      "0",
+                      Patterns::Integer(0),
+                      "Number of threads (0: one per core).");
+
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Points",
+                        "",
+                        Patterns::Anything(),
+                        "Points where displacement and stress are reported: "
+                        "'body: x1, x2; body: x1, x2'.");
+      prm.declare_entry("Write vtu",
+                        "true",
+                        Patterns::Bool(),
+                        "Write VTU/PVD files for ParaView.");
+    }
+    prm.leave_subsection();
+
+    for (const auto &name : bodies)
+    {
+      prm.enter_subsection("Body " + name);
+      BodyParameters::declare(prm);
+      prm.leave_subsection();
+    }
+  }
+
+  void
+  SceneParameters::parse(ParameterHandler &prm)
+  {
+    scene_name       = prm.get("Scene name");
+    output_directory = prm.get("Output directory");
+    body_names       = split(prm.get("Bodies"), ',');
+    constants        = parse_constants(prm.get("Constants"), "Constants");
+    n_threads        = prm.get_integer("Threads");
+    if (body_names.empty())
+      throw InputError("Bodies: no body is listed");
+
+    bodies.clear();
+    for (const auto &name : body_names)
+    {
+      if (std::count(body_names.begin(), body_names.end(), name) > 1)
+        throw InputError("Bodies: '" + name + "' is listed twice");
+      BodyParameters body;
+      body.name = name;
+      prm.enter_subsection("Body " + name);
+      body.parse(prm);
+      prm.leave_subsection();
+      bodies.push_back(body);
+    }
+
+    prm.enter_subsection("Output");
+    {
+      write_vtu = prm.get_bool("Write vtu");
+      points.clear();
+      for (const auto &item : split(prm.get("Points"), ';'))
+      {
+        const auto colon = item.find(':');
+        if (colon == std::string::npos)
+          throw InputError("Output/Points: '" + item +
+                           "' is not 'body: x1, x2'");
+        ReportPoint p;
+        p.body = Utilities::trim(item.substr(0, colon));
+        p.x    = parse_point(item.substr(colon + 1), "Output/Points");
+        if (std::find(body_names.begin(), body_names.end(), p.body) ==
+            body_names.end())
+          throw InputError("Output/Points: '" + p.body +
+                           "' is not one of the Bodies");
+        points.push_back(p);
+      }
+    }
+    prm.leave_subsection();
+  }
+
+  namespace
+  {
+    /** Apply one "Section/Sub/Entry=value" override to prm. */
+    void
+    apply_override(ParameterHandler &prm, const std::string &assignment)
+    {
+      const auto eq = assignment.find('=');
+      if (eq == std::string::npos)
+        throw InputError("--set '" + assignment +
+                         "': expected \"Section/Entry=value\"");
+      const auto path =
+        Utilities::split_string_list(assignment.substr(0, eq), '/');
+      const auto value = Utilities::trim(assignment.substr(eq + 1));
+      for (unsigned int i = 0; i + 1 < path.size(); ++i)
+        prm.enter_subsection(path[i]);
+      try
+      {
+        prm.set(path.back(), value);
+      }
+      catch (const std::exception &e)
+      {
+        for (unsigned int i = 0; i + 1 < path.size(); ++i)
+          prm.leave_subsection();
+        throw InputError("--set '" + assignment + "': " + message_of(e));
+      }
+      for (unsigned int i = 0; i + 1 < path.size(); ++i)
+        prm.leave_subsection();
+    }
+  } // namespace
+
+  ParameterReader::ParameterReader(const std::string              &filename,
+                                   const std::vector<std::string> &overrides)
+  {
+    if (!std::ifstream(filename))
+      throw InputError("parameter file '" + filename +
+                       "' does not exist or cannot be read");
+
+    // First pass: only the list of bodies matters; everything else in the
+    // file is skipped.
+    std::vector<std::string> body_names;
+    {
+      ParameterHandler prescan;
+      prescan.declare_entry("Bodies", "", Patterns::Anything());
+      try
+      {
+        prescan.parse_input(filename, "", true);
+      }
+      catch (const std::exception &e)
+      {
+        throw InputError("parameter file '" + filename + "': " + message_of(e));
+      }
+      for (const auto &o : overrides)
+        if (o.rfind("Bodies=", 0) == 0 || o.rfind("Bodies =", 0) == 0)
+          apply_override(prescan, o);
+      body_names = split(prescan.get("Bodies"), ',');
+    }
+
+    // Second pass: strict.
+    SceneParameters::declare(prm, body_names);
+    try
+    {
+      prm.parse_input(filename, "", false);
+    }
+    catch (const std::exception &e)
+    {
+      throw InputError("parameter file '" + filename + "': " + message_of(e));
+    }
+    for (const auto &o : overrides)
+      apply_override(prm, o);
+
+    try
+    {
+      scene_parameters.parse(prm);
+    }
+    catch (const InputError &)
+    {
+      throw;
+    }
+    catch (const std::exception &e)
+    {
+      throw InputError("parameter file '" + filename + "': " + message_of(e));
+    }
+
+    // Mesh files are found relative to the parameter file.
+    const auto        slash = filename.find_last_of('/');
+    const std::string directory =
+      (slash == std::string::npos) ? "" : filename.substr(0, slash + 1);
+    for (auto &body : scene_parameters.bodies)
+      if (body.mesh_type == "file" && !body.mesh_file.empty() &&
+          body.mesh_file[0] != '/' && std::ifstream(directory + body.mesh_file))
+        body.mesh_file = directory + body.mesh_file;
+  }
+
+  void
+  ParameterReader::print(std::ostream &out) const
+  {
+    prm.print_parameters(out, ParameterHandler::PRM);
+  }
+
+  void
+  ParameterReader::write_used(const std::string &filename) const
+  {
+    std::ofstream out(filename);
+    prm.print_parameters(out, ParameterHandler::ShortPRM);
+  }
+
+  void
+  ParameterReader::print_defaults(std::ostream &out)
+  {
+    ParameterHandler prm;
+    SceneParameters::declare(prm, {"<name>"});
+    prm.print_parameters(out, ParameterHandler::PRM);
+  }
+} // namespace ddcontact
