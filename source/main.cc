@@ -96,6 +96,11 @@ main(int argc, char **argv)
     Simulation simulation(scene, std::cout);
     simulation.run();
   }
+  catch (const DivergenceError &e)
+  {
+    std::cerr << "ddcontact: error: " << e.what() << std::endl;
+    return 4;
+  }
   catch (const InputError &e)
   {
     std::cerr << "ddcontact: error: " << e.what() << std::endl;

@@ -402,8 +402,180 @@ namespace ddcontact
   }
 
   void
+  ContactPairParameters::declare(ParameterHandler &prm)
+  {
+    prm.declare_entry("Body 1",
+                      "",
+                      Patterns::Anything(),
+                      "Body whose zone S_1 carries the contact integral.");
+    prm.declare_entry("Boundary id 1",
+                      "0",
+                      Patterns::Integer(0, 254),
+                      "Boundary id of S_1 on body 1.");
+    prm.declare_entry("Body 2", "", Patterns::Anything(), "The opposite body.");
+    prm.declare_entry("Boundary id 2",
+                      "0",
+                      Patterns::Integer(0, 254),
+                      "Boundary id of S_2 on body 2.");
+    prm.declare_entry("Gap type",
+                      "expression",
+                      Patterns::Selection("expression|geometric"),
+                      "expression: f_n(x) given below (the paper's scene, "
+                      "both zones on one line); geometric: f_n(x) = (P(x) - "
+                      "x) . n_1, the distance to the orthogonal projection "
+                      "P(x) of x on S_2 (curved surfaces).");
+    prm.declare_entry("Gap",
+                      "0",
+                      Patterns::Anything(),
+                      "Initial normal gap f_n(x) [length], an expression in "
+                      "x, y and the constants (Gap type = expression).");
+    prm.declare_entry("Penalty type",
+                      "relative",
+                      Patterns::Selection("relative|absolute"),
+                      "relative: theta = c H / E_1 as in the paper; "
+                      "absolute: theta = Penalty [length/stress].");
+    prm.declare_entry("Penalty",
+                      "0.05",
+                      Patterns::Double(),
+                      "c (relative) or theta (absolute) of the penalty (15); "
+                      "> 0.");
+    prm.declare_entry("Thickness",
+                      "0",
+                      Patterns::Double(0),
+                      "H of theta = c H / E_1 [length]; 0: the extent of "
+                      "body 1 along the contact normal.");
+    prm.declare_entry("Gauss points",
+                      "3",
+                      Patterns::Integer(1, 10),
+                      "Gauss points on each piece of the common refinement "
+                      "of S_1 and S_2.");
+  }
+
+  void
+  ContactPairParameters::parse(ParameterHandler &prm)
+  {
+    const std::string section = "Contact pair " + name + "/";
+    body_1                    = Utilities::trim(prm.get("Body 1"));
+    body_2                    = Utilities::trim(prm.get("Body 2"));
+    boundary_id_1             = prm.get_integer("Boundary id 1");
+    boundary_id_2             = prm.get_integer("Boundary id 2");
+    gap_type                  = prm.get("Gap type");
+    gap_expression            = prm.get("Gap");
+    penalty_type              = prm.get("Penalty type");
+    penalty                   = prm.get_double("Penalty");
+    thickness                 = prm.get_double("Thickness");
+    n_gauss                   = prm.get_integer("Gauss points");
+    if (!(penalty > 0.))
+      throw InputError(section + "Penalty: " + prm.get("Penalty") +
+                       " must be positive");
+    if (body_1 == body_2)
+      throw InputError(section + "Body 2: '" + body_2 +
+                       "' is the same body as Body 1");
+  }
+
+  void
+  DDParameters::declare(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Solver",
+      "dd",
+      Patterns::Selection("dd|monolithic"),
+      "dd: the parallel Neumann domain decomposition (20)-(21); "
+      "monolithic: semismooth Newton on the penalised problem "
+      "(16) for all bodies at once (the reference).");
+    prm.declare_entry("Relaxation",
+                      "fixed",
+                      Patterns::Selection("fixed|auto|aitken|anderson"),
+                      "fixed: u^{k+1} = gamma u~ + (1-gamma) u^k (21); auto: "
+                      "fixed with the optimal gamma estimated from the "
+                      "contact-zone compliance; aitken: "
+                      "dynamic gamma (Aitken's delta^2); anderson: Anderson "
+                      "acceleration of the fixed-point map u^k -> u~^{k+1}.");
+    prm.declare_entry("Gamma",
+                      "0.02",
+                      Patterns::Double(),
+                      "Relaxation gamma of (21), in (0, 1]; the first gamma "
+                      "of aitken and the mixing of anderson.");
+    prm.declare_entry("Anderson depth",
+                      "8",
+                      Patterns::Integer(1, 50),
+                      "Number of previous iterates anderson combines.");
+    prm.declare_entry(
+      "Stopping test",
+      "residual",
+      Patterns::Selection("residual|paper|both"),
+      "residual: ||u~^{k+1}_n - u^k_n|| <= eps_r ||u~^{k+1}_n|| "
+      "on S; paper: ||u^{k+1}_an - u^k_an|| <= eps_u "
+      "||u^{k+1}_an|| for each body (weaker by a factor "
+      "gamma); both: either.");
+    prm.declare_entry("eps_u",
+                      "1.5e-3",
+                      Patterns::Double(0),
+                      "Tolerance of the paper's increment test.");
+    prm.declare_entry("eps_residual",
+                      "1e-8",
+                      Patterns::Double(0),
+                      "Tolerance of the residual test.");
+    prm.declare_entry("Max iterations",
+                      "5000",
+                      Patterns::Integer(1),
+                      "Maximum number of DD iterations.");
+    prm.declare_entry("Initial guess",
+                      "winkler",
+                      Patterns::Selection("zero|winkler"),
+                      "zero, or the elastic-layer (Winkler) model: contact "
+                      "pressure from the contact-free solution with springs "
+                      "E'/H in series with the penalty.");
+    prm.declare_entry("Augmented Lagrangian",
+                      "false",
+                      Patterns::Bool(),
+                      "Outer Uzawa update of the contact pressure, so that "
+                      "the penetration of the penalty goes to zero.");
+    prm.declare_entry("AL tolerance",
+                      "1e-3",
+                      Patterns::Double(0),
+                      "Stop the Uzawa updates when max penetration <= this "
+                      "times the largest normal displacement on S.");
+    prm.declare_entry("AL max updates",
+                      "30",
+                      Patterns::Integer(1),
+                      "Maximum number of Uzawa updates.");
+    prm.declare_entry("Write every iteration",
+                      "false",
+                      Patterns::Bool(),
+                      "Write contact_<pair>_<k>.csv at every iteration.");
+    prm.declare_entry("Max Newton iterations",
+                      "50",
+                      Patterns::Integer(1),
+                      "Iteration limit of the monolithic Newton solver.");
+  }
+
+  void
+  DDParameters::parse(ParameterHandler &prm)
+  {
+    solver                = prm.get("Solver");
+    relaxation            = prm.get("Relaxation");
+    gamma                 = prm.get_double("Gamma");
+    anderson_depth        = prm.get_integer("Anderson depth");
+    stopping              = prm.get("Stopping test");
+    eps_u                 = prm.get_double("eps_u");
+    eps_residual          = prm.get_double("eps_residual");
+    max_iterations        = prm.get_integer("Max iterations");
+    initial_guess         = prm.get("Initial guess");
+    augmented_lagrangian  = prm.get_bool("Augmented Lagrangian");
+    al_tolerance          = prm.get_double("AL tolerance");
+    al_max_updates        = prm.get_integer("AL max updates");
+    write_every_iteration = prm.get_bool("Write every iteration");
+    n_newton              = prm.get_integer("Max Newton iterations");
+    if (!(gamma > 0. && gamma <= 1.))
+      throw InputError("Domain decomposition/Gamma: " + prm.get("Gamma") +
+                       " must lie in (0, 1]");
+  }
+
+  void
   SceneParameters::declare(ParameterHandler               &prm,
-                           const std::vector<std::string> &bodies)
+                           const std::vector<std::string> &bodies,
+                           const std::vector<std::string> &pairs)
   {
     prm.declare_entry("Scene name",
                       "scene",
@@ -428,6 +600,15 @@ namespace ddcontact
                       "0",
                       Patterns::Integer(0),
                       "Number of threads (0: one per core).");
+    prm.declare_entry("Contact pairs",
+                      "",
+                      Patterns::Anything(),
+                      "Names of the contact pairs (comma separated); each "
+                      "needs a subsection 'Contact pair <name>'.");
+
+    prm.enter_subsection("Domain decomposition");
+    DDParameters::declare(prm);
+    prm.leave_subsection();
 
     prm.enter_subsection("Output");
     {
@@ -447,6 +628,12 @@ namespace ddcontact
     {
       prm.enter_subsection("Body " + name);
       BodyParameters::declare(prm);
+      prm.leave_subsection();
+    }
+    for (const auto &name : pairs)
+    {
+      prm.enter_subsection("Contact pair " + name);
+      ContactPairParameters::declare(prm);
       prm.leave_subsection();
     }
   }
@@ -473,6 +660,26 @@ namespace ddcontact
       body.parse(prm);
       prm.leave_subsection();
       bodies.push_back(body);
+    }
+
+    prm.enter_subsection("Domain decomposition");
+    dd.parse(prm);
+    prm.leave_subsection();
+
+    contact_pairs.clear();
+    for (const auto &name : split(prm.get("Contact pairs"), ','))
+    {
+      ContactPairParameters pair;
+      pair.name = name;
+      prm.enter_subsection("Contact pair " + name);
+      pair.parse(prm);
+      prm.leave_subsection();
+      for (const auto &b : {pair.body_1, pair.body_2})
+        if (std::find(body_names.begin(), body_names.end(), b) ==
+            body_names.end())
+          throw InputError("Contact pair " + name + ": body '" + b +
+                           "' is not one of the Bodies");
+      contact_pairs.push_back(pair);
     }
 
     prm.enter_subsection("Output");
@@ -537,10 +744,11 @@ namespace ddcontact
 
     // First pass: only the list of bodies matters; everything else in the
     // file is skipped.
-    std::vector<std::string> body_names;
+    std::vector<std::string> body_names, pair_names;
     {
       ParameterHandler prescan;
       prescan.declare_entry("Bodies", "", Patterns::Anything());
+      prescan.declare_entry("Contact pairs", "", Patterns::Anything());
       try
       {
         prescan.parse_input(filename, "", true);
@@ -550,13 +758,14 @@ namespace ddcontact
         throw InputError("parameter file '" + filename + "': " + message_of(e));
       }
       for (const auto &o : overrides)
-        if (o.rfind("Bodies=", 0) == 0 || o.rfind("Bodies =", 0) == 0)
+        if (o.rfind("Bodies", 0) == 0 || o.rfind("Contact pairs", 0) == 0)
           apply_override(prescan, o);
       body_names = split(prescan.get("Bodies"), ',');
+      pair_names = split(prescan.get("Contact pairs"), ',');
     }
 
     // Second pass: strict.
-    SceneParameters::declare(prm, body_names);
+    SceneParameters::declare(prm, body_names, pair_names);
     try
     {
       prm.parse_input(filename, "", false);
@@ -608,7 +817,7 @@ namespace ddcontact
   ParameterReader::print_defaults(std::ostream &out)
   {
     ParameterHandler prm;
-    SceneParameters::declare(prm, {"<name>"});
+    SceneParameters::declare(prm, {"<name>"}, {"<name>"});
     prm.print_parameters(out, ParameterHandler::PRM);
   }
 } // namespace ddcontact

@@ -4,6 +4,7 @@
 #include <ddcontact/version.h>
 
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 
 namespace ddcontact
@@ -51,6 +52,76 @@ namespace ddcontact
     for (auto &body : bodies)
       tasks += Threads::new_task([&body]() { body->solve(); });
     tasks.join_all();
+  }
+
+  void
+  Simulation::setup_contact()
+  {
+    TimerOutput::Scope t(timer, "contact setup");
+    const auto         find = [&](const std::string &name) -> ElasticBody<2> &
+    {
+      for (auto &b : bodies)
+        if (b->name() == name)
+          return *b;
+      throw InputError("no body named '" + name + "'");
+    };
+    contact_pairs.clear();
+    for (const auto &p : parameters.contact_pairs)
+    {
+      contact_pairs.push_back(std::make_unique<ContactPair>(
+        p, find(p.body_1), find(p.body_2), parameters.constants));
+      contact_pairs.back()->setup();
+      pcout << "  contact pair " << p.name << ": " << p.body_1 << " -> "
+            << p.body_2 << ", " << contact_pairs.back()->points().size()
+            << " contact points, theta = " << contact_pairs.back()->penalty()
+            << std::endl;
+    }
+    std::vector<ElasticBody<2> *> body_pointers;
+    for (auto &b : bodies)
+      body_pointers.push_back(b.get());
+    std::vector<ContactPair *> pair_pointers;
+    for (auto &p : contact_pairs)
+      pair_pointers.push_back(p.get());
+    dd_solver = std::make_unique<NeumannDDSolver>(
+      parameters.dd, body_pointers, pair_pointers, pcout);
+  }
+
+  unsigned int
+  Simulation::solve_contact()
+  {
+    TimerOutput::Scope t(timer, "contact solve");
+    dd_solver->initialize();
+    return dd_solver->run();
+  }
+
+  void
+  Simulation::write_history() const
+  {
+    std::ofstream out(parameters.output_directory + "/history.csv");
+    out << "k,residual,increment,gamma,contact_force,active_length,"
+           "max_penetration,time_s\n";
+    out << std::setprecision(10);
+    for (const auto &r : dd_solver->history())
+      out << r.iteration << ',' << r.residual << ',' << r.increment << ','
+          << r.gamma << ',' << r.force << ',' << r.active_length << ','
+          << r.max_penetration << ',' << r.time << '\n';
+  }
+
+  void
+  Simulation::write_contact_profiles(const std::string &suffix) const
+  {
+    for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+    {
+      const auto    state = dd_solver->contact_state(p);
+      const auto   &pts   = contact_pairs[p]->points();
+      std::ofstream out(parameters.output_directory + "/contact_" +
+                        contact_pairs[p]->name() + suffix + ".csv");
+      out << "x1,x2,pressure,u_1n,u_2n,gap,weight\n" << std::setprecision(12);
+      for (unsigned int q = 0; q < pts.size(); ++q)
+        out << pts[q].x[0] << ',' << pts[q].x[1] << ',' << -state.sigma_n[q]
+            << ',' << state.u_1n[q] << ',' << state.u_2n[q] << ',' << pts[q].gap
+            << ',' << pts[q].JxW << '\n';
+    }
   }
 
   void
@@ -116,6 +187,39 @@ namespace ddcontact
             << std::endl;
     }
     json.set("points", points);
+
+    if (!contact_pairs.empty())
+    {
+      json.set("dd_iterations", n_contact_iterations);
+      json.set("gamma", parameters.dd.gamma);
+      json.set("relaxation", parameters.dd.relaxation);
+      json.set("uzawa_updates", dd_solver->n_uzawa_updates());
+      Json thetas  = Json::array();
+      Json contact = Json::array();
+      for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+      {
+        const auto state = dd_solver->contact_state(p);
+        thetas.push_back(contact_pairs[p]->penalty());
+        Json c = Json::object();
+        c.set("pair", contact_pairs[p]->name());
+        Json forces = Json::array();
+        forces.push_back(json_array({state.force_1[0], state.force_1[1]}));
+        forces.push_back(json_array({state.force_2[0], state.force_2[1]}));
+        c.set("force", forces);
+        c.set("max_pressure", state.max_pressure);
+        c.set("contact_length", state.contact_length);
+        c.set("max_penetration", state.max_penetration);
+        contact.push_back(c);
+      }
+      json.set("theta", thetas);
+      json.set("contact", contact);
+      if (!dd_solver->history().empty())
+      {
+        const auto &last = dd_solver->history().back();
+        json.set("dd_residual", last.residual);
+        json.set("dd_increment", last.increment);
+      }
+    }
     json.set("wall_time_s", wall_clock.wall_time());
 
     Json timings = Json::object();
@@ -138,9 +242,31 @@ namespace ddcontact
           << parameters.output_directory << std::endl;
 
     setup_bodies();
-    solve_bodies();
-    output_results(0);
-    write_summary("completed");
+    if (parameters.contact_pairs.empty())
+    {
+      solve_bodies();
+      output_results(0);
+      write_summary("completed");
+    }
+    else
+    {
+      setup_contact();
+      try
+      {
+        n_contact_iterations = solve_contact();
+      }
+      catch (const DivergenceError &)
+      {
+        n_contact_iterations = dd_solver->history().size();
+        write_history();
+        write_summary("diverged");
+        throw;
+      }
+      write_history();
+      write_contact_profiles("");
+      output_results(0);
+      write_summary("converged");
+    }
 
     timer.print_summary();
     pcout << "wall time " << std::fixed << std::setprecision(2)

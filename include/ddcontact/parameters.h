@@ -82,6 +82,58 @@ namespace ddcontact
     }
   };
 
+  /**
+   * A contact pair: zone S_1 (boundary id of body 1, where the contact
+   * integral is computed) facing S_2 (boundary id of body 2). Declared in
+   * "Contact pair <name>", one per name listed in "Contact pairs".
+   */
+  struct ContactPairParameters
+  {
+    std::string  name;
+    std::string  body_1, body_2;
+    unsigned int boundary_id_1 = 0, boundary_id_2 = 0;
+    std::string  gap_type       = "expression"; // or "geometric"
+    std::string  gap_expression = "0";
+    std::string  penalty_type = "relative"; // theta = c H / E_1, or "absolute"
+    double       penalty      = 0.05;       // c, or theta itself
+    double       thickness    = 0;          // H; 0: from body 1's mesh
+    unsigned int n_gauss      = 3;          // Gauss points per piece
+
+    static void
+    declare(ParameterHandler &prm);
+
+    void
+    parse(ParameterHandler &prm);
+  };
+
+  /**
+   * The domain decomposition (20)-(21) and its stopping tests, in the
+   * subsection "Domain decomposition".
+   */
+  struct DDParameters
+  {
+    std::string  solver         = "dd"; // "dd" or "monolithic" (Newton on (16))
+    std::string  relaxation     = "fixed"; // "fixed", "aitken", "anderson"
+    double       gamma          = 0.02;    // gamma of (21)
+    unsigned int anderson_depth = 8;
+    std::string  stopping       = "residual"; // "residual", "paper", "both"
+    double       eps_u          = 1.5e-3;     // the paper's increment test
+    double       eps_residual   = 1e-8;       // test on u~^{k+1} - u^k
+    unsigned int max_iterations = 5000;
+    std::string  initial_guess  = "winkler"; // or "zero"
+    bool         augmented_lagrangian  = false;
+    double       al_tolerance          = 1e-3; // penetration / approach
+    unsigned int al_max_updates        = 30;
+    bool         write_every_iteration = false;
+    unsigned int n_newton              = 50;
+
+    static void
+    declare(ParameterHandler &prm);
+
+    void
+    parse(ParameterHandler &prm);
+  };
+
   /** A point at which displacement and stress of one body are reported. */
   struct ReportPoint
   {
@@ -104,11 +156,16 @@ namespace ddcontact
     bool                     write_vtu = true;
     unsigned int             n_threads = 0; // 0 = all cores
 
-    std::vector<BodyParameters> bodies;
+    std::vector<BodyParameters>        bodies;
+    std::vector<ContactPairParameters> contact_pairs;
+    DDParameters                       dd;
 
-    /** Declare the scene entries and, for each name, a body subsection. */
+    /** Declare the scene entries and, for each name, a body subsection
+     * and a contact pair subsection. */
     static void
-    declare(ParameterHandler &prm, const std::vector<std::string> &bodies);
+    declare(ParameterHandler               &prm,
+            const std::vector<std::string> &bodies,
+            const std::vector<std::string> &pairs = {});
 
     void
     parse(ParameterHandler &prm);

@@ -5,7 +5,9 @@
 #include <deal.II/base/timer.h>
 
 #include <ddcontact/body_output.h>
+#include <ddcontact/contact_pair.h>
 #include <ddcontact/elastic_body.h>
+#include <ddcontact/neumann_dd_solver.h>
 #include <ddcontact/parameters.h>
 #include <ddcontact/summary.h>
 
@@ -53,6 +55,20 @@ namespace ddcontact
     solve_bodies();
 
     void
+    setup_contact();
+
+    /** The contact problem by DD (20)-(21) or by the monolithic Newton
+     * solver; returns the iteration count. */
+    unsigned int
+    solve_contact();
+
+    void
+    write_history() const;
+
+    void
+    write_contact_profiles(const std::string &suffix) const;
+
+    void
     output_results(unsigned int step);
 
     void
@@ -64,6 +80,9 @@ namespace ddcontact
     Timer                 wall_clock;
 
     std::vector<std::unique_ptr<ElasticBody<2>>> bodies;
+    std::vector<std::unique_ptr<ContactPair>>    contact_pairs;
+    std::unique_ptr<NeumannDDSolver>             dd_solver;
+    unsigned int                                 n_contact_iterations = 0;
     std::unique_ptr<OutputWriter>                output_writer;
     Json                                         summary_json;
   };

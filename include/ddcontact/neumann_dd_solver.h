@@ -1,0 +1,159 @@
+#ifndef ddcontact_neumann_dd_solver_h
+#define ddcontact_neumann_dd_solver_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <ddcontact/contact_pair.h>
+#include <ddcontact/elastic_body.h>
+#include <ddcontact/parameters.h>
+
+#include <deque>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /** The iteration diverged; the message says what to change. */
+  class DivergenceError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /** What one DD iteration measured (one row of history.csv). */
+  struct IterationRecord
+  {
+    unsigned int iteration       = 0;
+    double       increment       = 0; // the paper's test, max over bodies
+    double       residual        = 0; // ||u~_n - u_n|| / ||u~_n|| on S
+    double       gamma           = 0;
+    double       force           = 0; // |contact force on body 1|, all pairs
+    double       active_length   = 0;
+    double       max_penetration = 0;
+    double       time            = 0;
+  };
+
+  /** Contact results of one pair, from the current iterate. */
+  struct ContactState
+  {
+    std::vector<double> u_1n, u_2n, sigma_n; // at every contact point
+    Tensor<1, 2>        force_1, force_2;
+    double              max_pressure    = 0;
+    double              contact_length  = 0;
+    double              max_penetration = 0;
+  };
+
+  /**
+   * The parallel Neumann domain decomposition (20)-(21): every iteration
+   * loads each body by the penalty pressure of the previous iterate,
+   *   sigma_n^k = (1/theta) min(0, f_n - u_1n^k - u_2n^k)        (20),
+   * solves all body problems at once (one task per body, each reusing its
+   * factorization), and relaxes, u^{k+1} = gamma u~^{k+1} + (1-gamma) u^k
+   * (21), or with a dynamic gamma (Aitken) or Anderson acceleration.
+   * Optionally an outer augmented-Lagrangian (Uzawa) loop adds a multiplier
+   * lambda to the pressure, sigma_n = min(0, lambda + g/theta), so that the
+   * penetration goes to zero without shrinking theta.
+   */
+  class NeumannDDSolver
+  {
+  public:
+    NeumannDDSolver(const DDParameters                  &parameters,
+                    const std::vector<ElasticBody<2> *> &bodies,
+                    const std::vector<ContactPair *>    &pairs,
+                    ConditionalOStream                  &pcout);
+
+    /** Initial guess (zero or Winkler); resets the history. Call after the
+     * bodies and pairs have been set up. */
+    void
+    initialize();
+
+    /** One iteration (20)-(21); returns true when the stopping test holds.
+     * Throws DivergenceError. */
+    bool
+    step();
+
+    /** Iterate until converged (with Uzawa updates if requested); returns
+     * the number of DD iterations. Throws DivergenceError, or a
+     * std::runtime_error when the maximum is reached. */
+    unsigned int
+    run();
+
+    /** Contact state of pair @p p for the current iterate. */
+    ContactState
+    contact_state(unsigned int p) const;
+
+    const std::vector<IterationRecord> &
+    history() const
+    {
+      return records;
+    }
+
+    unsigned int
+    n_uzawa_updates() const
+    {
+      return uzawa_updates;
+    }
+
+    /**
+     * Estimate the stability limit gamma* of the fixed relaxation (21) by
+     * power iteration on the linearised DD operator with every contact
+     * point active (costs about 30 solves of each body).
+     */
+    double
+    estimate_gamma_limit() const;
+
+    /** Re-create internal vectors after a mesh change (the bodies keep
+     * their transferred solutions); keeps multipliers only if sizes match. */
+    void
+    reinit_after_refinement();
+
+  private:
+    /** Penalty pressure of pair p from the displacements u. */
+    std::vector<double>
+    pressure(unsigned int p, const std::vector<Vector<double>> &u) const;
+
+    /** Solve all bodies with the contact loads of the iterate u. */
+    void
+    solve_bodies(const std::vector<Vector<double>> &u,
+                 std::vector<Vector<double>>       &u_tilde) const;
+
+    /** Normal displacements on S of all pairs, both sides, body by body. */
+    std::vector<std::vector<double>>
+    normal_displacements_by_body(const std::vector<Vector<double>> &u) const;
+
+    void
+    relax(const std::vector<Vector<double>> &u_tilde);
+
+    bool
+    uzawa_update();
+
+    unsigned int
+    body_index(const ElasticBody<2> &body) const;
+
+    const DDParameters            parameters;
+    std::vector<ElasticBody<2> *> bodies;
+    std::vector<ContactPair *>    pairs;
+    ConditionalOStream           &pcout;
+
+    std::vector<std::vector<double>> multipliers; // Uzawa lambda per pair
+    std::vector<IterationRecord>     records;
+    unsigned int                     uzawa_updates    = 0;
+    double                           last_penetration = 0;
+    unsigned int phase_start = 0; // first record of this Uzawa phase
+    double       gamma       = 0;
+    Timer        timer;
+
+    // Aitken: the previous residual; Anderson: histories of residual and
+    // map-value differences.
+    Vector<double>             previous_residual, previous_g;
+    std::deque<Vector<double>> delta_f, delta_g;
+  };
+} // namespace ddcontact
+
+#endif

@@ -1,0 +1,588 @@
+#include <deal.II/base/thread_management.h>
+
+#include <deal.II/lac/full_matrix.h>
+
+#include <ddcontact/neumann_dd_solver.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace ddcontact
+{
+  namespace
+  {
+    double
+    norm(const std::vector<double> &v)
+    {
+      double s = 0;
+      for (const double x : v)
+        s += x * x;
+      return std::sqrt(s);
+    }
+
+    double
+    distance(const std::vector<double> &v, const std::vector<double> &w)
+    {
+      double s = 0;
+      for (unsigned int i = 0; i < v.size(); ++i)
+        s += (v[i] - w[i]) * (v[i] - w[i]);
+      return std::sqrt(s);
+    }
+
+    /** Concatenate the bodies' vectors into one, and back. */
+    Vector<double>
+    flatten(const std::vector<Vector<double>> &u)
+    {
+      std::size_t n = 0;
+      for (const auto &v : u)
+        n += v.size();
+      Vector<double> flat(n);
+      std::size_t    offset = 0;
+      for (const auto &v : u)
+      {
+        std::copy(v.begin(), v.end(), flat.begin() + offset);
+        offset += v.size();
+      }
+      return flat;
+    }
+
+    void
+    unflatten(const Vector<double> &flat, std::vector<Vector<double>> &u)
+    {
+      std::size_t offset = 0;
+      for (auto &v : u)
+      {
+        std::copy(
+          flat.begin() + offset, flat.begin() + offset + v.size(), v.begin());
+        offset += v.size();
+      }
+    }
+  } // namespace
+
+  NeumannDDSolver::NeumannDDSolver(const DDParameters &parameters,
+                                   const std::vector<ElasticBody<2> *> &bodies,
+                                   const std::vector<ContactPair *>    &pairs,
+                                   ConditionalOStream                  &pcout)
+    : parameters(parameters)
+    , bodies(bodies)
+    , pairs(pairs)
+    , pcout(pcout)
+  {
+  }
+
+  unsigned int
+  NeumannDDSolver::body_index(const ElasticBody<2> &body) const
+  {
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (bodies[b] == &body)
+        return b;
+    Assert(false, ExcInternalError());
+    return 0;
+  }
+
+  std::vector<double>
+  NeumannDDSolver::pressure(const unsigned int                 p,
+                            const std::vector<Vector<double>> &u) const
+  {
+    const auto         &pair = *pairs[p];
+    std::vector<double> u_1n, u_2n;
+    pair.normal_displacements(u[body_index(pair.get_body_1())],
+                              u[body_index(pair.get_body_2())],
+                              u_1n,
+                              u_2n);
+    const double        theta = pair.penalty();
+    std::vector<double> sigma(u_1n.size());
+    for (unsigned int q = 0; q < sigma.size(); ++q)
+    {
+      // (20): sigma_n = (1/theta) min(0, f_n - u_1n - u_2n), shifted by
+      // the Uzawa multiplier.
+      const double g = pair.points()[q].gap - u_1n[q] - u_2n[q];
+      sigma[q]       = std::min(0., multipliers[p][q] + g / theta);
+    }
+    return sigma;
+  }
+
+  void
+  NeumannDDSolver::solve_bodies(const std::vector<Vector<double>> &u,
+                                std::vector<Vector<double>> &u_tilde) const
+  {
+    std::vector<Vector<double>> loads(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      loads[b].reinit(bodies[b]->n_dofs());
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      pairs[p]->add_contact_loads(pressure(p, u),
+                                  loads[body_index(pairs[p]->get_body_1())],
+                                  loads[body_index(pairs[p]->get_body_2())]);
+
+    // The body problems of (20) are independent: solve them concurrently.
+    u_tilde.resize(bodies.size());
+    Threads::TaskGroup<void> tasks;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      tasks +=
+        Threads::new_task([&, b]() { bodies[b]->solve(loads[b], u_tilde[b]); });
+    tasks.join_all();
+  }
+
+  std::vector<std::vector<double>>
+  NeumannDDSolver::normal_displacements_by_body(
+    const std::vector<Vector<double>> &u) const
+  {
+    std::vector<std::vector<double>> by_body(bodies.size());
+    for (const auto *pair : pairs)
+    {
+      std::vector<double> u_1n, u_2n;
+      const unsigned int  b1 = body_index(pair->get_body_1());
+      const unsigned int  b2 = body_index(pair->get_body_2());
+      pair->normal_displacements(u[b1], u[b2], u_1n, u_2n);
+      by_body[b1].insert(by_body[b1].end(), u_1n.begin(), u_1n.end());
+      by_body[b2].insert(by_body[b2].end(), u_2n.begin(), u_2n.end());
+    }
+    return by_body;
+  }
+
+  void
+  NeumannDDSolver::initialize()
+  {
+    records.clear();
+    uzawa_updates    = 0;
+    phase_start      = 0;
+    last_penetration = std::numeric_limits<double>::max();
+    gamma            = parameters.gamma;
+    multipliers.assign(pairs.size(), {});
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      multipliers[p].assign(pairs[p]->points().size(), 0.);
+    previous_residual.reinit(0);
+    delta_f.clear();
+    delta_g.clear();
+    timer.restart();
+
+    std::vector<Vector<double>> u(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      u[b].reinit(bodies[b]->n_dofs());
+
+    if (parameters.initial_guess == "winkler")
+    {
+      // Elastic-layer model: each body acts on S like a bed of springs of
+      // stiffness E'/H (E' = E/(1-nu^2), H its thickness across S), in
+      // series with the penalty; the pressure of this model, applied to
+      // the contact-free solution's gap, loads the first solve.
+      std::vector<Vector<double>> u_free(bodies.size());
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        bodies[b]->solve(Vector<double>(), u_free[b]);
+
+      std::vector<Vector<double>> loads(bodies.size());
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        loads[b].reinit(bodies[b]->n_dofs());
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        const auto  &pair       = *pairs[p];
+        const auto  &b1         = pair.get_body_1();
+        const auto  &b2         = pair.get_body_2();
+        const double H1         = pair.thickness_of_body_1();
+        const auto   compliance = [&](const ElasticBody<2> &body, double H)
+        {
+          const auto &m = body.get_material();
+          return H * (1 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;
+        };
+        // Body 2's thickness measured like body 1's, along -n.
+        Tensor<1, 2> n;
+        for (const auto &pt : pair.points())
+          n += pt.normal;
+        n /= std::max(n.norm(), 1e-300);
+        double lo = std::numeric_limits<double>::max(), hi = -lo;
+        for (const auto &v : b2.get_triangulation().get_vertices())
+        {
+          lo = std::min(lo, v * n);
+          hi = std::max(hi, v * n);
+        }
+        const double c_w = compliance(b1, H1) + compliance(b2, hi - lo);
+
+        std::vector<double> u_1n, u_2n;
+        pair.normal_displacements(
+          u_free[body_index(b1)], u_free[body_index(b2)], u_1n, u_2n);
+        std::vector<double> sigma(u_1n.size());
+        for (unsigned int q = 0; q < sigma.size(); ++q)
+          sigma[q] = std::min(0., pair.points()[q].gap - u_1n[q] - u_2n[q]) /
+                     (pair.penalty() + c_w);
+        pair.add_contact_loads(
+          sigma, loads[body_index(b1)], loads[body_index(b2)]);
+      }
+      Threads::TaskGroup<void> tasks;
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        tasks +=
+          Threads::new_task([&, b]() { bodies[b]->solve(loads[b], u[b]); });
+      tasks.join_all();
+    }
+
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      bodies[b]->get_solution() = u[b];
+  }
+
+  void
+  NeumannDDSolver::reinit_after_refinement()
+  {
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      if (multipliers.size() <= p ||
+          multipliers[p].size() != pairs[p]->points().size())
+      {
+        multipliers.resize(pairs.size());
+        multipliers[p].assign(pairs[p]->points().size(), 0.);
+      }
+    previous_residual.reinit(0);
+    delta_f.clear();
+    delta_g.clear();
+  }
+
+  void
+  NeumannDDSolver::relax(const std::vector<Vector<double>> &u_tilde)
+  {
+    std::vector<Vector<double>> u(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      u[b] = bodies[b]->get_solution();
+    const Vector<double> x = flatten(u);
+    const Vector<double> g = flatten(u_tilde);
+    Vector<double>       f = g;
+    f -= x; // residual of the fixed-point map u -> u~
+    Vector<double> x_new(x);
+
+    if (parameters.relaxation == "fixed" || parameters.relaxation == "auto")
+      x_new.add(gamma, f); // (21)
+    else if (parameters.relaxation == "aitken")
+    {
+      // Aitken's dynamic relaxation: the secant estimate of the best
+      // gamma for the residual's recent change.
+      if (previous_residual.size() == f.size())
+      {
+        Vector<double> df = f;
+        df -= previous_residual;
+        const double dd = df * df;
+        if (dd > 0)
+          gamma = std::clamp(-gamma * (previous_residual * df) / dd, 1e-6, 1.);
+      }
+      previous_residual = f;
+      x_new.add(gamma, f);
+    }
+    else // anderson
+    {
+      // Anderson acceleration (type II): combine the last m map values
+      // so that the linearised residual is smallest (equivalent to GMRES
+      // on a linear fixed-point map).
+      if (previous_residual.size() == f.size())
+      {
+        Vector<double> df = f, dg = g;
+        df -= previous_residual;
+        dg -= previous_g;
+        delta_f.push_back(df);
+        delta_g.push_back(dg);
+        if (delta_f.size() > parameters.anderson_depth)
+        {
+          delta_f.pop_front();
+          delta_g.pop_front();
+        }
+      }
+      previous_residual    = f;
+      previous_g           = g;
+      const unsigned int m = delta_f.size();
+      if (m == 0)
+        x_new.add(gamma, f);
+      else
+      {
+        FullMatrix<double> normal(m, m);
+        Vector<double>     rhs(m), alpha(m);
+        for (unsigned int i = 0; i < m; ++i)
+        {
+          rhs(i) = delta_f[i] * f;
+          for (unsigned int j = 0; j < m; ++j)
+            normal(i, j) = delta_f[i] * delta_f[j];
+        }
+        double trace = 0;
+        for (unsigned int i = 0; i < m; ++i)
+          trace += normal(i, i);
+        for (unsigned int i = 0; i < m; ++i)
+          normal(i, i) += 1e-12 * trace + 1e-300;
+        normal.gauss_jordan();
+        normal.vmult(alpha, rhs);
+        // x_new = (x + gamma f) - sum alpha_i (dx_i + gamma df_i),
+        // with dx = dg - df.
+        x_new.add(gamma, f);
+        for (unsigned int i = 0; i < m; ++i)
+        {
+          x_new.add(-alpha(i), delta_g[i]);
+          x_new.add(alpha(i) * (1. - gamma), delta_f[i]);
+        }
+      }
+    }
+
+    unflatten(x_new, u);
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+    {
+      bodies[b]->get_constraints().distribute(u[b]);
+      bodies[b]->get_solution() = u[b];
+    }
+  }
+
+  bool
+  NeumannDDSolver::step()
+  {
+    std::vector<Vector<double>> u(bodies.size()), u_tilde;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      u[b] = bodies[b]->get_solution();
+
+    IterationRecord record;
+    record.iteration = records.size() + 1;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+    {
+      const auto state = contact_state(p);
+      record.force += state.force_1.norm();
+      record.active_length += state.contact_length;
+      record.max_penetration =
+        std::max(record.max_penetration, state.max_penetration);
+    }
+
+    solve_bodies(u, u_tilde);
+    const auto un       = normal_displacements_by_body(u);
+    const auto un_tilde = normal_displacements_by_body(u_tilde);
+
+    double diff2 = 0, norm2 = 0;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+    {
+      diff2 += std::pow(distance(un_tilde[b], un[b]), 2);
+      norm2 += std::pow(norm(un_tilde[b]), 2);
+    }
+    record.residual = (norm2 > 0) ? std::sqrt(diff2 / norm2) : std::sqrt(diff2);
+    record.gamma    = gamma;
+
+    relax(u_tilde);
+
+    std::vector<Vector<double>> u_new(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      u_new[b] = bodies[b]->get_solution();
+    const auto un_new = normal_displacements_by_body(u_new);
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (!un_new[b].empty())
+      {
+        const double n   = norm(un_new[b]);
+        const double d   = distance(un_new[b], un[b]);
+        record.increment = std::max(record.increment, (n > 0) ? d / n : d);
+      }
+    record.time = timer.wall_time();
+    records.push_back(record);
+
+    const bool print = record.iteration <= 5 || record.iteration % 50 == 0 ||
+                       record.residual <= parameters.eps_residual ||
+                       record.increment <= parameters.eps_u;
+    if (print)
+      pcout << "  DD " << std::setw(5) << record.iteration << std::scientific
+            << std::setprecision(3) << "  residual " << record.residual
+            << "  increment " << record.increment << "  gamma " << record.gamma
+            << "  force " << record.force << "  active " << record.active_length
+            << "  penetration " << record.max_penetration << std::defaultfloat
+            << std::fixed << std::setprecision(2) << "  t " << record.time
+            << "s" << std::defaultfloat << std::endl;
+
+    // Divergence: a non-finite residual, growth far above the best residual
+    // so far, or no progress at all for many iterations (a 2-cycle between
+    // overlap and separation, typical for gamma above gamma*).
+    const bool   finite = std::isfinite(record.residual);
+    double       best   = std::numeric_limits<double>::max();
+    unsigned int best_k = 0;
+    for (unsigned int i = phase_start; i < records.size(); ++i)
+      if (const auto &r = records[i]; r.residual < best)
+      {
+        best   = r.residual;
+        best_k = r.iteration;
+      }
+    const unsigned int k_phase = record.iteration - phase_start;
+    const bool         grew    = record.residual > 1e3 * best && k_phase > 3;
+    const bool         stuck =
+      record.iteration - best_k > std::max<unsigned int>(50, k_phase / 2);
+    if (!finite || grew || stuck)
+    {
+      std::ostringstream s;
+      s << "the domain decomposition diverged at iteration " << record.iteration
+        << " (residual "
+        << (finite ? std::to_string(record.residual) : "not finite")
+        << ", best " << best << " at iteration " << best_k << ")";
+      if (parameters.relaxation == "fixed")
+      {
+        const double limit = estimate_gamma_limit();
+        s << ": Domain decomposition/Gamma = " << parameters.gamma
+          << " is above the estimated stable limit gamma* = " << limit
+          << "; use Gamma below " << limit << " (about "
+          << 2 * limit / (2 + limit) << " is fastest) or Relaxation = anderson";
+      }
+      else
+        s << " with Relaxation = " << parameters.relaxation
+          << "; try Relaxation = fixed with a smaller Gamma, or a larger "
+             "penalty c";
+      throw DivergenceError(s.str());
+    }
+
+    const bool residual_test = record.residual <= parameters.eps_residual;
+    const bool paper_test    = record.increment <= parameters.eps_u;
+    if (parameters.stopping == "residual")
+      return residual_test;
+    if (parameters.stopping == "paper")
+      return paper_test;
+    return residual_test || paper_test;
+  }
+
+  double
+  NeumannDDSolver::estimate_gamma_limit() const
+  {
+    // Power iteration on the linearised DD operator with every contact
+    // point active: v -> A^{-1} (1/theta) C^T C v, whose largest eigenvalue
+    // lambda_max gives the stability limit of (21), gamma* = 2/(1 +
+    // lambda_max) (the spectrum of I + A^{-1} J'' lies in [1, 1 +
+    // lambda_max]).
+    std::vector<Vector<double>> base(bodies.size()), v(bodies.size()),
+      w(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+    {
+      bodies[b]->solve(Vector<double>(), base[b]);
+      v[b] = bodies[b]->get_solution();
+      v[b] -= base[b];
+      if (v[b].l2_norm() == 0)
+        for (unsigned int i = 0; i < v[b].size(); ++i)
+          v[b](i) = 1. + 0.1 * std::sin(1. + i);
+      bodies[b]->get_constraints().set_zero(v[b]);
+    }
+    double lambda = 0;
+    for (unsigned int it = 0; it < 30; ++it)
+    {
+      std::vector<Vector<double>> loads(bodies.size());
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        loads[b].reinit(bodies[b]->n_dofs());
+      for (const auto *pair : pairs)
+      {
+        const unsigned int  b1 = body_index(pair->get_body_1());
+        const unsigned int  b2 = body_index(pair->get_body_2());
+        std::vector<double> u_1n, u_2n;
+        pair->normal_displacements(v[b1], v[b2], u_1n, u_2n);
+        std::vector<double> sigma(u_1n.size());
+        for (unsigned int q = 0; q < sigma.size(); ++q)
+          sigma[q] = -(u_1n[q] + u_2n[q]) / pair->penalty();
+        pair->add_contact_loads(sigma, loads[b1], loads[b2]);
+      }
+      double norm_v = 0, norm_w = 0;
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        bodies[b]->solve(loads[b], w[b]);
+        w[b] -= base[b];
+        w[b] *= -1.;
+        norm_v += v[b].norm_sqr();
+        norm_w += w[b].norm_sqr();
+      }
+      if (norm_w == 0 || norm_v == 0)
+        break;
+      lambda = std::sqrt(norm_w / norm_v);
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        v[b] = w[b];
+        v[b] /= std::sqrt(norm_w);
+      }
+    }
+    return 2. / (1. + lambda);
+  }
+
+  bool
+  NeumannDDSolver::uzawa_update()
+  {
+    // lambda <- min(0, lambda + g/theta): the converged penalty pressure
+    // becomes the next multiplier.
+    double max_penetration = 0, max_displacement = 0;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+    {
+      const auto state = contact_state(p);
+      multipliers[p]   = state.sigma_n;
+      max_penetration  = std::max(max_penetration, state.max_penetration);
+      for (unsigned int q = 0; q < state.u_1n.size(); ++q)
+        max_displacement = std::max(
+          max_displacement, std::abs(state.u_1n[q]) + std::abs(state.u_2n[q]));
+    }
+    pcout << "  Uzawa update " << uzawa_updates + 1 << ": max penetration "
+          << max_penetration << " (" << max_penetration / max_displacement
+          << " of the approach)" << std::endl;
+    // Stop when the penetration is small enough, or when it no longer
+    // shrinks: with non-matching meshes the pointwise condition at every
+    // contact point cannot hold exactly for the discrete displacements.
+    const bool stagnated = max_penetration > 0.9 * last_penetration;
+    last_penetration     = max_penetration;
+    if (stagnated)
+      pcout << "  Uzawa: penetration no longer decreases; stopping"
+            << std::endl;
+    return !stagnated &&
+           max_penetration > parameters.al_tolerance * max_displacement;
+  }
+
+  unsigned int
+  NeumannDDSolver::run()
+  {
+    if (parameters.relaxation == "auto")
+    {
+      // The optimal fixed gamma for a spectrum in [1, 1 + lambda_max] is
+      // 2 / (2 + lambda_max); gamma* = 2 / (1 + lambda_max).
+      const double limit      = estimate_gamma_limit();
+      const double lambda_max = 2. / limit - 1.;
+      gamma                   = 2. / (2. + lambda_max);
+      pcout << "  automatic relaxation: gamma* = " << limit
+            << ", gamma = " << gamma << std::endl;
+    }
+    while (true)
+    {
+      bool converged = false;
+      while (!converged)
+      {
+        if (records.size() >= parameters.max_iterations)
+          throw DivergenceError(
+            "the domain decomposition did not converge in " +
+            std::to_string(parameters.max_iterations) +
+            " iterations (residual " + std::to_string(records.back().residual) +
+            "); raise Domain decomposition/Max iterations, or use "
+            "Relaxation = anderson");
+        converged = step();
+      }
+      if (!parameters.augmented_lagrangian ||
+          uzawa_updates >= parameters.al_max_updates || !uzawa_update())
+        break;
+      ++uzawa_updates;
+      phase_start = records.size();
+      previous_residual.reinit(0);
+      delta_f.clear();
+      delta_g.clear();
+      gamma = (parameters.relaxation == "auto") ? gamma : parameters.gamma;
+    }
+    return records.size();
+  }
+
+  ContactState
+  NeumannDDSolver::contact_state(const unsigned int p) const
+  {
+    const auto                 &pair = *pairs[p];
+    std::vector<Vector<double>> u(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      u[b] = bodies[b]->get_solution();
+
+    ContactState state;
+    pair.normal_displacements(u[body_index(pair.get_body_1())],
+                              u[body_index(pair.get_body_2())],
+                              state.u_1n,
+                              state.u_2n);
+    state.sigma_n = pressure(p, u);
+    Vector<double> l1(pair.get_body_1().n_dofs()),
+      l2(pair.get_body_2().n_dofs());
+    std::tie(state.force_1, state.force_2) =
+      pair.add_contact_loads(state.sigma_n, l1, l2);
+    for (unsigned int q = 0; q < state.sigma_n.size(); ++q)
+    {
+      const auto &pt     = pair.points()[q];
+      state.max_pressure = std::max(state.max_pressure, -state.sigma_n[q]);
+      if (state.sigma_n[q] < 0)
+        state.contact_length += pt.JxW;
+      state.max_penetration =
+        std::max(state.max_penetration, state.u_1n[q] + state.u_2n[q] - pt.gap);
+    }
+    return state;
+  }
+} // namespace ddcontact
