@@ -46,6 +46,18 @@ namespace ddcontact
       return bodies;
     }
 
+    const NeumannDDSolver &
+    get_dd_solver() const
+    {
+      return *dd_solver;
+    }
+
+    const std::vector<std::unique_ptr<ContactPair>> &
+    get_contact_pairs() const
+    {
+      return contact_pairs;
+    }
+
   private:
     void
     setup_bodies();

@@ -1,0 +1,152 @@
+// DESCRIPTION: penalty contact by the Neumann DD (20)-(21) on the paper's
+// scene: equal and opposite forces, symmetry, no contact, penalty error ~
+// theta, augmented Lagrangian, divergence reported
+#include <ddcontact/simulation.h>
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+using namespace ddcontact;
+
+namespace
+{
+  int failures = 0;
+
+  void
+  check(const bool ok, const std::string &what)
+  {
+    std::cout << (ok ? "  ok    " : "  FAIL  ") << what << std::endl;
+    if (!ok)
+      ++failures;
+  }
+
+  /** Run the paper's scene on coarse meshes with extra overrides. */
+  std::unique_ptr<Simulation>
+  run(const std::string &source_dir, std::vector<std::string> overrides)
+  {
+    std::vector<std::string> all = {"Output directory=contact_dd_output",
+                                    "Output/Write vtu=false",
+                                    "Body omega1/Mesh/Initial refinement=1",
+                                    "Body omega2/Mesh/Initial refinement=1",
+                                    "Domain decomposition/Relaxation=anderson",
+                                    "Domain decomposition/eps_residual=1e-10"};
+    all.insert(all.end(), overrides.begin(), overrides.end());
+    const ParameterReader reader(source_dir + "/prm/paper_two_bodies.prm", all);
+    static std::ostringstream quiet;
+    auto simulation = std::make_unique<Simulation>(reader.scene(), quiet);
+    simulation->run();
+    return simulation;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string                source_dir = (argc > 1) ? argv[1] : "..";
+
+  // 1. Momentum: the two contact forces are assembled from the same points
+  //    and weights but from different shape functions (body 1 at x, body 2
+  //    at P(x)); partition of unity makes them equal and opposite up to
+  //    round-off.
+  {
+    const auto   sim      = run(source_dir, {});
+    const auto   state    = sim->get_dd_solver().contact_state(0);
+    const double f        = state.force_1.norm();
+    const double mismatch = (state.force_1 + state.force_2).norm() / f;
+    std::cout << "force on body 1 = " << state.force_1
+              << ", on body 2 = " << state.force_2 << ", relative mismatch "
+              << mismatch << std::endl;
+    check(f > 0 && mismatch < 1e-12, "forces equal and opposite to 1e-12");
+    check(std::abs(state.force_1[0]) < 1e-10 * f,
+          "no tangential force (frictionless, flat zone)");
+  }
+
+  // 2. Symmetry about x1 = 0 on quad/quad meshes, which are mirror
+  //    symmetric (the triangle mesh of a rectangle is not: its diagonals
+  //    all lean one way). Converged to 1e-10, so the mirrored pressures
+  //    agree to about that relative to the peak.
+  {
+    const auto sim =
+      run(source_dir, {"Body omega1/Element/Cell type=quadrilateral"});
+    const auto  state = sim->get_dd_solver().contact_state(0);
+    const auto &pts   = sim->get_contact_pairs()[0]->points();
+    double      worst = 0;
+    for (unsigned int i = 0; i < pts.size(); ++i)
+      for (unsigned int j = 0; j < pts.size(); ++j)
+        if (std::abs(pts[i].x[0] + pts[j].x[0]) < 1e-12)
+          worst =
+            std::max(worst, std::abs(state.sigma_n[i] - state.sigma_n[j]));
+    std::cout << "largest asymmetry of the pressure " << worst << " (peak "
+              << state.max_pressure << ")" << std::endl;
+    check(worst < 1e-7 * state.max_pressure, "pressure symmetric about x1 = 0");
+  }
+
+  // 3. No contact: without approach the gap r0 x1^2 >= 0 never closes; the
+  //    Winkler initial guess is then the contact-free solution and the
+  //    first iteration has a zero residual.
+  {
+    const auto sim   = run(source_dir, {"Constants=r0=1e-3, Delta=0"});
+    const auto state = sim->get_dd_solver().contact_state(0);
+    const auto n     = sim->get_dd_solver().history().size();
+    std::cout << "no contact: " << n << " iteration(s), peak pressure "
+              << state.max_pressure << std::endl;
+    check(n == 1 && state.max_pressure == 0.,
+          "no contact: zero pressure, stops at once");
+  }
+
+  // 4. Penalty error: the overlap is about theta * pressure, so halving
+  //    theta halves it. The pressure itself changes by O(theta) relative
+  //    (theta E/H = 0.05 here), so the ratio is 2 to within a few percent.
+  double penetration_c = 0;
+  {
+    const auto s1   = run(source_dir, {});
+    const auto s2   = run(source_dir, {"Contact pair S/Penalty=0.025"});
+    penetration_c   = s1->get_dd_solver().contact_state(0).max_penetration;
+    const double p2 = s2->get_dd_solver().contact_state(0).max_penetration;
+    std::cout << "penetration c = 0.05: " << penetration_c
+              << ", c = 0.025: " << p2 << ", ratio " << penetration_c / p2
+              << std::endl;
+    check(std::abs(penetration_c / p2 - 2.) < 0.1,
+          "penetration scales with theta");
+  }
+
+  // 5. Augmented Lagrangian: the penetration falls below 1e-3 of the
+  //    approach Delta without changing theta.
+  {
+    const auto   sim = run(source_dir,
+                         {"Domain decomposition/Augmented Lagrangian=true",
+                            "Domain decomposition/AL tolerance=2e-4"});
+    const double p   = sim->get_dd_solver().contact_state(0).max_penetration;
+    std::cout << "augmented Lagrangian: penetration " << p << " = "
+              << p / 1.366e-3 << " of the approach, after "
+              << sim->get_dd_solver().n_uzawa_updates() << " updates"
+              << std::endl;
+    check(p < 1e-3 * 1.366e-3 && p < 0.1 * penetration_c,
+          "augmented Lagrangian removes the penalty penetration");
+  }
+
+  // 6. A gamma far above gamma* is reported as divergence, not looped on.
+  {
+    bool        diverged = false;
+    std::string message;
+    try
+    {
+      run(source_dir,
+          {"Domain decomposition/Relaxation=fixed",
+           "Domain decomposition/Gamma=0.9"});
+    }
+    catch (const DivergenceError &e)
+    {
+      diverged = true;
+      message  = e.what();
+    }
+    std::cout << "gamma = 0.9: " << message << std::endl;
+    check(diverged && message.find("Gamma") != std::string::npos,
+          "gamma above gamma* reported as divergence naming Gamma");
+  }
+
+  std::cout << (failures ? "FAILED" : "PASSED") << std::endl;
+  return failures ? 1 : 0;
+}
