@@ -11,6 +11,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
@@ -443,19 +444,24 @@ namespace ddcontact
   ElasticBody<dim>::point_values(const Point<dim>     &x,
                                  const Vector<double> &u) const
   {
-    std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>> found;
-    try
-    {
-      found =
-        GridTools::find_active_cell_around_point(*mapping, dof_handler, x);
-    }
-    catch (...)
+    // The cache version reports a point outside the mesh by an invalid
+    // iterator instead of an assertion.
+    const GridTools::Cache<dim> cache(*triangulation, *mapping);
+    const auto tria_found = GridTools::find_active_cell_around_point(cache, x);
+    if (tria_found.first.state() != IteratorState::valid)
     {
       std::ostringstream s;
       s << "Output/Points: the point (" << x << ") does not lie in body '"
         << parameters.name << "'";
       throw InputError(s.str());
     }
+    const std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
+                          found(typename DoFHandler<dim>::active_cell_iterator(
+              &*triangulation,
+              tria_found.first->level(),
+              tria_found.first->index(),
+              &dof_handler),
+            tria_found.second);
     const Quadrature<dim> at_point(std::vector<Point<dim>>{found.second});
     FEValues<dim>         fe_values(
       *mapping, *fe, at_point, update_values | update_gradients);

@@ -6,6 +6,7 @@
 #include <ddcontact/parameters.h>
 
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 namespace ddcontact
@@ -127,19 +128,31 @@ namespace ddcontact
                        std::to_string(n_components) +
                        " expression(s) separated by ';'");
     auto function = std::make_shared<FunctionParser<2>>(n_components);
+    // muparser compiles lazily: evaluate once so that a syntax error shows
+    // up here, with the entry's name, and not in a worker thread. deal.II
+    // prints muparser's diagnosis to std::cerr before it throws; capture it
+    // for our one-line message instead.
+    std::ostringstream diagnosis;
+    auto *const        cerr_buffer = std::cerr.rdbuf(diagnosis.rdbuf());
     try
     {
       function->initialize("x,y", parts, constants);
-      // muparser compiles lazily: evaluate once so that a syntax error
-      // shows up here, with the entry's name, and not in a worker thread.
       Vector<double> values(n_components);
       function->vector_value(Point<2>(0.123, 0.456), values);
     }
-    catch (const std::exception &e)
+    catch (...)
     {
-      throw InputError(what + ": cannot parse '" + expression +
-                       "': " + message_of(e));
+      std::cerr.rdbuf(cerr_buffer);
+      std::string message = diagnosis.str();
+      const auto  start   = message.find("Message:");
+      message =
+        (start == std::string::npos)
+          ? ""
+          : message.substr(start + 8, message.find('\n', start) - start - 8);
+      throw InputError(what + ": cannot parse '" + expression + "'" +
+                       (message.empty() ? "" : ": " + one_line(message)));
     }
+    std::cerr.rdbuf(cerr_buffer);
     return function;
   }
 

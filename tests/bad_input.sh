@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# DESCRIPTION: bad input gets one line naming the parameter or file and a non-zero exit, never a crash
+# usage: bad_input.sh DDCONTACT_EXECUTABLE SOURCE_DIR
+set -u
+exe="$1"; src="$2"
+base="$src/prm/two_bodies.prm"
+work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
+failures=0
+
+# case NAME EXPECTED_SUBSTRING ARGS...
+case_() {
+  local name="$1" expect="$2"; shift 2
+  "$exe" --output "$work/out" "$@" >"$work/stdout" 2>"$work/stderr"
+  local code=$? lines
+  lines=$(wc -l <"$work/stderr")
+  if [ $code -eq 0 ] || [ $code -ge 128 ] || [ "$lines" -ne 1 ] ||
+     grep -q -E "Stacktrace|Aborted|Signal" "$work/stderr" ||
+     ! grep -q -F -- "$expect" "$work/stderr"; then
+    echo "FAIL $name: exit $code, $lines line(s) on stderr, expected '$expect':"
+    sed 's/^/    /' "$work/stderr" | head -5
+    failures=$((failures + 1))
+  else
+    echo "ok   $name: $(cat "$work/stderr")"
+  fi
+}
+
+case_ "missing parameter file" "no_such.prm" "$work/no_such.prm"
+printf 'set Bodies = a\nset Nonsense entry = 3\n' >"$work/unknown.prm"
+case_ "unknown entry" "Nonsense entry" "$work/unknown.prm"
+case_ "missing mesh file" "nothere.msh" "$base" --set "Body lower/Mesh/Type=file" --set "Body lower/Mesh/File=nothere.msh"
+case_ "E <= 0" "Young's modulus" "$base" --set "Body lower/Material/Young's modulus=-1"
+case_ "E = 0" "Young's modulus" "$base" --set "Body lower/Material/Young's modulus=0"
+case_ "nu = 0.5" "Poisson's ratio" "$base" --set "Body upper/Material/Poisson's ratio=0.5"
+case_ "nu = -1.2" "Poisson's ratio" "$base" --set "Body upper/Material/Poisson's ratio=-1.2"
+case_ "boundary id not in mesh" "boundary id 7" "$base" --set "Body lower/Boundary conditions/Neumann=7: 0; 1"
+case_ "no Dirichlet part" "Body upper/Dirichlet" "$base" --set "Body upper/Boundary conditions/Dirichlet="
+case_ "expression does not parse" "Body lower/Neumann" "$base" --set "Body lower/Boundary conditions/Neumann=3: 0; -p*("
+case_ "unknown variable" "Body upper/Body force" "$base" --set "Body upper/Boundary conditions/Body force=0; -z"
+case_ "--set of an undeclared entry" "No such entry" "$base" --set "Body lower/No such entry=1"
+case_ "report point outside its body" "Output/Points" "$base" --set "Output/Points=lower: 9, 9"
+case_ "contact pair with unknown body" "Contact pair S" "$src/prm/paper_two_bodies.prm" --set "Contact pair S/Body 2=nobody"
+case_ "gamma outside (0, 1]" "Gamma" "$src/prm/paper_two_bodies.prm" --set "Domain decomposition/Gamma=0"
+
+echo "$((15 - failures)) passed, $failures failed"
+[ $failures -eq 0 ]
