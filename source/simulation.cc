@@ -1,5 +1,6 @@
 #include <deal.II/base/thread_management.h>
 
+#include <ddcontact/monolithic_solver.h>
 #include <ddcontact/simulation.h>
 #include <ddcontact/version.h>
 
@@ -91,7 +92,21 @@ namespace ddcontact
   {
     TimerOutput::Scope t(timer, "contact solve");
     dd_solver->initialize();
-    return dd_solver->run();
+    if (parameters.dd.solver == "dd")
+      return dd_solver->run();
+
+    std::vector<ElasticBody<2> *> body_pointers;
+    for (auto &b : bodies)
+      body_pointers.push_back(b.get());
+    std::vector<ContactPair *> pair_pointers;
+    for (auto &p : contact_pairs)
+      pair_pointers.push_back(p.get());
+    MonolithicContactSolver newton(body_pointers,
+                                   pair_pointers,
+                                   parameters.dd.n_newton,
+                                   pcout);
+    n_newton_iterations = newton.run();
+    return 0;
   }
 
   void

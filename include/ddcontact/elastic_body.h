@@ -155,6 +155,13 @@ namespace ddcontact
       return stiffness_matrix;
     }
 
+    /** The condensed load vector of body force and tractions (12). */
+    const Vector<double> &
+    get_load_vector() const
+    {
+      return load_vector;
+    }
+
     const Material &
     get_material() const
     {

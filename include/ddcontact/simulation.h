@@ -95,6 +95,7 @@ namespace ddcontact
     std::vector<std::unique_ptr<ContactPair>>    contact_pairs;
     std::unique_ptr<NeumannDDSolver>             dd_solver;
     unsigned int                                 n_contact_iterations = 0;
+    unsigned int                                 n_newton_iterations  = 0;
     std::unique_ptr<OutputWriter>                output_writer;
     Json                                         summary_json;
   };
