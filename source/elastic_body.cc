@@ -161,6 +161,31 @@ namespace ddcontact
                        "triangle)");
 
     triangulation->refine_global(parameters.initial_refinement);
+
+    if (!parameters.refinement_box.empty() && parameters.box_refinement > 0)
+    {
+      if (is_simplex())
+        throw InputError(parameters.section() +
+                         "/Mesh/Refinement box: local refinement needs "
+                         "quadrilaterals (deal.II 9.4 refines triangles "
+                         "only globally)");
+      const auto c = Utilities::split_string_list(parameters.refinement_box);
+      const Point<dim> lo(std::stod(c[0]), std::stod(c[1]));
+      const Point<dim> hi(std::stod(c[2]), std::stod(c[3]));
+      for (unsigned int k = 0; k < parameters.box_refinement; ++k)
+      {
+        for (const auto &cell : triangulation->active_cell_iterators())
+        {
+          const auto box = cell->bounding_box();
+          if (box.get_boundary_points().first[0] <= hi[0] &&
+              box.get_boundary_points().second[0] >= lo[0] &&
+              box.get_boundary_points().first[1] <= hi[1] &&
+              box.get_boundary_points().second[1] >= lo[1])
+            cell->set_refine_flag();
+        }
+        triangulation->execute_coarsening_and_refinement();
+      }
+    }
     check_boundary_ids();
   }
 

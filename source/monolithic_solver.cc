@@ -15,8 +15,8 @@ namespace ddcontact
     , pairs(pairs)
     , max_iterations(max_iterations)
     , pcout(pcout)
-  {}
-
+  {
+  }
 
   unsigned int
   MonolithicContactSolver::run()
@@ -26,7 +26,8 @@ namespace ddcontact
     for (unsigned int b = 0; b < bodies.size(); ++b)
       offset[b + 1] = offset[b] + bodies[b]->n_dofs();
     const auto n     = offset.back();
-    const auto index = [&](const ElasticBody<2> &body) {
+    const auto index = [&](const ElasticBody<2> &body)
+    {
       for (unsigned int b = 0; b < bodies.size(); ++b)
         if (bodies[b] == &body)
           return b;
@@ -38,20 +39,19 @@ namespace ddcontact
     AffineConstraints<double> constraints;
     for (unsigned int b = 0; b < bodies.size(); ++b)
       for (const auto &line : bodies[b]->get_constraints().get_lines())
-        {
-          constraints.add_line(line.index + offset[b]);
-          for (const auto &[column, weight] : line.entries)
-            constraints.add_entry(line.index + offset[b],
-                                  column + offset[b],
-                                  weight);
-          constraints.set_inhomogeneity(line.index + offset[b],
-                                        line.inhomogeneity);
-        }
+      {
+        constraints.add_line(line.index + offset[b]);
+        for (const auto &[column, weight] : line.entries)
+          constraints.add_entry(
+            line.index + offset[b], column + offset[b], weight);
+        constraints.set_inhomogeneity(line.index + offset[b],
+                                      line.inhomogeneity);
+      }
     constraints.close();
 
     // Each contact point couples the dofs of both of its cells.
-    const auto point_dofs = [&](const ContactPair  &pair,
-                                const ContactPoint &p) {
+    const auto point_dofs = [&](const ContactPair &pair, const ContactPoint &p)
+    {
       std::vector<types::global_dof_index> dofs;
       for (const auto i : p.dofs_1)
         dofs.push_back(i + offset[index(pair.get_body_1())]);
@@ -62,15 +62,16 @@ namespace ddcontact
 
     DynamicSparsityPattern dsp(n);
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      {
-        const auto &K = bodies[b]->get_stiffness_matrix();
-        for (types::global_dof_index i = 0; i < K.m(); ++i)
-          for (auto it = K.begin(i); it != K.end(i); ++it)
-            dsp.add(i + offset[b], it->column() + offset[b]);
-      }
+    {
+      const auto &K = bodies[b]->get_stiffness_matrix();
+      for (types::global_dof_index i = 0; i < K.m(); ++i)
+        for (auto it = K.begin(i); it != K.end(i); ++it)
+          dsp.add(i + offset[b], it->column() + offset[b]);
+    }
     for (const auto *pair : pairs)
       for (const auto &p : pair->points())
-        constraints.add_entries_local_to_global(point_dofs(*pair, p), dsp, false);
+        constraints.add_entries_local_to_global(
+          point_dofs(*pair, p), dsp, false);
     SparsityPattern sparsity;
     sparsity.copy_from(dsp);
 
@@ -89,76 +90,76 @@ namespace ddcontact
     std::vector<std::vector<bool>> active(pairs.size());
     unsigned int                   iteration = 0;
     for (; iteration < max_iterations; ++iteration)
+    {
+      // The active set of the current iterate.
+      bool         changed  = (iteration == 0);
+      unsigned int n_active = 0;
+      for (unsigned int p = 0; p < pairs.size(); ++p)
       {
-        // The active set of the current iterate.
-        bool         changed  = (iteration == 0);
-        unsigned int n_active = 0;
-        for (unsigned int p = 0; p < pairs.size(); ++p)
-          {
-            const auto &pts = pairs[p]->points();
-            active[p].resize(pts.size(), false);
-            for (unsigned int q = 0; q < pts.size(); ++q)
-              {
-                const auto dofs = point_dofs(*pairs[p], pts[q]);
-                double     cu   = 0;
-                for (unsigned int i = 0; i < pts[q].a.size(); ++i)
-                  cu += pts[q].a[i] * u(dofs[i]);
-                for (unsigned int i = 0; i < pts[q].b.size(); ++i)
-                  cu += pts[q].b[i] * u(dofs[pts[q].a.size() + i]);
-                const bool now = pts[q].gap - cu < 0;
-                changed        = changed || (now != active[p][q]);
-                active[p][q]   = now;
-                n_active += now;
-              }
-          }
-        pcout << "  Newton " << iteration << ": " << n_active
-              << " active contact points" << std::endl;
-        if (!changed)
-          break;
-
-        // Matrix blockdiag(K_a) + (1/theta) sum_active w c c^T and right-hand
-        // side L + (1/theta) sum_active w f_n c.
-        SparseMatrix<double> matrix(sparsity);
-        for (unsigned int b = 0; b < bodies.size(); ++b)
-          {
-            const auto &K = bodies[b]->get_stiffness_matrix();
-            for (types::global_dof_index i = 0; i < K.m(); ++i)
-              for (auto it = K.begin(i); it != K.end(i); ++it)
-                matrix.add(i + offset[b], it->column() + offset[b], it->value());
-          }
-        Vector<double> rhs(base_rhs);
-        for (unsigned int p = 0; p < pairs.size(); ++p)
-          {
-            const double theta = pairs[p]->penalty();
-            const auto  &pts   = pairs[p]->points();
-            for (unsigned int q = 0; q < pts.size(); ++q)
-              if (active[p][q])
-                {
-                  const auto dofs = point_dofs(*pairs[p], pts[q]);
-                  std::vector<double> c(pts[q].a);
-                  c.insert(c.end(), pts[q].b.begin(), pts[q].b.end());
-                  FullMatrix<double> local_matrix(c.size(), c.size());
-                  Vector<double>     local_rhs(c.size());
-                  const double       w = pts[q].JxW / theta;
-                  for (unsigned int i = 0; i < c.size(); ++i)
-                    {
-                      local_rhs(i) = w * pts[q].gap * c[i];
-                      for (unsigned int j = 0; j < c.size(); ++j)
-                        local_matrix(i, j) = w * c[i] * c[j];
-                    }
-                  constraints.distribute_local_to_global(
-                    local_matrix, local_rhs, dofs, matrix, rhs);
-                }
-          }
-        SparseDirectUMFPACK solver;
-        solver.initialize(matrix);
-        solver.vmult(u, rhs);
-        constraints.distribute(u);
-        for (const double v : u)
-          if (!std::isfinite(v))
-            throw DivergenceError("the monolithic Newton solver produced a "
-                                  "non-finite displacement");
+        const auto &pts = pairs[p]->points();
+        active[p].resize(pts.size(), false);
+        for (unsigned int q = 0; q < pts.size(); ++q)
+        {
+          const auto dofs = point_dofs(*pairs[p], pts[q]);
+          double     cu   = 0;
+          for (unsigned int i = 0; i < pts[q].a.size(); ++i)
+            cu += pts[q].a[i] * u(dofs[i]);
+          for (unsigned int i = 0; i < pts[q].b.size(); ++i)
+            cu += pts[q].b[i] * u(dofs[pts[q].a.size() + i]);
+          const bool now = pts[q].gap - cu < 0;
+          changed        = changed || (now != active[p][q]);
+          active[p][q]   = now;
+          n_active += now;
+        }
       }
+      pcout << "  Newton " << iteration << ": " << n_active
+            << " active contact points" << std::endl;
+      if (!changed)
+        break;
+
+      // Matrix blockdiag(K_a) + (1/theta) sum_active w c c^T and right-hand
+      // side L + (1/theta) sum_active w f_n c.
+      SparseMatrix<double> matrix(sparsity);
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        const auto &K = bodies[b]->get_stiffness_matrix();
+        for (types::global_dof_index i = 0; i < K.m(); ++i)
+          for (auto it = K.begin(i); it != K.end(i); ++it)
+            matrix.add(i + offset[b], it->column() + offset[b], it->value());
+      }
+      Vector<double> rhs(base_rhs);
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        const double theta = pairs[p]->penalty();
+        const auto  &pts   = pairs[p]->points();
+        for (unsigned int q = 0; q < pts.size(); ++q)
+          if (active[p][q])
+          {
+            const auto          dofs = point_dofs(*pairs[p], pts[q]);
+            std::vector<double> c(pts[q].a);
+            c.insert(c.end(), pts[q].b.begin(), pts[q].b.end());
+            FullMatrix<double> local_matrix(c.size(), c.size());
+            Vector<double>     local_rhs(c.size());
+            const double       w = pts[q].JxW / theta;
+            for (unsigned int i = 0; i < c.size(); ++i)
+            {
+              local_rhs(i) = w * pts[q].gap * c[i];
+              for (unsigned int j = 0; j < c.size(); ++j)
+                local_matrix(i, j) = w * c[i] * c[j];
+            }
+            constraints.distribute_local_to_global(
+              local_matrix, local_rhs, dofs, matrix, rhs);
+          }
+      }
+      SparseDirectUMFPACK solver;
+      solver.initialize(matrix);
+      solver.vmult(u, rhs);
+      constraints.distribute(u);
+      for (const double v : u)
+        if (!std::isfinite(v))
+          throw DivergenceError("the monolithic Newton solver produced a "
+                                "non-finite displacement");
+    }
     if (iteration == max_iterations)
       throw DivergenceError(
         "the monolithic Newton solver did not settle its active set in " +

@@ -272,6 +272,17 @@ namespace ddcontact
                         "0",
                         Patterns::Integer(0, 20),
                         "Number of global refinements of the initial mesh.");
+      prm.declare_entry("Refinement box",
+                        "",
+                        Patterns::Anything(),
+                        "'x0, y0, x1, y1': cells that touch this box are "
+                        "refined Box refinement more times after the global "
+                        "refinement (quadrilaterals; hanging nodes).");
+      prm.declare_entry(
+        "Box refinement",
+        "0",
+        Patterns::Integer(0, 20),
+        "Number of refinements of the cells in Refinement box.");
     }
     prm.leave_subsection();
 
@@ -365,6 +376,12 @@ namespace ddcontact
                             static_cast<unsigned int>(n[1])};
       mesh_file          = prm.get("File");
       initial_refinement = prm.get_integer("Initial refinement");
+      refinement_box     = Utilities::trim(prm.get("Refinement box"));
+      box_refinement     = prm.get_integer("Box refinement");
+      if (!refinement_box.empty() &&
+          Utilities::split_string_list(refinement_box).size() != 4)
+        throw InputError(section + "Mesh/Refinement box: '" + refinement_box +
+                         "' is not 'x0, y0, x1, y1'");
       if (mesh_type == "rectangle" &&
           !(corner_1[0] < corner_2[0] && corner_1[1] < corner_2[1]))
         throw InputError(section +

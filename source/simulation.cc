@@ -101,10 +101,8 @@ namespace ddcontact
     std::vector<ContactPair *> pair_pointers;
     for (auto &p : contact_pairs)
       pair_pointers.push_back(p.get());
-    MonolithicContactSolver newton(body_pointers,
-                                   pair_pointers,
-                                   parameters.dd.n_newton,
-                                   pcout);
+    MonolithicContactSolver newton(
+      body_pointers, pair_pointers, parameters.dd.n_newton, pcout);
     n_newton_iterations = newton.run();
     return 0;
   }

@@ -68,19 +68,20 @@ main(int argc, char **argv)
   //     with a residual tolerance of 1e-13 (error ~ tolerance x condition of
   //     the iteration, ~40 here) their contact displacements agree to 1e-8.
   {
-    const auto dd = run(source_dir, {"Domain decomposition/eps_residual=1e-13"});
+    const auto dd =
+      run(source_dir, {"Domain decomposition/eps_residual=1e-13"});
     const auto newton =
       run(source_dir, {"Domain decomposition/Solver=monolithic"});
-    const auto   s_dd = dd->get_dd_solver().contact_state(0);
-    const auto   s_nt = newton->get_dd_solver().contact_state(0);
-    double       diff = 0, scale = 0;
+    const auto s_dd = dd->get_dd_solver().contact_state(0);
+    const auto s_nt = newton->get_dd_solver().contact_state(0);
+    double     diff = 0, scale = 0;
     for (unsigned int q = 0; q < s_dd.u_1n.size(); ++q)
-      {
-        diff  = std::max({diff,
-                         std::abs(s_dd.u_1n[q] - s_nt.u_1n[q]),
-                         std::abs(s_dd.u_2n[q] - s_nt.u_2n[q])});
-        scale = std::max({scale, std::abs(s_nt.u_1n[q]), std::abs(s_nt.u_2n[q])});
-      }
+    {
+      diff  = std::max({diff,
+                        std::abs(s_dd.u_1n[q] - s_nt.u_1n[q]),
+                        std::abs(s_dd.u_2n[q] - s_nt.u_2n[q])});
+      scale = std::max({scale, std::abs(s_nt.u_1n[q]), std::abs(s_nt.u_2n[q])});
+    }
     std::cout << "DD vs monolithic Newton: max contact displacement difference "
               << diff / scale << " relative" << std::endl;
     check(diff < 1e-8 * scale, "DD equals the monolithic solver to 1e-8");

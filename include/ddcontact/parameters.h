@@ -47,6 +47,8 @@ namespace ddcontact
     std::vector<unsigned int> subdivisions{1, 1};
     std::string               mesh_file;
     unsigned int              initial_refinement = 0;
+    std::string               refinement_box; // "x0, y0, x1, y1" or empty
+    unsigned int              box_refinement = 0;
 
     // Element
     std::string  cell_type = "quadrilateral"; // or "triangle"

@@ -1,0 +1,98 @@
+// DESCRIPTION: Hertz contact (plane strain): half-width and peak pressure
+// converge to the closed form of HERTZ.md under refinement toward the contact
+// zone
+#include <deal.II/base/convergence_table.h>
+
+#include <ddcontact/simulation.h>
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+using namespace ddcontact;
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string                source_dir = (argc > 1) ? argv[1] : "..";
+
+  const double R = 50, E = 1000, nu = 0.3;
+  const double E_star = 1. / (2. * (1. - nu * nu) / E);
+
+  ConvergenceTable    table;
+  std::vector<double> error_a, error_p0;
+  for (const unsigned int level : {4u, 5u, 6u, 7u})
+  {
+    const std::string     levels = std::to_string(level);
+    const ParameterReader reader(source_dir + "/prm/hertz.prm",
+                                 {"Output directory=hertz_output",
+                                  "Output/Write vtu=false",
+                                  "Body upper/Mesh/Box refinement=" + levels,
+                                  "Body lower/Mesh/Box refinement=" + levels});
+    std::ostringstream    quiet;
+    Simulation            simulation(reader.scene(), quiet);
+    simulation.run();
+
+    const auto   state = simulation.get_dd_solver().contact_state(0);
+    const auto  &pts   = simulation.get_contact_pairs()[0]->points();
+    const double P     = state.force_1.norm();
+
+    // Closed form at the computed force (HERTZ.md: in plane strain the
+    // approach does not fix P, so compare at the P the run produced).
+    const double a_exact  = std::sqrt(4. * P * R / (M_PI * E_star));
+    const double p0_exact = std::sqrt(P * E_star / (M_PI * R));
+
+    // Half-width from the profile: p^2 = p0^2 (1 - x^2/a^2) is linear in
+    // x^2, so a least-squares line through (x^2, p^2) over the points in
+    // contact gives a^2 = -intercept/slope. This uses the whole profile
+    // instead of the last active point, whose position is only known to
+    // the spacing of the contact points.
+    double s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
+    for (unsigned int q = 0; q < pts.size(); ++q)
+      if (state.sigma_n[q] < 0)
+      {
+        const double X = pts[q].x[0] * pts[q].x[0];
+        const double Y = state.sigma_n[q] * state.sigma_n[q];
+        s0 += 1;
+        s1 += X;
+        s2 += X * X;
+        t0 += Y;
+        t1 += X * Y;
+      }
+    const double slope     = (s0 * t1 - s1 * t0) / (s0 * s2 - s1 * s1);
+    const double intercept = (t0 - slope * s1) / s0;
+    const double a         = std::sqrt(-intercept / slope);
+
+    const double h = simulation.get_bodies()[0]->min_cell_diameter();
+    error_a.push_back(std::abs(a - a_exact) / a_exact);
+    error_p0.push_back(std::abs(state.max_pressure - p0_exact) / p0_exact);
+    table.add_value("level", level);
+    table.add_value("h", h);
+    table.add_value("P", P);
+    table.add_value("a", a);
+    table.add_value("a_exact", a_exact);
+    table.add_value("err_a", error_a.back());
+    table.add_value("p0", state.max_pressure);
+    table.add_value("p0_exact", p0_exact);
+    table.add_value("err_p0", error_p0.back());
+  }
+  for (const auto &c : {"h", "P", "a", "a_exact", "p0", "p0_exact"})
+    table.set_precision(c, 5);
+  for (const auto &c : {"err_a", "err_p0"})
+  {
+    table.set_scientific(c, true);
+    table.set_precision(c, 2);
+    table.evaluate_convergence_rates(c, ConvergenceTable::reduction_rate_log2);
+  }
+  table.write_text(std::cout);
+
+  // Both errors must fall under refinement (toward the half-plane floor,
+  // which for a / L = 0.02 lies well below the 2 % asked of the finest
+  // mesh), and the finest mesh must be within 2 %.
+  const unsigned int n  = error_a.size();
+  bool               ok = error_a[n - 1] < 0.02 && error_p0[n - 1] < 0.02 &&
+            error_a[n - 1] < error_a[0] && error_p0[n - 1] < error_p0[0];
+  std::cout << (ok ? "PASSED" : "FAILED") << std::endl;
+  return ok ? 0 : 1;
+}
