@@ -368,6 +368,8 @@ namespace ddcontact
       }
     record.time = timer.wall_time();
     records.push_back(record);
+    if (iteration_callback)
+      iteration_callback(record.iteration);
 
     const bool print = record.iteration <= 5 || record.iteration % 50 == 0 ||
                        record.residual <= parameters.eps_residual ||

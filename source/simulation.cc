@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <iomanip>
 
 namespace ddcontact
@@ -92,6 +93,12 @@ namespace ddcontact
   {
     TimerOutput::Scope t(timer, "contact solve");
     dd_solver->initialize();
+    if (parameters.dd.write_every_iteration)
+      dd_solver->set_iteration_callback([this](const unsigned int k) {
+        std::ostringstream suffix;
+        suffix << '_' << std::setw(4) << std::setfill('0') << k;
+        write_contact_profiles(suffix.str());
+      });
     if (parameters.dd.solver == "dd")
       return dd_solver->run();
 

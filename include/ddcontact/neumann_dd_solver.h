@@ -11,6 +11,7 @@
 #include <ddcontact/parameters.h>
 
 #include <deque>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -88,6 +89,14 @@ namespace ddcontact
     ContactState
     contact_state(unsigned int p) const;
 
+    /** Called after every iteration with its number (e.g. to write the
+     * contact profiles of every iterate, the paper's Fig. 9). */
+    void
+    set_iteration_callback(const std::function<void(unsigned int)> &callback)
+    {
+      iteration_callback = callback;
+    }
+
     const std::vector<IterationRecord> &
     history() const
     {
@@ -148,6 +157,7 @@ namespace ddcontact
     unsigned int phase_start = 0; // first record of this Uzawa phase
     double       gamma       = 0;
     Timer        timer;
+    std::function<void(unsigned int)> iteration_callback;
 
     // Aitken: the previous residual; Anderson: histories of residual and
     // map-value differences.
