@@ -145,6 +145,34 @@ main(int argc, char **argv)
           "non-matching pair agrees with the quad/quad pair to 0.5 %");
   }
 
+  // 2c. Geometric gap: with flat zones a distance s apart, the distance
+  //     to the projection on S_2 is s everywhere, so the geometric gap and
+  //     the expression "s" define the same problem, to round-off.
+  {
+    const std::vector<std::string> apart = {
+      "Constants=r0=0, Delta=3e-4, s=1e-4",
+      "Body omega1/Mesh/Corner 1=-2, 1.0001",
+      "Body omega1/Mesh/Corner 2=2, 2.0001"};
+    auto with = [&](std::vector<std::string> extra)
+    {
+      extra.insert(extra.end(), apart.begin(), apart.end());
+      return extra;
+    };
+    const auto expression = run(source_dir, with({"Contact pair S/Gap=s"}));
+    const auto geometric =
+      run(source_dir, with({"Contact pair S/Gap type=geometric"}));
+    const auto s_e  = expression->get_dd_solver().contact_state(0);
+    const auto s_g  = geometric->get_dd_solver().contact_state(0);
+    double     diff = 0;
+    for (unsigned int q = 0; q < s_e.sigma_n.size(); ++q)
+      diff = std::max(diff, std::abs(s_e.sigma_n[q] - s_g.sigma_n[q]));
+    std::cout << "geometric against expression gap: max pressure difference "
+              << diff / s_e.max_pressure << " of the peak " << s_e.max_pressure
+              << std::endl;
+    check(s_e.max_pressure > 0 && diff < 1e-8 * s_e.max_pressure,
+          "geometric gap equals the expression gap for parallel zones");
+  }
+
   // 3. No contact: without approach the gap r0 x1^2 >= 0 never closes; the
   //    Winkler initial guess is then the contact-free solution and the
   //    first iteration has a zero residual.
