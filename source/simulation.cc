@@ -6,11 +6,26 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <iomanip>
+#include <sstream>
 
 namespace ddcontact
 {
+  namespace
+  {
+    /** The objects of a list of owners, for the solvers that only use
+     * them. */
+    template <typename T>
+    std::vector<T *>
+    raw_pointers(const std::vector<std::unique_ptr<T>> &owners)
+    {
+      std::vector<T *> pointers;
+      for (const auto &o : owners)
+        pointers.push_back(o.get());
+      return pointers;
+    }
+  } // namespace
+
   Simulation::Simulation(const SceneParameters &parameters,
                          std::ostream          &screen)
     : parameters(parameters)
@@ -78,14 +93,8 @@ namespace ddcontact
             << " contact points, theta = " << contact_pairs.back()->penalty()
             << std::endl;
     }
-    std::vector<ElasticBody<2> *> body_pointers;
-    for (auto &b : bodies)
-      body_pointers.push_back(b.get());
-    std::vector<ContactPair *> pair_pointers;
-    for (auto &p : contact_pairs)
-      pair_pointers.push_back(p.get());
     dd_solver = std::make_unique<NeumannDDSolver>(
-      parameters.dd, body_pointers, pair_pointers, pcout);
+      parameters.dd, raw_pointers(bodies), raw_pointers(contact_pairs), pcout);
   }
 
   unsigned int
@@ -94,22 +103,20 @@ namespace ddcontact
     TimerOutput::Scope t(timer, "contact solve");
     dd_solver->initialize();
     if (parameters.dd.write_every_iteration)
-      dd_solver->set_iteration_callback([this](const unsigned int k) {
-        std::ostringstream suffix;
-        suffix << '_' << std::setw(4) << std::setfill('0') << k;
-        write_contact_profiles(suffix.str());
-      });
+      dd_solver->set_iteration_callback(
+        [this](const unsigned int k)
+        {
+          std::ostringstream suffix;
+          suffix << '_' << std::setw(4) << std::setfill('0') << k;
+          write_contact_profiles(suffix.str());
+        });
     if (parameters.dd.solver == "dd")
       return dd_solver->run();
 
-    std::vector<ElasticBody<2> *> body_pointers;
-    for (auto &b : bodies)
-      body_pointers.push_back(b.get());
-    std::vector<ContactPair *> pair_pointers;
-    for (auto &p : contact_pairs)
-      pair_pointers.push_back(p.get());
-    MonolithicContactSolver newton(
-      body_pointers, pair_pointers, parameters.dd.n_newton, pcout);
+    MonolithicContactSolver newton(raw_pointers(bodies),
+                                   raw_pointers(contact_pairs),
+                                   parameters.dd.n_newton,
+                                   pcout);
     n_newton_iterations = newton.run();
     return 0;
   }
