@@ -576,15 +576,23 @@ namespace ddcontact
       l2(pair.get_body_2().n_dofs());
     std::tie(state.force_1, state.force_2) =
       pair.add_contact_loads(state.sigma_n, l1, l2);
+    double lo = std::numeric_limits<double>::max(), hi = -lo;
     for (unsigned int q = 0; q < state.sigma_n.size(); ++q)
     {
       const auto &pt     = pair.points()[q];
       state.max_pressure = std::max(state.max_pressure, -state.sigma_n[q]);
       if (state.sigma_n[q] < 0)
+      {
         state.contact_length += pt.JxW;
+        // Position along the tangent of S, for the half-width.
+        const double s = pt.x[0] * pt.normal[1] - pt.x[1] * pt.normal[0];
+        lo             = std::min(lo, s);
+        hi             = std::max(hi, s);
+      }
       state.max_penetration =
         std::max(state.max_penetration, state.u_1n[q] + state.u_2n[q] - pt.gap);
     }
+    state.half_width = (hi >= lo) ? 0.5 * (hi - lo) : 0.;
     return state;
   }
 } // namespace ddcontact

@@ -235,6 +235,7 @@ namespace ddcontact
         c.set("force", forces);
         c.set("max_pressure", state.max_pressure);
         c.set("contact_length", state.contact_length);
+        c.set("half_width", state.half_width);
         c.set("max_penetration", state.max_penetration);
         contact.push_back(c);
       }
@@ -291,6 +292,14 @@ namespace ddcontact
       }
       write_history();
       write_contact_profiles("");
+      for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+      {
+        const auto state = dd_solver->contact_state(p);
+        pcout << "  contact " << contact_pairs[p]->name() << ": force "
+              << state.force_1.norm() << ", peak pressure "
+              << state.max_pressure << ", half-width " << state.half_width
+              << ", max penetration " << state.max_penetration << std::endl;
+      }
       output_results(0);
       write_summary("converged");
     }
