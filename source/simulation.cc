@@ -295,7 +295,7 @@ namespace ddcontact
       for (unsigned int p = 0; p < contact_pairs.size(); ++p)
       {
         const auto state = dd_solver->contact_state(p);
-        pcout << "  contact " << contact_pairs[p]->name() << ": force "
+        pcout << std::setprecision(6) << "  contact " << contact_pairs[p]->name() << ": force "
               << state.force_1.norm() << ", peak pressure "
               << state.max_pressure << ", half-width " << state.half_width
               << ", max penetration " << state.max_penetration << std::endl;
