@@ -1,0 +1,324 @@
+// DESCRIPTION: Gmsh meshes through "Mesh/Type = file": a .msh written here
+// (quadrilaterals) and a .geo meshed by the gmsh binary (triangles) carry
+// their physical curve tags 11-14 as boundary ids on the right faces; a
+// uniaxial stress state with Dirichlet data on one tag and a traction on
+// another is reproduced exactly; a tag missing from the file is an
+// InputError naming the boundary id
+#include <deal.II/base/function_parser.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <ddcontact/elastic_body.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+
+using namespace ddcontact;
+
+namespace
+{
+  // The rectangle [0, L] x [0, H] and its physical curves: bottom 11,
+  // right 12, top 13, left 14; the surface is physical 1.
+  const double L = 2., H = 1.;
+
+  /**
+   * A legacy ASCII (2.2) Gmsh file of nx x ny quadrilaterals whose interior
+   * nodes are moved off the grid (by up to 0.2 h, deterministically) so the
+   * cells are general quadrilaterals; the sides stay straight.
+   */
+  void
+  write_msh(const std::string &filename,
+            const unsigned int nx,
+            const unsigned int ny)
+  {
+    std::ofstream out(filename);
+    out << std::setprecision(17);
+    out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
+    out << "$PhysicalNames\n5\n"
+        << "1 11 \"bottom\"\n1 12 \"right\"\n1 13 \"top\"\n1 14 \"left\"\n"
+        << "2 1 \"body\"\n$EndPhysicalNames\n";
+
+    const auto node = [&](const unsigned int i, const unsigned int j)
+    { return 1 + i + j * (nx + 1); };
+    out << "$Nodes\n" << (nx + 1) * (ny + 1) << "\n";
+    for (unsigned int j = 0; j <= ny; ++j)
+      for (unsigned int i = 0; i <= nx; ++i)
+      {
+        double x = L * i / nx, y = H * j / ny;
+        if (i > 0 && i < nx && j > 0 && j < ny)
+        {
+          x += 0.2 * (L / nx) * std::sin(1.7 * i + 2.3 * j);
+          y += 0.2 * (H / ny) * std::cos(0.9 * i + 3.1 * j);
+        }
+        out << node(i, j) << " " << x << " " << y << " 0\n";
+      }
+    out << "$EndNodes\n";
+
+    // Elements: "id type n_tags physical elementary nodes..."; type 1 is a
+    // 2-node line, type 3 a 4-node quadrilateral.
+    std::ostringstream elements;
+    unsigned int       n_elements = 0;
+    const auto         line =
+      [&](const unsigned int tag, const unsigned int a, const unsigned int b)
+    {
+      elements << ++n_elements << " 1 2 " << tag << " " << tag << " " << a
+               << " " << b << "\n";
+    };
+    for (unsigned int i = 0; i < nx; ++i)
+      line(11, node(i, 0), node(i + 1, 0));
+    for (unsigned int j = 0; j < ny; ++j)
+      line(12, node(nx, j), node(nx, j + 1));
+    for (unsigned int i = nx; i > 0; --i)
+      line(13, node(i, ny), node(i - 1, ny));
+    for (unsigned int j = ny; j > 0; --j)
+      line(14, node(0, j), node(0, j - 1));
+    for (unsigned int j = 0; j < ny; ++j)
+      for (unsigned int i = 0; i < nx; ++i)
+        elements << ++n_elements << " 3 2 1 1 " << node(i, j) << " "
+                 << node(i + 1, j) << " " << node(i + 1, j + 1) << " "
+                 << node(i, j + 1) << "\n";
+    out << "$Elements\n"
+        << n_elements << "\n"
+        << elements.str() << "$EndElements\n";
+  }
+
+  /** The same rectangle as a Gmsh geometry; gmsh meshes it in triangles. */
+  void
+  write_geo(const std::string &filename)
+  {
+    std::ofstream out(filename);
+    out << "// written by the ddcontact test gmsh_mesh\n"
+        << "h = 0.3;\n"
+        << "Point(1) = {0, 0, 0, h};\n"
+        << "Point(2) = {" << L << ", 0, 0, h};\n"
+        << "Point(3) = {" << L << ", " << H << ", 0, h};\n"
+        << "Point(4) = {0, " << H << ", 0, h};\n"
+        << "Line(1) = {1, 2};\nLine(2) = {2, 3};\n"
+        << "Line(3) = {3, 4};\nLine(4) = {4, 1};\n"
+        << "Curve Loop(1) = {1, 2, 3, 4};\n"
+        << "Plane Surface(1) = {1};\n"
+        << "Physical Curve(11) = {1};\nPhysical Curve(12) = {2};\n"
+        << "Physical Curve(13) = {3};\nPhysical Curve(14) = {4};\n"
+        << "Physical Surface(1) = {1};\n";
+  }
+
+  /** The tag a boundary face must carry, from the position of its centre. */
+  types::boundary_id
+  expected_id(const Point<2> &c)
+  {
+    const double tol = 1e-10;
+    if (std::abs(c[1]) < tol)
+      return 11;
+    if (std::abs(c[0] - L) < tol)
+      return 12;
+    if (std::abs(c[1] - H) < tol)
+      return 13;
+    if (std::abs(c[0]) < tol)
+      return 14;
+    return numbers::invalid_boundary_id;
+  }
+
+  /**
+   * Every boundary face against expected_id(), on the mesh as read and once
+   * more after a global refinement (the children must inherit the ids).
+   */
+  unsigned int
+  check_boundary_ids(Triangulation<2> &tria, const std::string &what)
+  {
+    unsigned int failures = 0;
+    for (unsigned int round = 0; round < 2; ++round)
+    {
+      std::map<types::boundary_id, unsigned int> n_faces;
+      unsigned int                               n_wrong = 0;
+      for (const auto &face : tria.active_face_iterators())
+        if (face->at_boundary())
+        {
+          ++n_faces[face->boundary_id()];
+          if (face->boundary_id() != expected_id(face->center()))
+          {
+            if (n_wrong < 3)
+              std::cout << "  face at (" << face->center() << ") has id "
+                        << face->boundary_id() << ", expected "
+                        << expected_id(face->center()) << std::endl;
+            ++n_wrong;
+          }
+        }
+      std::cout << what << (round == 0 ? ", as read" : ", refined once") << ": "
+                << tria.n_active_cells() << " cells, boundary faces";
+      for (const auto &[id, n] : n_faces)
+        std::cout << " [id " << id << ": " << n << "]";
+      const bool ok = n_wrong == 0 && n_faces.size() == 4;
+      std::cout << ", " << n_wrong << " with a wrong id"
+                << (ok ? "  ok" : "  FAIL") << std::endl;
+      if (!ok)
+        ++failures;
+      if (round == 0)
+        tria.refine_global(1);
+    }
+    return failures;
+  }
+
+  BodyParameters
+  body_parameters(const std::string &name,
+                  const std::string &file,
+                  const std::string &cell_type)
+  {
+    BodyParameters p;
+    p.name                    = name;
+    p.mesh_type               = "file";
+    p.mesh_file               = file;
+    p.cell_type               = cell_type;
+    p.material.youngs_modulus = 2.1e5;
+    p.material.poisson_ratio  = 0.3;
+    return p;
+  }
+
+  /**
+   * Uniaxial tension sigma = s e_x (x) e_x through the file mesh: the left
+   * side (tag 14) held at the exact displacement, the traction (s, 0) on
+   * the right (tag 12), top and bottom traction free. In plane strain
+   *   u_x = (1 - nu^2) s x / E,   u_y = -nu (1 + nu) s y / E,
+   * linear, so every element reproduces it up to round-off (1e-10
+   * relative: these systems have condition numbers ~1e3-1e4).
+   */
+  unsigned int
+  check_uniaxial_tension(const std::string &name,
+                         const std::string &file,
+                         const std::string &cell_type)
+  {
+    const double   s = 100.;
+    BodyParameters p = body_parameters(name, file, cell_type);
+    const double   E = p.material.youngs_modulus, nu = p.material.poisson_ratio;
+    const Constants constants = {
+      {"a", (1. - nu * nu) * s / E}, {"b", -nu * (1. + nu) * s / E}, {"s", s}};
+    p.dirichlet = "14: xy: a*x; b*y";
+    p.neumann   = "12: s; 0";
+
+    ElasticBody<2> body(p, constants);
+    body.make_mesh(".");
+    body.get_triangulation().refine_global(1);
+    body.setup_and_factorize();
+    body.solve();
+
+    FunctionParser<2> exact(2);
+    exact.initialize("x,y", "a*x; b*y", constants);
+    Vector<double> difference(body.n_dofs());
+    VectorTools::interpolate(
+      body.get_mapping(), body.get_dof_handler(), exact, difference);
+    difference -= body.get_solution();
+    const double u_error =
+      difference.linfty_norm() / body.get_solution().linfty_norm();
+
+    SymmetricTensor<2, 2> sigma;
+    sigma[0][0]    = s;
+    double s_error = 0;
+    for (const auto &cell_stress :
+         body.stress_at_quadrature_points(body.get_solution()))
+      for (const auto &stress : cell_stress)
+        s_error = std::max(s_error, (stress - sigma).norm() / s);
+
+    const bool ok = u_error < 1e-10 && s_error < 1e-10;
+    std::cout << file << ", " << cell_type
+              << ": uniaxial tension (Dirichlet on 14, traction on 12), "
+              << body.get_triangulation().n_active_cells()
+              << " cells, max nodal error " << u_error << ", max stress error "
+              << s_error << (ok ? "  ok" : "  FAIL") << std::endl;
+    return ok ? 0 : 1;
+  }
+
+  /** A boundary condition on a tag the file does not have must be an
+   * InputError from make_mesh() that names the entry and the id. */
+  unsigned int
+  check_missing_tag(const std::string &file,
+                    const std::string &cell_type,
+                    const std::string &dirichlet,
+                    const std::string &neumann,
+                    const std::string &expected_message)
+  {
+    BodyParameters p = body_parameters("missing_tag", file, cell_type);
+    p.dirichlet      = dirichlet;
+    p.neumann        = neumann;
+    std::string message;
+    try
+    {
+      ElasticBody<2> body(p, Constants());
+      body.make_mesh(".");
+      message = "(no error)";
+    }
+    catch (const InputError &e)
+    {
+      message = e.what();
+    }
+    catch (const std::exception &e)
+    {
+      message = std::string("(not an InputError) ") + e.what();
+    }
+    const bool ok = message.find(expected_message) != std::string::npos &&
+                    message.rfind("(", 0) != 0;
+    std::cout << "Dirichlet '" << dirichlet << "', Neumann '" << neumann
+              << "' on " << file << ": " << message
+              << (ok ? "  ok" : "  FAIL (expected '" + expected_message + "')")
+              << std::endl;
+    return ok ? 0 : 1;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+
+  // Both files go into the working directory (the test's build
+  // directory); make_mesh() meshes the .geo into <body name>.msh there, so
+  // the body names differ from the file names.
+  const std::string msh = "gmsh_mesh_quads.msh";
+  const std::string geo = "gmsh_mesh_rectangle.geo";
+  write_msh(msh, 6, 3);
+  write_geo(geo);
+
+  unsigned int failures = 0;
+  try
+  {
+    for (const auto &[file, cell_type] :
+         {std::pair<std::string, std::string>{msh, "quadrilateral"},
+          std::pair<std::string, std::string>{geo, "triangle"}})
+    {
+      BodyParameters p = body_parameters("gmsh_mesh_ids", file, cell_type);
+      p.dirichlet      = "14: xy: 0; 0";
+      p.neumann        = "11: 0; 0 | 12: 0; 0 | 13: 0; 0";
+      ElasticBody<2> body(p, Constants());
+      body.make_mesh(".");
+      failures +=
+        check_boundary_ids(body.get_triangulation(), file + ", " + cell_type);
+    }
+
+    failures +=
+      check_uniaxial_tension("gmsh_mesh_tension_quads", msh, "quadrilateral");
+    failures +=
+      check_uniaxial_tension("gmsh_mesh_tension_triangles", geo, "triangle");
+
+    failures += check_missing_tag(msh,
+                                  "quadrilateral",
+                                  "14: xy: 0; 0",
+                                  "15: 1; 0",
+                                  "Neumann: boundary id 15 does not exist");
+    failures += check_missing_tag(geo,
+                                  "triangle",
+                                  "14: xy: 0; 0 | 16: y: 0; 0",
+                                  "12: 1; 0",
+                                  "Dirichlet: boundary id 16 does not exist");
+  }
+  catch (const std::exception &e)
+  {
+    std::cout << "FAIL: unexpected exception: " << e.what() << std::endl;
+    ++failures;
+  }
+
+  std::cout << (failures ? "\nFAILED" : "\nall ok") << std::endl;
+  return failures ? 1 : 0;
+}
