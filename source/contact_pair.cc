@@ -274,4 +274,22 @@ namespace ddcontact
     }
     return {force_1, force_2};
   }
+
+  void
+  ContactPair::add_traction_samples(const std::vector<double> &sigma_n,
+                                    const ElasticBody<2>      &body,
+                                    BoundaryTractionSamples   &samples) const
+  {
+    AssertDimension(sigma_n.size(), contact_points.size());
+    Assert(&body == &body_1 || &body == &body_2, ExcInternalError());
+    const bool on_body_1 = (&body == &body_1);
+    for (unsigned int q = 0; q < contact_points.size(); ++q)
+    {
+      const auto &p = contact_points[q];
+      samples.points.push_back(on_body_1 ? p.x : p.projection);
+      samples.weights.push_back(p.JxW);
+      samples.traction.push_back((on_body_1 ? sigma_n[q] : -sigma_n[q]) *
+                                 p.normal);
+    }
+  }
 } // namespace ddcontact

@@ -21,6 +21,7 @@
 #include <deal.II/meshworker/mesh_loop.h>
 #include <deal.II/meshworker/scratch_data.h>
 
+#include <deal.II/numerics/solution_transfer.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <ddcontact/elastic_body.h>
@@ -372,6 +373,24 @@ namespace ddcontact
   ElasticBody<dim>::setup_and_factorize()
   {
     setup_system();
+    assemble_system();
+    factorize();
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::refine_and_transfer()
+  {
+    SolutionTransfer<dim, Vector<double>> transfer(dof_handler);
+    const Vector<double>                  old_solution = solution;
+    triangulation->prepare_coarsening_and_refinement();
+    transfer.prepare_for_coarsening_and_refinement(old_solution);
+    triangulation->execute_coarsening_and_refinement();
+
+    setup_system();
+    transfer.interpolate(old_solution, solution);
+    // New hanging nodes and the Dirichlet data (5) on new boundary vertices.
+    constraints.distribute(solution);
     assemble_system();
     factorize();
   }

@@ -104,14 +104,15 @@ namespace ddcontact
   }
 
   void
-  NeumannDDSolver::solve_bodies(const std::vector<Vector<double>> &u,
-                                std::vector<Vector<double>> &u_tilde) const
+  NeumannDDSolver::solve_bodies(
+    const std::vector<std::vector<double>> &sigma_n,
+    std::vector<Vector<double>>            &u_tilde) const
   {
     std::vector<Vector<double>> loads(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
       loads[b].reinit(bodies[b]->n_dofs());
     for (unsigned int p = 0; p < pairs.size(); ++p)
-      pairs[p]->add_contact_loads(pressure(p, u),
+      pairs[p]->add_contact_loads(sigma_n[p],
                                   loads[body_index(pairs[p]->get_body_1())],
                                   loads[body_index(pairs[p]->get_body_2())]);
 
@@ -217,6 +218,17 @@ namespace ddcontact
 
     for (unsigned int b = 0; b < bodies.size(); ++b)
       bodies[b]->get_solution() = u[b];
+
+    if (parameters.relaxation == "auto")
+    {
+      // The optimal fixed gamma for a spectrum in [1, 1 + lambda_max] is
+      // 2 / (2 + lambda_max); gamma* = 2 / (1 + lambda_max).
+      const double limit      = estimate_gamma_limit();
+      const double lambda_max = 2. / limit - 1.;
+      gamma                   = 2. / (2. + lambda_max);
+      pcout << "  automatic relaxation: gamma* = " << limit
+            << ", gamma = " << gamma << std::endl;
+    }
   }
 
   void
@@ -232,6 +244,30 @@ namespace ddcontact
     previous_residual.reinit(0);
     delta_f.clear();
     delta_g.clear();
+    last_sigma_n.clear();
+    last_u_tilde.clear();
+    // The residual jumps with the new mesh: divergence is judged anew.
+    phase_start = records.size();
+  }
+
+  const Vector<double> &
+  NeumannDDSolver::last_body_solution(const ElasticBody<2> &body) const
+  {
+    Assert(last_u_tilde.size() == bodies.size(),
+           ExcMessage("step() must be called first"));
+    return last_u_tilde[body_index(body)];
+  }
+
+  BoundaryTractionSamples
+  NeumannDDSolver::last_contact_traction(const ElasticBody<2> &body) const
+  {
+    Assert(last_sigma_n.size() == pairs.size(),
+           ExcMessage("step() must be called first"));
+    BoundaryTractionSamples samples;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      if (&pairs[p]->get_body_1() == &body || &pairs[p]->get_body_2() == &body)
+        pairs[p]->add_traction_samples(last_sigma_n[p], body, samples);
+    return samples;
   }
 
   void
@@ -340,7 +376,11 @@ namespace ddcontact
         std::max(record.max_penetration, state.max_penetration);
     }
 
-    solve_bodies(u, u_tilde);
+    last_sigma_n.resize(pairs.size());
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      last_sigma_n[p] = pressure(p, u);
+    solve_bodies(last_sigma_n, u_tilde);
+    last_u_tilde = u_tilde;
     const auto un       = normal_displacements_by_body(u);
     const auto un_tilde = normal_displacements_by_body(u_tilde);
 
@@ -521,16 +561,6 @@ namespace ddcontact
   unsigned int
   NeumannDDSolver::run()
   {
-    if (parameters.relaxation == "auto")
-    {
-      // The optimal fixed gamma for a spectrum in [1, 1 + lambda_max] is
-      // 2 / (2 + lambda_max); gamma* = 2 / (1 + lambda_max).
-      const double limit      = estimate_gamma_limit();
-      const double lambda_max = 2. / limit - 1.;
-      gamma                   = 2. / (2. + lambda_max);
-      pcout << "  automatic relaxation: gamma* = " << limit
-            << ", gamma = " << gamma << std::endl;
-    }
     while (true)
     {
       bool converged = false;

@@ -603,6 +603,87 @@ namespace ddcontact
   }
 
   void
+  AdaptationParameters::declare(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Mode",
+      "none",
+      Patterns::Selection("none|combined|nested|uniform"),
+      "none: the meshes stay as built; combined: the paper's algorithm "
+      "(Fig. 2), one DD step (20)-(21) then one adaptation step per cycle, "
+      "until the DD test holds and no cell is marked; nested: DD to "
+      "convergence on each mesh, then one adaptation step; uniform: DD to "
+      "convergence, then every cell of the adapted bodies is refined "
+      "(Max cycles times).");
+    prm.declare_entry("Bodies",
+                      "",
+                      Patterns::Anything(),
+                      "The adapted bodies (comma separated); the paper "
+                      "adapts Omega_2 only.");
+    prm.declare_entry(
+      "Estimator",
+      "fem-bem",
+      Patterns::Selection("fem-bem|fem-bem-scaled|kelly"),
+      "fem-bem: eta_FB of (27) as printed, ||sigma_B - sigma_F||_e/|e| over "
+      "||sigma_B||/|Omega|; fem-bem-scaled: the same with square roots of "
+      "the areas (local RMS stress error over global RMS stress, which "
+      "decreases with h); kelly: the Kelly gradient-jump estimator (no "
+      "BEM).");
+    prm.declare_entry("Marking",
+                      "threshold",
+                      Patterns::Selection("threshold|fraction|doerfler"),
+                      "threshold: refine cells with eta > delta (the "
+                      "paper); fraction: the Fraction of cells with the "
+                      "largest eta; doerfler: the fewest cells whose "
+                      "eta^2 sum to Fraction of the total.");
+    prm.declare_entry("Delta",
+                      "0.1",
+                      Patterns::Double(0),
+                      "Threshold delta of (27) (dimensionless).");
+    prm.declare_entry("Fraction",
+                      "0.3",
+                      Patterns::Double(0, 1),
+                      "Fraction for fraction and doerfler marking.");
+    prm.declare_entry("Max cycles",
+                      "50",
+                      Patterns::Integer(0),
+                      "combined: maximum number of adaptation steps; "
+                      "nested and uniform: number of meshes after the "
+                      "first.");
+    prm.declare_entry("Max level",
+                      "10",
+                      Patterns::Integer(0, 30),
+                      "Cells at this refinement level are not refined.");
+    prm.declare_entry("Max cells",
+                      "200000",
+                      Patterns::Integer(1),
+                      "No refinement beyond this many cells per body.");
+    prm.declare_entry("Write every mesh",
+                      "true",
+                      Patterns::Bool(),
+                      "Write VTU (with eta, D_e, d_e, K_e) and the mesh of "
+                      "every adaptation step; otherwise first and last.");
+  }
+
+  void
+  AdaptationParameters::parse(ParameterHandler &prm)
+  {
+    mode             = prm.get("Mode");
+    bodies           = split(prm.get("Bodies"), ',');
+    estimator        = prm.get("Estimator");
+    marking          = prm.get("Marking");
+    delta            = prm.get_double("Delta");
+    fraction         = prm.get_double("Fraction");
+    max_cycles       = prm.get_integer("Max cycles");
+    max_level        = prm.get_integer("Max level");
+    max_cells        = prm.get_integer("Max cells");
+    write_every_mesh = prm.get_bool("Write every mesh");
+    if (enabled() && bodies.empty())
+      throw InputError("Adaptation/Bodies: Mode = " + mode +
+                       " needs at least one adapted body");
+  }
+
+  void
   SceneParameters::declare(ParameterHandler               &prm,
                            const std::vector<std::string> &bodies,
                            const std::vector<std::string> &pairs)
@@ -638,6 +719,10 @@ namespace ddcontact
 
     prm.enter_subsection("Domain decomposition");
     DDParameters::declare(prm);
+    prm.leave_subsection();
+
+    prm.enter_subsection("Adaptation");
+    AdaptationParameters::declare(prm);
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
@@ -695,6 +780,17 @@ namespace ddcontact
     prm.enter_subsection("Domain decomposition");
     dd.parse(prm);
     prm.leave_subsection();
+
+    prm.enter_subsection("Adaptation");
+    adaptation.parse(prm);
+    prm.leave_subsection();
+    for (const auto &b : adaptation.bodies)
+    {
+      const auto it = std::find(body_names.begin(), body_names.end(), b);
+      if (it == body_names.end())
+        throw InputError("Adaptation/Bodies: '" + b +
+                         "' is not one of the Bodies");
+    }
 
     contact_pairs.clear();
     for (const auto &name : split(prm.get("Contact pairs"), ','))

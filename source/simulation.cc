@@ -1,9 +1,14 @@
 #include <deal.II/base/thread_management.h>
 
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
 #include <ddcontact/monolithic_solver.h>
 #include <ddcontact/simulation.h>
 #include <ddcontact/version.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -122,6 +127,270 @@ namespace ddcontact
   }
 
   void
+  Simulation::setup_adaptation()
+  {
+    adaptations.clear();
+    for (const auto &name : parameters.adaptation.bodies)
+      for (auto &body : bodies)
+        if (body->name() == name)
+          adaptations.push_back(std::make_unique<AdaptiveRefinement>(
+            *body, parameters.adaptation));
+
+    statistics = std::make_unique<std::ofstream>(parameters.output_directory +
+                                                 "/statistics.csv");
+    auto &out = *statistics;
+    out << "cycle,dd_iterations";
+    for (const auto &body : bodies)
+      out << ",cells_" << body->name() << ",dofs_" << body->name();
+    out << ",bem_unknowns,estimated,marked,capped,eta_max,eta_sum,"
+           "relative_error_estimate,dd_residual,dd_increment,contact_force,"
+           "t_dd_s,t_estimate_s,t_refine_s,wall_time_s\n";
+  }
+
+  unsigned int
+  Simulation::solve_on_current_mesh()
+  {
+    if (contact_pairs.empty())
+    {
+      solve_bodies();
+      return 0;
+    }
+    TimerOutput::Scope t(timer, "contact solve");
+    const unsigned int before = dd_solver->history().size();
+    dd_solver->run();
+    return dd_solver->history().size() - before;
+  }
+
+  unsigned int
+  Simulation::estimate_and_mark()
+  {
+    TimerOutput::Scope t(timer, "adaptation: estimate and mark");
+    unsigned int       marked = 0;
+    for (auto &a : adaptations)
+    {
+      if (parameters.adaptation.mode == "uniform")
+      {
+        marked += a->mark_all();
+        continue;
+      }
+      const auto &body = a->get_body();
+      if (contact_pairs.empty())
+        a->estimate(body.get_solution(), BoundaryTractionSamples());
+      else
+        // The FEM solution of (20) and its load, not the relaxed iterate
+        // (21): the BEM must solve the same boundary value problem.
+        a->estimate(dd_solver->last_body_solution(body),
+                    dd_solver->last_contact_traction(body));
+      marked += a->mark();
+    }
+    return marked;
+  }
+
+  void
+  Simulation::refine_and_transfer()
+  {
+    TimerOutput::Scope t(timer, "adaptation: refine and transfer");
+    // The adapted bodies' meshes are independent: refine them at once.
+    Threads::TaskGroup<void> tasks;
+    for (auto &a : adaptations)
+      tasks += Threads::new_task([&a]() { a->refine(); });
+    tasks.join_all();
+    ++n_adaptation_steps;
+    if (!contact_pairs.empty())
+    {
+      for (auto &pair : contact_pairs)
+        pair->setup();
+      dd_solver->reinit_after_refinement();
+    }
+  }
+
+  void
+  Simulation::output_adaptation_step()
+  {
+    output_results(n_output_steps);
+    // The adapted meshes with the von Mises stress and eta per cell, for
+    // plots without ParaView (the paper's Figs. 4 and 7).
+    for (const auto &a : adaptations)
+    {
+      const auto        &body = a->get_body();
+      std::ostringstream name;
+      name << parameters.output_directory << "/cells_" << body.name() << '-'
+           << std::setw(4) << std::setfill('0') << n_output_steps << ".csv";
+      std::ofstream out(name.str());
+      out << "x0,y0,x1,y1,x2,y2,x3,y3,level,von_mises,eta\n"
+          << std::setprecision(8);
+      const Quadrature<2> centre =
+        body.is_simplex() ? Quadrature<2>(QGaussSimplex<2>(1)) :
+                            Quadrature<2>(QGauss<2>(1));
+      FEValues<2>      fe_values(body.get_mapping(),
+                            body.get_fe(),
+                            centre,
+                            update_gradients);
+      const FEValuesExtractors::Vector     displacement(0);
+      std::vector<SymmetricTensor<2, 2>>   strain(1);
+      const auto                          &eta = a->indicators();
+      for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_symmetric_gradients(
+          body.get_solution(), strain);
+        // Counter-clockwise corners (deal.II numbers those of a
+        // quadrilateral lexicographically; a triangle repeats its last).
+        const std::array<unsigned int, 4> corners =
+          (cell->n_vertices() == 3) ? std::array<unsigned int, 4>{0, 1, 2, 2} :
+                                      std::array<unsigned int, 4>{0, 1, 3, 2};
+        for (const unsigned int v : corners)
+          out << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ',';
+        const unsigned int c = cell->active_cell_index();
+        out << cell->level() << ','
+            << body.get_material().von_mises(
+                 body.get_material().stress(strain[0]))
+            << ',' << (eta.size() == body.get_triangulation().n_active_cells() ?
+                         eta(c) :
+                         0.)
+            << '\n';
+      }
+    }
+    ++n_output_steps;
+  }
+
+  void
+  Simulation::write_statistics_row(const unsigned int marked,
+                                   const bool         estimated)
+  {
+    auto &out = *statistics;
+    out << std::setprecision(10) << n_adaptation_steps << ','
+        << (dd_solver ? dd_solver->history().size() : 0);
+    for (const auto &body : bodies)
+      out << ',' << body->get_triangulation().n_active_cells() << ','
+          << body->n_dofs();
+    unsigned int bem_unknowns = 0;
+    double       eta_max = 0, eta_sum = 0, error2 = 0, norm2 = 0;
+    for (const auto &a : adaptations)
+    {
+      if (a->fem_bem())
+      {
+        bem_unknowns += a->fem_bem()->bem_unknowns();
+        error2 += std::pow(a->fem_bem()->global_error(), 2);
+        norm2 += std::pow(a->fem_bem()->stress_norm(), 2);
+      }
+      const auto &eta = a->indicators();
+      if (eta.size() > 0)
+      {
+        eta_max = std::max(eta_max, eta.linfty_norm());
+        eta_sum += eta.l1_norm();
+      }
+    }
+    unsigned int capped = 0;
+    for (const auto &a : adaptations)
+      capped += a->n_capped();
+    const IterationRecord last =
+      (dd_solver && !dd_solver->history().empty()) ?
+        dd_solver->history().back() :
+        IterationRecord();
+    const auto   sections = timer.get_summary_data(TimerOutput::total_wall_time);
+    const auto   seconds  = [&](const std::string &section)
+    {
+      const auto it = sections.find(section);
+      return it == sections.end() ? 0. : it->second;
+    };
+    out << ',' << bem_unknowns << ',' << estimated << ',' << marked << ','
+        << capped << ',' << eta_max << ',' << eta_sum << ','
+        << (norm2 > 0 ? std::sqrt(error2 / norm2) : 0.) << ','
+        << last.residual << ',' << last.increment << ',' << last.force << ','
+        << seconds("contact solve") + seconds("solve") << ','
+        << seconds("adaptation: estimate and mark") << ','
+        << seconds("adaptation: refine and transfer") << ','
+        << wall_clock.wall_time() << '\n';
+    out.flush();
+  }
+
+  unsigned int
+  Simulation::solve_nested()
+  {
+    unsigned int n_iterations = 0;
+    if (!contact_pairs.empty())
+      dd_solver->initialize();
+    for (unsigned int cycle = 0;; ++cycle)
+    {
+      n_iterations += solve_on_current_mesh();
+      const bool   last   = (cycle == parameters.adaptation.max_cycles);
+      unsigned int marked = 0;
+      if (!last || parameters.adaptation.mode != "uniform")
+        marked = estimate_and_mark();
+      if (last && marked > 0)
+      {
+        pcout << "  Adaptation/Max cycles reached: " << marked
+              << " marked cells stay unrefined" << std::endl;
+        marked = 0;
+      }
+      pcout << "  adaptation cycle " << cycle << ": " << marked
+            << " cells marked" << std::endl;
+      write_statistics_row(marked, true);
+      if (parameters.adaptation.write_every_mesh || marked == 0 || last)
+        output_adaptation_step();
+      if (marked == 0 || last)
+        break;
+      refine_and_transfer();
+    }
+    return n_iterations;
+  }
+
+  unsigned int
+  Simulation::solve_combined()
+  {
+    if (contact_pairs.empty())
+      return solve_nested(); // no DD: one solve per cycle
+
+    dd_solver->initialize();
+    bool frozen = false;
+    while (true)
+    {
+      bool converged;
+      {
+        TimerOutput::Scope t(timer, "contact solve");
+        if (dd_solver->history().size() >= parameters.dd.max_iterations)
+          throw DivergenceError(
+            "the combined algorithm did not converge in " +
+            std::to_string(parameters.dd.max_iterations) +
+            " DD iterations; raise Domain decomposition/Max iterations");
+        converged = dd_solver->step(); // (20)-(21)
+      }
+      // A frozen mesh, or one that may not be refined any more, is only
+      // checked again once the DD has converged.
+      const bool may_refine =
+        n_adaptation_steps < parameters.adaptation.max_cycles;
+      if ((frozen || !may_refine) && !converged)
+        continue;
+
+      unsigned int marked = estimate_and_mark();
+      if (!may_refine && marked > 0)
+      {
+        pcout << "  Adaptation/Max cycles reached: " << marked
+              << " marked cells stay unrefined" << std::endl;
+        marked = 0;
+      }
+      pcout << "  cycle " << n_adaptation_steps << " (DD iteration "
+            << dd_solver->history().size() << "): " << marked
+            << " cells marked" << std::endl;
+      write_statistics_row(marked, true);
+      if (parameters.adaptation.write_every_mesh ||
+          (marked == 0 && converged) || n_output_steps == 0)
+        output_adaptation_step();
+      if (marked > 0)
+      {
+        refine_and_transfer();
+        frozen = false;
+      }
+      else if (converged)
+        break;
+      else
+        frozen = true;
+    }
+    return dd_solver->history().size();
+  }
+
+  void
   Simulation::write_history() const
   {
     std::ofstream out(parameters.output_directory + "/history.csv");
@@ -162,18 +431,23 @@ namespace ddcontact
         std::make_unique<OutputWriter>(parameters.output_directory);
     std::vector<const ElasticBody<2> *> body_pointers;
     std::vector<const Vector<double> *> solutions;
-    for (const auto &body : bodies)
+    std::vector<OutputWriter::CellData> cell_data(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
     {
-      body_pointers.push_back(body.get());
-      solutions.push_back(&body->get_solution());
+      body_pointers.push_back(bodies[b].get());
+      solutions.push_back(&bodies[b]->get_solution());
+      for (const auto &a : adaptations)
+        if (&a->get_body() == bodies[b].get())
+          cell_data[b] = a->cell_data();
     }
-    output_writer->write_step(step, step, body_pointers, solutions);
+    output_writer->write_step(step, step, body_pointers, solutions, cell_data);
   }
 
   void
   Simulation::write_summary(const std::string &status)
   {
-    Json json = Json::object();
+    std::map<std::string, double> timings_extra; // phases timed elsewhere
+    Json                          json = Json::object();
     json.set("scene", parameters.scene_name);
     json.set("status", status);
 
@@ -248,11 +522,52 @@ namespace ddcontact
         json.set("dd_increment", last.increment);
       }
     }
+    if (parameters.adaptation.enabled())
+    {
+      json.set("adaptation_cycles", n_adaptation_steps);
+      unsigned int bem_unknowns = 0;
+      Json         estimator    = Json::object();
+      estimator.set("mode", parameters.adaptation.mode);
+      estimator.set("type", parameters.adaptation.estimator);
+      estimator.set("marking", parameters.adaptation.marking);
+      estimator.set("delta", parameters.adaptation.delta);
+      Json per_body = Json::array();
+      for (const auto &a : adaptations)
+      {
+        Json e = Json::object();
+        e.set("body", a->get_body().name());
+        const auto &eta = a->indicators();
+        e.set("eta_max", eta.size() ? eta.linfty_norm() : 0.);
+        e.set("eta_sum", eta.size() ? eta.l1_norm() : 0.);
+        e.set("capped_cells", a->n_capped());
+        if (const auto *fb = a->fem_bem())
+        {
+          bem_unknowns += fb->bem_unknowns();
+          e.set("bem_unknowns", fb->bem_unknowns());
+          e.set("stress_error_estimate", fb->global_error());
+          e.set("bem_stress_norm", fb->stress_norm());
+          e.set("relative_error_estimate",
+                fb->stress_norm() > 0 ?
+                  fb->global_error() / fb->stress_norm() :
+                  0.);
+          const auto &t = fb->timings();
+          timings_extra["BEM setup (assembly, LU)"] += t.bem_setup;
+          timings_extra["BEM solve"] += t.bem_solve;
+          timings_extra["BEM interior stresses"] += t.bem_interior;
+        }
+        per_body.push_back(e);
+      }
+      estimator.set("bodies", per_body);
+      json.set("bem_unknowns", bem_unknowns);
+      json.set("estimator", estimator);
+    }
     json.set("wall_time_s", wall_clock.wall_time());
 
     Json timings = Json::object();
     for (const auto &[section, seconds] :
          timer.get_summary_data(TimerOutput::total_wall_time))
+      timings.set(section, seconds);
+    for (const auto &[section, seconds] : timings_extra)
       timings.set(section, seconds);
     json.set("timings", timings);
 
@@ -270,10 +585,17 @@ namespace ddcontact
           << parameters.output_directory << std::endl;
 
     setup_bodies();
+    if (parameters.adaptation.enabled())
+      setup_adaptation();
     if (parameters.contact_pairs.empty())
     {
-      solve_bodies();
-      output_results(0);
+      if (parameters.adaptation.enabled())
+        solve_nested();
+      else
+      {
+        solve_bodies();
+        output_results(0);
+      }
       write_summary("completed");
     }
     else
@@ -281,7 +603,12 @@ namespace ddcontact
       setup_contact();
       try
       {
-        n_contact_iterations = solve_contact();
+        if (!parameters.adaptation.enabled())
+          n_contact_iterations = solve_contact();
+        else if (parameters.adaptation.mode == "combined")
+          n_contact_iterations = solve_combined();
+        else
+          n_contact_iterations = solve_nested();
       }
       catch (const DivergenceError &)
       {
@@ -295,12 +622,14 @@ namespace ddcontact
       for (unsigned int p = 0; p < contact_pairs.size(); ++p)
       {
         const auto state = dd_solver->contact_state(p);
-        pcout << std::setprecision(6) << "  contact " << contact_pairs[p]->name() << ": force "
+        pcout << std::setprecision(6) << "  contact "
+              << contact_pairs[p]->name() << ": force "
               << state.force_1.norm() << ", peak pressure "
               << state.max_pressure << ", half-width " << state.half_width
               << ", max penetration " << state.max_penetration << std::endl;
       }
-      output_results(0);
+      if (!parameters.adaptation.enabled())
+        output_results(0);
       write_summary("converged");
     }
 

@@ -206,4 +206,27 @@ namespace ddcontact
       a.push_back(v);
     return a;
   }
+  bool
+  Json::has(const std::string &key) const
+  {
+    for (const auto &[k, v] : members)
+      if (k == key)
+        return true;
+    return false;
+  }
+
+  const Json &
+  Json::get(const std::string &key) const
+  {
+    for (const auto &[k, v] : members)
+      if (k == key)
+        return v;
+    throw std::out_of_range("summary.json has no key '" + key + "'");
+  }
+
+  const Json &
+  Json::at(const unsigned int i) const
+  {
+    return items.at(i);
+  }
 } // namespace ddcontact

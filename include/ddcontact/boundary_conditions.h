@@ -2,6 +2,8 @@
 #define ddcontact_boundary_conditions_h
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
 #include <deal.II/fe/component_mask.h>
@@ -10,6 +12,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace ddcontact
 {
@@ -40,6 +43,22 @@ namespace ddcontact
 
     /** Optional body force (dim components); nullptr means none. */
     std::shared_ptr<Function<dim>> body_force;
+  };
+
+  /**
+   * A traction known at sample points of the contact zone of a body, e.g.
+   * the penalty pressure sigma_n^k n of the current DD iterate (20) at the
+   * contact points (for body 2 of a pair: at the projections P(x), with the
+   * weights of S_1). The BEM turns it into element-end tractions by an L2
+   * projection on each boundary element of the contact ids: the moments
+   * sum_q w_q t_q N_a(x_q) are the same that load the FEM problem, so the
+   * BEM and the FEM see the same resultant force and moment.
+   */
+  struct BoundaryTractionSamples
+  {
+    std::vector<Point<2>>     points;
+    std::vector<double>       weights;
+    std::vector<Tensor<1, 2>> traction; // physical traction t = sigma n
   };
 } // namespace ddcontact
 

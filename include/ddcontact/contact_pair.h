@@ -109,6 +109,19 @@ namespace ddcontact
                       Vector<double>            &load_1,
                       Vector<double>            &load_2) const;
 
+    /**
+     * Append the traction sigma_n n_a that the normal stress @p sigma_n
+     * (one value per contact point) exerts on @p body (either side of the
+     * pair) to @p samples: at x with n_1 on body 1, at P(x) with n_2 = -n_1
+     * on body 2, with the weights of S_1 -- the same points and weights
+     * that add_contact_loads() uses, so that a BEM loaded by the samples
+     * sees the load of the FEM problem (20).
+     */
+    void
+    add_traction_samples(const std::vector<double> &sigma_n,
+                         const ElasticBody<2>      &body,
+                         BoundaryTractionSamples   &samples) const;
+
     /** The penalty parameter theta of (15) for this pair. */
     double
     penalty() const

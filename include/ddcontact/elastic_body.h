@@ -85,6 +85,17 @@ namespace ddcontact
     setup_and_factorize();
 
     /**
+     * Refine (and coarsen) the cells flagged on the triangulation, carry
+     * the body's current solution over to the new mesh (SolutionTransfer;
+     * the transferred field is made conforming again by the new
+     * constraints), and rebuild the system and its factorization. The
+     * adaptive driver calls this after marking (section 5 of the paper
+     * README: "transfer the current iterate to the new mesh").
+     */
+    void
+    refine_and_transfer();
+
+    /**
      * Solve a_a(u, v) = l_a(v) + load(v) for all v: @p load is an
      * additional right-hand side (e.g. the contact traction of (20))
      * assembled with get_constraints().distribute_local_to_global() and

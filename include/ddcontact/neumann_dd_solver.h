@@ -118,6 +118,19 @@ namespace ddcontact
     double
     estimate_gamma_limit() const;
 
+    /**
+     * The FEM solution u~^{k+1} of the body problem (20) of @p body in the
+     * last step, before the relaxation (21): the FEM side of the FEM-BEM
+     * estimator, which must solve the same boundary value problem as the
+     * BEM.
+     */
+    const Vector<double> &
+    last_body_solution(const ElasticBody<2> &body) const;
+
+    /** The contact traction that loaded @p body in the last step (20). */
+    BoundaryTractionSamples
+    last_contact_traction(const ElasticBody<2> &body) const;
+
     /** Re-create internal vectors after a mesh change (the bodies keep
      * their transferred solutions); keeps multipliers only if sizes match. */
     void
@@ -128,10 +141,11 @@ namespace ddcontact
     std::vector<double>
     pressure(unsigned int p, const std::vector<Vector<double>> &u) const;
 
-    /** Solve all bodies with the contact loads of the iterate u. */
+    /** Solve all bodies with the contact loads of the normal stresses
+     * sigma_n (one vector per pair). */
     void
-    solve_bodies(const std::vector<Vector<double>> &u,
-                 std::vector<Vector<double>>       &u_tilde) const;
+    solve_bodies(const std::vector<std::vector<double>> &sigma_n,
+                 std::vector<Vector<double>>            &u_tilde) const;
 
     /** Normal displacements on S of all pairs, both sides, body by body. */
     std::vector<std::vector<double>>
@@ -153,6 +167,9 @@ namespace ddcontact
 
     std::vector<std::vector<double>> multipliers; // Uzawa lambda per pair
     std::vector<IterationRecord>     records;
+    // The last step's loads sigma_n^k (per pair) and solutions u~^{k+1}.
+    std::vector<std::vector<double>> last_sigma_n;
+    std::vector<Vector<double>>      last_u_tilde;
     unsigned int                     uzawa_updates    = 0;
     double                           last_penetration = 0;
     unsigned int phase_start = 0; // first record of this Uzawa phase

@@ -136,6 +136,41 @@ namespace ddcontact
     parse(ParameterHandler &prm);
   };
 
+  /**
+   * h-adaptivity and the combined algorithm (sections 4-5 of the paper
+   * README), in the subsection "Adaptation".
+   */
+  struct AdaptationParameters
+  {
+    // none; combined: one DD step (20)-(21) and one adaptation step per
+    // cycle (Fig. 2); nested: DD to convergence on each mesh, then adapt;
+    // uniform: DD to convergence, then refine every cell.
+    std::string              mode = "none";
+    std::vector<std::string> bodies; // the adapted bodies
+    // fem-bem: eta_FB of (27) as printed; fem-bem-scaled: the local RMS
+    // stress error relative to the global RMS stress; kelly: the baseline.
+    std::string  estimator        = "fem-bem";
+    std::string  marking          = "threshold"; // or "fraction", "doerfler"
+    double       delta            = 0.1;         // threshold of (27)
+    double       fraction         = 0.3;
+    unsigned int max_cycles       = 50;
+    unsigned int max_level        = 10;
+    unsigned int max_cells        = 200000;
+    bool         write_every_mesh = true;
+
+    bool
+    enabled() const
+    {
+      return mode != "none";
+    }
+
+    static void
+    declare(ParameterHandler &prm);
+
+    void
+    parse(ParameterHandler &prm);
+  };
+
   /** A point at which displacement and stress of one body are reported. */
   struct ReportPoint
   {
@@ -161,6 +196,7 @@ namespace ddcontact
     std::vector<BodyParameters>        bodies;
     std::vector<ContactPairParameters> contact_pairs;
     DDParameters                       dd;
+    AdaptationParameters               adaptation;
 
     /** Declare the scene entries and, for each name, a body subsection
      * and a contact pair subsection. */

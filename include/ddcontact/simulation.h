@@ -4,6 +4,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
+#include <ddcontact/adaptive_refinement.h>
 #include <ddcontact/body_output.h>
 #include <ddcontact/contact_pair.h>
 #include <ddcontact/elastic_body.h>
@@ -11,6 +12,7 @@
 #include <ddcontact/parameters.h>
 #include <ddcontact/summary.h>
 
+#include <fstream>
 #include <memory>
 #include <vector>
 
@@ -58,9 +60,64 @@ namespace ddcontact
       return contact_pairs;
     }
 
+    /** The adaptation of each adapted body (empty without adaptation). */
+    const std::vector<std::unique_ptr<AdaptiveRefinement>> &
+    get_adaptations() const
+    {
+      return adaptations;
+    }
+
   private:
     void
     setup_bodies();
+
+    /** One AdaptiveRefinement per adapted body. */
+    void
+    setup_adaptation();
+
+    /**
+     * The combined algorithm of Fig. 2: each cycle does one DD step
+     * (20)-(21) and one adaptation step (estimate, mark, refine and
+     * transfer); it stops when the DD stopping test holds and no cell is
+     * marked. Once a step marks no cell the mesh is frozen and the
+     * estimate is skipped until the DD has converged, when it is checked
+     * once more (the indicator only moves with the data then, so this
+     * saves a BEM solve per DD iteration without changing where the
+     * algorithm stops). Returns the number of DD iterations.
+     */
+    unsigned int
+    solve_combined();
+
+    /**
+     * The classical nested loop (Mode = nested) and uniform refinement
+     * (Mode = uniform): solve on each mesh to convergence (DD, or the body
+     * problems alone without contact), then adapt.
+     */
+    unsigned int
+    solve_nested();
+
+    /** The problem on the current meshes to convergence: the DD with its
+     * Uzawa updates, or the body problems when there is no contact. */
+    unsigned int
+    solve_on_current_mesh();
+
+    /** Estimate and mark on every adapted body from the FEM solutions of
+     * the last body problems (20); returns the number of marked cells. */
+    unsigned int
+    estimate_and_mark();
+
+    /** Refine the marked cells, transfer the iterates, rebuild the
+     * contact pairs and the DD's vectors. */
+    void
+    refine_and_transfer();
+
+    /** Write VTU (with the estimator fields) and the adapted meshes. */
+    void
+    output_adaptation_step();
+
+    /** One row of statistics.csv. */
+    void
+    write_statistics_row(unsigned int marked, bool estimated);
 
     /** Solve every body problem at once (one task per body). */
     void
@@ -97,6 +154,10 @@ namespace ddcontact
     unsigned int                                 n_contact_iterations = 0;
     unsigned int                                 n_newton_iterations  = 0;
     std::unique_ptr<OutputWriter>                output_writer;
+    std::vector<std::unique_ptr<AdaptiveRefinement>> adaptations;
+    unsigned int                                 n_adaptation_steps = 0;
+    unsigned int                                 n_output_steps     = 0;
+    std::unique_ptr<std::ofstream>               statistics;
     Json                                         summary_json;
   };
 } // namespace ddcontact

@@ -42,6 +42,25 @@ namespace ddcontact
     Json &
     set(const std::string &key, const Json &value);
 
+    /** Whether an object has @p key. */
+    bool
+    has(const std::string &key) const;
+
+    /** The value of @p key of an object; throws std::out_of_range. */
+    const Json &
+    get(const std::string &key) const;
+
+    /** Item @p i of an array; throws std::out_of_range. */
+    const Json &
+    at(unsigned int i) const;
+
+    /** The value of a number (0 for anything else). */
+    double
+    as_number() const
+    {
+      return number;
+    }
+
     /** Write with two-space indentation. */
     void
     write(std::ostream &out, unsigned int indent = 0) const;

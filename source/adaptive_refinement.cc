@@ -1,0 +1,189 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/grid/grid_refinement.h>
+
+#include <deal.II/numerics/error_estimator.h>
+
+#include <ddcontact/adaptive_refinement.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace ddcontact
+{
+  namespace
+  {
+    /** Circumscribed and inscribed circle diameters of a triangle. */
+    std::pair<double, double>
+    triangle_diameters(const Point<2> &a, const Point<2> &b, const Point<2> &c)
+    {
+      const double ab = a.distance(b), bc = b.distance(c), ca = c.distance(a);
+      const double area =
+        0.5 * std::abs((b[0] - a[0]) * (c[1] - a[1]) -
+                       (c[0] - a[0]) * (b[1] - a[1]));
+      if (area == 0.)
+        return {std::numeric_limits<double>::infinity(), 0.};
+      // R = ab bc ca / (4 area), r = area / s with s the half perimeter.
+      return {ab * bc * ca / (2. * area), 4. * area / (ab + bc + ca)};
+    }
+  } // namespace
+
+  ElementDiameters
+  element_diameters(const Triangulation<2> &triangulation)
+  {
+    ElementDiameters result;
+    const auto       n = triangulation.n_active_cells();
+    result.D.reinit(n);
+    result.d.reinit(n);
+    result.K.reinit(n);
+    for (const auto &cell : triangulation.active_cell_iterators())
+    {
+      double D = 0, d = std::numeric_limits<double>::max();
+      const unsigned int nv = cell->n_vertices();
+      // A triangle is its own (only) triangle; a quadrilateral gives the
+      // four triangles of three of its vertices (Definition 1).
+      for (unsigned int skip = 0; skip < (nv == 3 ? 1u : nv); ++skip)
+      {
+        std::array<Point<2>, 3> t;
+        unsigned int            k = 0;
+        for (unsigned int v = 0; v < nv; ++v)
+          if (nv == 3 || v != skip)
+            t[k++] = cell->vertex(v);
+        const auto [Dt, dt] = triangle_diameters(t[0], t[1], t[2]);
+        D                   = std::max(D, Dt);
+        d                   = std::min(d, dt);
+      }
+      const unsigned int c = cell->active_cell_index();
+      result.D(c)          = D;
+      result.d(c)          = d;
+      result.K(c)          = D / d; // Definition 2
+    }
+    return result;
+  }
+
+  AdaptiveRefinement::AdaptiveRefinement(ElasticBody<2>             &body,
+                                         const AdaptationParameters &parameters)
+    : body(body)
+    , parameters(parameters)
+  {
+    if (parameters.mode != "uniform" && body.is_simplex())
+      throw InputError("Adaptation/Bodies: body '" + body.name() +
+                       "' has triangles, which deal.II 9.4 refines only "
+                       "globally; use quadrilaterals or Mode = uniform");
+    if (parameters.mode != "uniform" && parameters.estimator == "kelly" &&
+        parameters.marking == "threshold")
+      throw InputError("Adaptation/Marking: threshold compares eta with the "
+                       "dimensionless delta of (27) and needs a fem-bem "
+                       "estimator; use fraction or doerfler with kelly");
+    if (parameters.mode != "uniform" && parameters.estimator != "kelly")
+      fem_bem_estimator = std::make_unique<FemBemEstimator>(
+        body, parameters.estimator == "fem-bem" ? "printed" : "scaled");
+  }
+
+  void
+  AdaptiveRefinement::estimate(const Vector<double>          &u_fem,
+                               const BoundaryTractionSamples &contact)
+  {
+    if (fem_bem_estimator)
+    {
+      fem_bem_estimator->estimate(u_fem, contact);
+      eta = fem_bem_estimator->indicators();
+      return;
+    }
+    Vector<float> kelly(body.get_triangulation().n_active_cells());
+    KellyErrorEstimator<2>::estimate(body.get_mapping(),
+                                     body.get_dof_handler(),
+                                     QGauss<1>(body.get_fe().degree + 1),
+                                     {},
+                                     u_fem,
+                                     kelly);
+    eta = kelly;
+  }
+
+  unsigned int
+  AdaptiveRefinement::mark()
+  {
+    auto &tria = body.get_triangulation();
+    AssertDimension(eta.size(), tria.n_active_cells());
+    for (const auto &cell : tria.active_cell_iterators())
+      cell->clear_refine_flag();
+
+    if (parameters.marking == "threshold")
+    {
+      for (const auto &cell : tria.active_cell_iterators())
+        if (eta(cell->active_cell_index()) > parameters.delta)
+          cell->set_refine_flag();
+    }
+    else if (parameters.marking == "fraction")
+      GridRefinement::refine_and_coarsen_fixed_number(tria,
+                                                      eta,
+                                                      parameters.fraction,
+                                                      0.);
+    else
+    {
+      // Doerfler (bulk) marking on eta^2: the error is the l2 sum of the
+      // cell contributions.
+      Vector<double> eta2(eta.size());
+      for (unsigned int c = 0; c < eta.size(); ++c)
+        eta2(c) = eta(c) * eta(c);
+      GridRefinement::refine_and_coarsen_fixed_fraction(tria,
+                                                        eta2,
+                                                        parameters.fraction,
+                                                        0.);
+    }
+
+    unsigned int marked = 0;
+    capped              = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->refine_flag_set())
+      {
+        if (static_cast<unsigned int>(cell->level()) >= parameters.max_level)
+        {
+          cell->clear_refine_flag();
+          ++capped;
+        }
+        else
+          ++marked;
+      }
+    // Each refined quadrilateral becomes four cells (the one-irregularity
+    // closure adds a few more, not counted here).
+    if (tria.n_active_cells() + 3 * marked > parameters.max_cells)
+    {
+      for (const auto &cell : tria.active_cell_iterators())
+        cell->clear_refine_flag();
+      capped += marked;
+      marked = 0;
+    }
+    return marked;
+  }
+
+  unsigned int
+  AdaptiveRefinement::mark_all()
+  {
+    auto &tria = body.get_triangulation();
+    for (const auto &cell : tria.active_cell_iterators())
+      cell->set_refine_flag();
+    capped = 0;
+    return tria.n_active_cells();
+  }
+
+  void
+  AdaptiveRefinement::refine()
+  {
+    body.refine_and_transfer();
+  }
+
+  OutputWriter::CellData
+  AdaptiveRefinement::cell_data() const
+  {
+    const auto             diameters = element_diameters(body.get_triangulation());
+    OutputWriter::CellData data;
+    data["D_e"] = diameters.D;
+    data["d_e"] = diameters.d;
+    data["K_e"] = diameters.K;
+    if (eta.size() == body.get_triangulation().n_active_cells())
+      data["eta"] = eta;
+    return data;
+  }
+} // namespace ddcontact

@@ -1,0 +1,226 @@
+// DESCRIPTION: BEM convergence for the Lamé thick-walled cylinder (quarter
+// annulus a = 1, b = 2, inner pressure p = 1 given as contact traction
+// samples, rollers on the symmetry lines): interior stresses at r = 1.5
+// converge at rate ~2, nodal displacements and roller tractions converge
+// too; finest errors against the table of BEM.md §6(b)
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+
+#include <ddcontact/boundary_element_solver.h>
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+using namespace ddcontact;
+
+namespace
+{
+  const double a = 1., b = 2., p = 1.;
+  const double A = p * a * a / (b * b - a * a);
+  const double B = p * a * a * b * b / (b * b - a * a);
+
+  SymmetricTensor<2, 2>
+  exact_stress(const Point<2> &x)
+  {
+    const double          r    = x.norm();
+    const Tensor<1, 2>    e_r  = x / r, e_t{{-e_r[1], e_r[0]}};
+    const double          s_rr = A - B / (r * r), s_tt = A + B / (r * r);
+    SymmetricTensor<2, 2> s;
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = i; j < 2; ++j)
+        s[i][j] = s_rr * e_r[i] * e_r[j] + s_tt * e_t[i] * e_t[j];
+    return s;
+  }
+
+  Tensor<1, 2>
+  exact_displacement(const Point<2> &x, const Material &m)
+  {
+    const double r = x.norm(), nu = m.poisson_ratio;
+    const double u_r =
+      (1. + nu) / m.youngs_modulus * ((1. - 2. * nu) * A * r + B / r);
+    return u_r * x / r;
+  }
+
+  double
+  rate(const std::vector<double> &e)
+  {
+    // Mean rate over the last two refinements (h halves each time).
+    const unsigned int n = e.size();
+    return 0.5 * std::log2(e[n - 3] / e[n - 1]);
+  }
+} // namespace
+
+int
+main()
+{
+  Material material;
+  material.youngs_modulus = 2.1e5;
+  material.poisson_ratio  = 0.3;
+
+  // Inner arc (id 0): contact id, loaded by samples of -p n; outer arc
+  // (id 1): traction free; x = 0 (id 2) and y = 0 (id 3): rollers.
+  BoundaryConditions<2> bc;
+  const auto            zero = std::make_shared<Functions::ZeroFunction<2>>(2);
+  bc.dirichlet[2] = {ComponentMask(std::vector<bool>{true, false}), zero};
+  bc.dirichlet[3] = {ComponentMask(std::vector<bool>{false, true}), zero};
+  bc.contact.insert(0);
+
+  std::vector<Point<2>> interior_points;
+  for (const double theta : {15., 45., 75.})
+    interior_points.emplace_back(1.5 * std::cos(theta * numbers::PI / 180),
+                                 1.5 * std::sin(theta * numbers::PI / 180));
+
+  ConvergenceTable    table;
+  std::vector<double> u_errors, t_errors, t_away_errors, s_errors;
+  for (unsigned int level = 2; level <= 6; ++level)
+  {
+    Triangulation<2> tria;
+    GridGenerator::quarter_hyper_shell(tria, Point<2>(), a, b, 2);
+    tria.refine_global(level);
+    for (const auto &face : tria.active_face_iterators())
+      if (face->at_boundary())
+      {
+        const auto c = face->center();
+        face->set_boundary_id(std::abs(c[0]) < 1e-10   ? 2
+                              : std::abs(c[1]) < 1e-10 ? 3
+                              : c.norm() < 1.5         ? 0
+                                                       : 1);
+      }
+    FESystem<2>   fe(FE_Q<2>(1), 2);
+    DoFHandler<2> dof_handler(tria);
+    dof_handler.distribute_dofs(fe);
+    MappingQ<2> mapping(1);
+
+    // Pressure on the polygonal inner boundary: t = -p n_face at the face
+    // Gauss points, as the DD iteration would deliver a contact load.
+    BoundaryTractionSamples samples;
+    const QGauss<1>         rule(2);
+    unsigned int            n_arc = 0;
+    for (const auto &face : tria.active_face_iterators())
+      if (face->at_boundary() && face->boundary_id() == 0)
+      {
+        ++n_arc;
+        const Tensor<1, 2> tangent = face->vertex(1) - face->vertex(0);
+        Tensor<1, 2>       normal{{tangent[1], -tangent[0]}};
+        normal /= normal.norm();
+        if (normal * face->center() > 0) // outward = towards the centre
+          normal = -normal;
+        for (unsigned int q = 0; q < rule.size(); ++q)
+        {
+          samples.points.push_back(face->vertex(0) +
+                                   rule.point(q)[0] * tangent);
+          samples.weights.push_back(rule.weight(q) * face->measure());
+          samples.traction.push_back(-p * normal);
+        }
+      }
+
+    BoundaryElementSolver bem(material, bc);
+    bem.setup(dof_handler, mapping);
+    bem.solve(samples);
+
+    double u_error = 0, u_max = 0;
+    for (unsigned int i = 0; i < bem.n_nodes(); ++i)
+    {
+      const auto u = exact_displacement(bem.node_position(i), material);
+      u_error      = std::max(u_error, (bem.node_displacement(i) - u).norm());
+      u_max        = std::max(u_max, u.norm());
+    }
+    // Roller tractions (the unknown normal component on ids 2 and 3).
+    double t_error = 0, t_max = 0, t_error_away = 0;
+    for (unsigned int e = 0; e < bem.n_elements(); ++e)
+    {
+      const auto id = bem.element_boundary_id(e);
+      if (id != 2 && id != 3)
+        continue;
+      const unsigned int c = (id == 2) ? 0 : 1;
+      const Tensor<1, 2> normal =
+        (id == 2) ? Tensor<1, 2>{{-1., 0.}} : Tensor<1, 2>{{0., -1.}};
+      for (unsigned int end = 0; end < 2; ++end)
+      {
+        const auto   x     = bem.node_position(bem.element_nodes(e)[end]);
+        const double t     = (exact_stress(x) * normal)[c];
+        const double error = std::abs(bem.element_traction(e, end)[c] - t);
+        t_error            = std::max(t_error, error);
+        t_max              = std::max(t_max, std::abs(t));
+        // Away (> 0.2) from the corners where the arcs meet the edges.
+        if (x.norm() > a + 0.2 && x.norm() < b - 0.2)
+          t_error_away = std::max(t_error_away, error);
+      }
+    }
+    double     s_error = 0, s_max = 0;
+    const auto stress = bem.stress_at_points(interior_points);
+    for (unsigned int q = 0; q < interior_points.size(); ++q)
+    {
+      const auto s = exact_stress(interior_points[q]);
+      s_error      = std::max(s_error, (stress[q] - s).norm());
+      s_max        = std::max(s_max, s.norm());
+    }
+    u_errors.push_back(u_error / u_max);
+    t_errors.push_back(t_error / t_max);
+    t_away_errors.push_back(t_error_away / t_max);
+    s_errors.push_back(s_error / s_max);
+
+    table.add_value("N/arc", n_arc);
+    table.add_value("elements", bem.n_elements());
+    table.add_value("u (max rel)", u_errors.back());
+    table.add_value("roller t (max rel)", t_errors.back());
+    table.add_value("roller t, away from corners", t_away_errors.back());
+    table.add_value("sigma r=1.5 (rel)", s_errors.back());
+  }
+  for (const std::string &c : {"u (max rel)",
+                               "roller t (max rel)",
+                               "roller t, away from corners",
+                               "sigma r=1.5 (rel)"})
+  {
+    table.set_scientific(c, true);
+    table.set_precision(c, 2);
+    table.evaluate_convergence_rates(c, ConvergenceTable::reduction_rate_log2);
+  }
+  table.write_text(std::cout, TableHandler::org_mode_table);
+
+  int        failures = 0;
+  const auto expect   = [&](const std::string &what, const bool ok)
+  {
+    std::cout << std::left << std::setw(70) << what << (ok ? "ok" : "FAIL")
+              << std::endl;
+    if (!ok)
+      ++failures;
+  };
+  // Rates: interior stresses O(h^2) (BEM.md §6); tractions in the max
+  // norm are limited by the corners where the polygonal arcs meet the
+  // rollers: there the polygon's corner angle is 90 deg + h/2 and the
+  // pressure acts on the polygon normal, an O(h) perturbation of the
+  // corner state (note: 1.15-1.6; we measure ~0.9 with twice as many
+  // elements on the straight edges). Away from those corners the note
+  // measured 1.9-2.5 for t.
+  std::ostringstream r;
+  r << std::fixed << std::setprecision(2) << "rates (last two levels): sigma "
+    << rate(s_errors) << ", u " << rate(u_errors) << ", t " << rate(t_errors)
+    << ", t away from corners " << rate(t_away_errors);
+  std::cout << r.str() << std::endl;
+  expect("interior stress rate > 1.7", rate(s_errors) > 1.7);
+  expect("nodal displacement rate > 1.3", rate(u_errors) > 1.3);
+  expect("roller traction rate (max norm) > 0.8", rate(t_errors) > 0.8);
+  expect("roller traction rate away from corners > 1.7",
+         rate(t_away_errors) > 1.7);
+  // Finest level (N/arc = 128) against BEM.md §6(b), same order of
+  // magnitude: sigma 3.7e-5, u 7.9e-5, t 1.7e-3.
+  expect("finest sigma error < 10 x 3.7e-5", s_errors.back() < 3.7e-4);
+  expect("finest u error < 10 x 7.9e-5", u_errors.back() < 7.9e-4);
+  expect("finest roller traction error < 10 x 1.7e-3",
+         t_errors.back() < 1.7e-2);
+
+  std::cout << (failures ? "FAILED" : "all checks passed") << std::endl;
+  return failures ? 1 : 0;
+}
