@@ -237,8 +237,8 @@ namespace ddcontact
         // Counter-clockwise corners (deal.II numbers those of a
         // quadrilateral lexicographically; a triangle repeats its last).
         const std::array<unsigned int, 4> corners =
-          (cell->n_vertices() == 3) ? std::array<unsigned int, 4>{0, 1, 2, 2} :
-                                      std::array<unsigned int, 4>{0, 1, 3, 2};
+          (cell->n_vertices() == 3) ? std::array<unsigned int, 4>{{0, 1, 2, 2}} :
+                                      std::array<unsigned int, 4>{{0, 1, 3, 2}};
         for (const unsigned int v : corners)
           out << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ',';
         const unsigned int c = cell->active_cell_index();

@@ -26,6 +26,7 @@ namespace
   run(const std::string &source_dir, std::vector<std::string> overrides)
   {
     std::vector<std::string> all = {"Output directory=contact_dd_output",
+                                    "Adaptation/Mode=none",
                                     "Output/Write vtu=false",
                                     "Body omega1/Mesh/Initial refinement=1",
                                     "Body omega2/Mesh/Initial refinement=1",

@@ -84,7 +84,8 @@ namespace ddcontact
     unsigned int
     n_elements() const;
 
-    /** Size of the dense system (the BEM unknowns of Fig. 10). */
+    /** Size of the dense system (the BEM unknowns of Fig. 10), without the
+     * rigid-mode multipliers of a floating body. */
     unsigned int
     n_unknowns() const;
 
