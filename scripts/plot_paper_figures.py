@@ -53,13 +53,14 @@ def draw_mesh(ax, path, values=None, cmap="viridis"):
     return coll, len(data)
 
 
-# Fig. 4: von Mises stress in Omega_2 (final mesh of the paper run).
+# Fig. 4: von Mises stress in Omega_2 (final mesh of the finest delta).
 paper = "paper_delta_0.1"
-last = mesh_files(paper)[-1]
+finest = sorted([p for p in glob.glob(os.path.join(runs, "delta_*")) if os.path.isdir(p)], key=lambda p: float(p.split("_")[-1]))[0]
+last = mesh_files(os.path.basename(finest))[-1]
 fig, ax = plt.subplots(figsize=(9, 2.8))
 coll, n = draw_mesh(ax, last, "von_mises", "jet")
 fig.colorbar(coll, ax=ax, label="von Mises stress [MPa]")
-ax.set_title(f"Fig. 4: von Mises stress in $\\Omega_2$ (delta = 0.1, {n} cells)")
+ax.set_title(f"Fig. 4: von Mises stress in $\\Omega_2$ ({os.path.basename(finest).replace('_', ' = ')}, {n} cells)")
 fig.tight_layout()
 fig.savefig(os.path.join(out, "fig4_von_mises.png"), dpi=150)
 

@@ -100,13 +100,6 @@ namespace ddcontact
     }
     dd_solver = std::make_unique<NeumannDDSolver>(
       parameters.dd, raw_pointers(bodies), raw_pointers(contact_pairs), pcout);
-  }
-
-  unsigned int
-  Simulation::solve_contact()
-  {
-    TimerOutput::Scope t(timer, "contact solve");
-    dd_solver->initialize();
     if (parameters.dd.write_every_iteration)
       dd_solver->set_iteration_callback(
         [this](const unsigned int k)
@@ -115,6 +108,13 @@ namespace ddcontact
           suffix << '_' << std::setw(4) << std::setfill('0') << k;
           write_contact_profiles(suffix.str());
         });
+  }
+
+  unsigned int
+  Simulation::solve_contact()
+  {
+    TimerOutput::Scope t(timer, "contact solve");
+    dd_solver->initialize();
     if (parameters.dd.solver == "dd")
       return dd_solver->run();
 
