@@ -109,6 +109,19 @@ namespace ddcontact
     const Timings &
     timings() const;
 
+    /**
+     * Evaluate the interior stresses of many points by a hierarchy of
+     * boxes: elements well separated from a box act on it through a
+     * Chebyshev interpolant of their (smooth) field, accurate to about
+     * 1e-8 of it; only the nearby elements are integrated at every point
+     * (default true; false integrates every element at every point).
+     */
+    void
+    set_far_field_interpolation(const bool enabled)
+    {
+      use_far_field_interpolation = enabled;
+    }
+
     /** @name Further access, for tests and diagnostics. */
     /** @{ */
 
@@ -241,6 +254,43 @@ namespace ddcontact
     SymmetricTensor<2, 2>
     scaled_stress(const Point<2> &xi) const;
 
+    /** Add the contribution of element @p e to the Somigliana stress at
+     * @p xi (scaled units) to @p sigma. */
+    void
+    add_element_stress(const Point<2>        &xi,
+                       unsigned int           e,
+                       SymmetricTensor<2, 2> &sigma) const;
+
+    /** The contribution of the elements @p subset to the Somigliana
+     * stress at @p xi (scaled units). */
+    SymmetricTensor<2, 2>
+    scaled_stress(const Point<2>                  &xi,
+                  const std::vector<unsigned int> &subset) const;
+
+    /** A square box of the target tree of stresses_by_tree(). */
+    struct TargetBox
+    {
+      Point<2> lower;
+      double   side;
+    };
+
+    /**
+     * One box of the hierarchical evaluation of the Somigliana stresses at
+     * many points: @p points (indices into @p x) lie in @p box; @p
+     * candidates are the elements not yet accounted for by an ancestor;
+     * @p parent and @p parent_values the Chebyshev interpolant of what the
+     * ancestors accounted for (none at the root).
+     */
+    void
+    stresses_in_box(const std::vector<Point<2>>        &x,
+                    std::vector<std::size_t>          &&points,
+                    const TargetBox                    &box,
+                    std::vector<unsigned int>         &&candidates,
+                    const TargetBox                    *parent,
+                    const std::vector<SymmetricTensor<2, 2>> *parent_values,
+                    std::vector<SymmetricTensor<2, 2>> &stress,
+                    unsigned int                        depth) const;
+
     Tensor<1, 2>
     scaled_displacement(const Point<2> &xi) const;
 
@@ -269,6 +319,7 @@ namespace ddcontact
     Vector<double>     body_rhs;
     FullMatrix<double> contact_matrix;
     bool               is_solved = false;
+    bool               use_far_field_interpolation = true;
 
     // Interior evaluations may run concurrently (const); the mutex sits
     // behind a pointer so that the solver stays movable.
