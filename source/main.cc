@@ -37,6 +37,20 @@ main(int argc, char **argv)
   {
     Utilities::MPI::MPI_InitFinalize mpi(
       argc, argv, numbers::invalid_unsigned_int);
+    // The bodies live on serial triangulations: several processes would
+    // each run the whole scene and write the same files. Distributed runs
+    // (p4est, Trilinos, bodies on process groups) are not implemented yet.
+    if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    {
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::cerr << "ddcontact: error: runs on "
+                  << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
+                  << " MPI processes are not supported yet; run without "
+                     "mpirun (the bodies are solved concurrently by threads; "
+                     "set Threads in the parameter file)"
+                  << std::endl;
+      return 1;
+    }
 
     std::string              parameter_file, output_directory;
     std::vector<std::string> overrides;
