@@ -858,10 +858,11 @@ namespace ddcontact
     timing_data.solve = seconds_since(start);
   }
 
+  template <typename Integrand>
   void
-  BoundaryElementSolver::add_element_stress(const Point<2>        &xi,
-                                            const unsigned int     e,
-                                            SymmetricTensor<2, 2> &sigma) const
+  BoundaryElementSolver::integrate_boundary_solution(const Point<2> &xi,
+                                                     const unsigned int e,
+                                                     Integrand &&f) const
   {
     const Element      &element = elements[e];
     const Tensor<1, 2> &u_a     = nodes[element.nodes[0]].displacement;
@@ -869,13 +870,27 @@ namespace ddcontact
     const Tensor<1, 2> &t_a = element.traction[0], &t_b = element.traction[1];
     auto integrand = [&](const Point<2> &x, const double s, const double w)
     {
-      sigma += w * kelvin.stress_integrand(xi,
-                                           x,
-                                           element.normal,
-                                           (1. - s) * t_a + s * t_b,
-                                           (1. - s) * u_a + s * u_b);
+      f(x, element.normal, (1. - s) * t_a + s * t_b, (1. - s) * u_a + s * u_b, w);
     };
     integrate_element(xi, element.x_a, element.x_b, element.length, integrand);
+  }
+
+  void
+  BoundaryElementSolver::add_element_stress(const Point<2>        &xi,
+                                            const unsigned int     e,
+                                            SymmetricTensor<2, 2> &sigma) const
+  {
+    integrate_boundary_solution(xi,
+                                e,
+                                [&](const Point<2>     &x,
+                                    const Tensor<1, 2> &n,
+                                    const Tensor<1, 2> &t,
+                                    const Tensor<1, 2> &u,
+                                    const double        w)
+                                {
+                                  sigma +=
+                                    w * kelvin.stress_integrand(xi, x, n, t, u);
+                                });
   }
 
   SymmetricTensor<2, 2>
@@ -1012,24 +1027,21 @@ namespace ddcontact
   Tensor<1, 2>
   BoundaryElementSolver::scaled_displacement(const Point<2> &xi) const
   {
-    Tensor<1, 2> u;
-    for (const Element &element : elements)
-    {
-      const Tensor<1, 2> &u_a = nodes[element.nodes[0]].displacement;
-      const Tensor<1, 2> &u_b = nodes[element.nodes[1]].displacement;
-      const Tensor<1, 2> &t_a = element.traction[0], &t_b = element.traction[1];
-      auto integrand = [&](const Point<2> &x, const double s, const double w)
-      {
-        u += w * kelvin.displacement_integrand(xi,
-                                               x,
-                                               element.normal,
-                                               (1. - s) * t_a + s * t_b,
-                                               (1. - s) * u_a + s * u_b);
-      };
-      integrate_element(
-        xi, element.x_a, element.x_b, element.length, integrand);
-    }
-    return u;
+    // Somigliana displacement identity (BEM.md §1.3).
+    Tensor<1, 2> result;
+    for (unsigned int e = 0; e < elements.size(); ++e)
+      integrate_boundary_solution(xi,
+                                  e,
+                                  [&](const Point<2>     &x,
+                                      const Tensor<1, 2> &n,
+                                      const Tensor<1, 2> &t,
+                                      const Tensor<1, 2> &u,
+                                      const double        w)
+                                  {
+                                    result += w * kelvin.displacement_integrand(
+                                                    xi, x, n, t, u);
+                                  });
+    return result;
   }
 
   std::vector<SymmetricTensor<2, 2>>

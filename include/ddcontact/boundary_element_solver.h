@@ -254,6 +254,17 @@ namespace ddcontact
     SymmetricTensor<2, 2>
     scaled_stress(const Point<2> &xi) const;
 
+    /**
+     * Integrate over element @p e with the distance-dependent rule for the
+     * point @p xi, calling f(x, n, t(x), u(x), w) at each quadrature point
+     * with the boundary solution interpolated there.
+     */
+    template <typename Integrand>
+    void
+    integrate_boundary_solution(const Point<2> &xi,
+                                unsigned int    e,
+                                Integrand     &&f) const;
+
     /** Add the contribution of element @p e to the Somigliana stress at
      * @p xi (scaled units) to @p sigma. */
     void
