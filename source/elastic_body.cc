@@ -57,6 +57,8 @@ namespace ddcontact
       fe              = std::make_unique<FESystem<dim>>(FE_Q<dim>(p), dim);
       mapping         = std::make_unique<MappingQ<dim>>(1);
       cell_quadrature = std::make_unique<QGauss<dim>>(p + 1);
+      if (parameters.volumetric_integration == "reduced")
+        volumetric_quadrature = std::make_unique<QGauss<dim>>(p);
     }
     face_quadrature = std::make_unique<QGauss<dim - 1>>(p + 1);
   }
@@ -252,6 +254,9 @@ namespace ddcontact
     const FEValuesExtractors::Vector displacement(0);
     const double                     lambda = material.lambda();
     const double                     mu     = material.mu();
+    // With reduced volumetric integration the lambda term is added below,
+    // on its own quadrature.
+    const double lambda_full = reduced_volumetric_integration() ? 0. : lambda;
 
     // a_a(u, v) of (11) and the body-force part of l_a(v).
     const auto cell_worker = [&](const Iterator                &cell,
@@ -285,7 +290,8 @@ namespace ddcontact
         {
           for (unsigned int j = 0; j < dofs_per_cell; ++j)
             cell_matrix(i, j) +=
-              (lambda * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) * JxW;
+              (lambda_full * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) *
+              JxW;
           if (boundary_conditions.body_force)
           {
             const unsigned int c = fe->system_to_component_index(i).first;
@@ -345,6 +351,66 @@ namespace ddcontact
                           MeshWorker::assemble_own_cells |
                             MeshWorker::assemble_boundary_faces,
                           boundary_worker);
+
+    if (!reduced_volumetric_integration())
+      return;
+
+    // Selective reduced integration: lambda div u div v on one Gauss point
+    // per cell. For nu -> 1/2 (lambda/mu -> infinity) the full rule forces
+    // div u = 0 at all four points of a Q1 cell, which only a few fields
+    // satisfy (locking); one point leaves one constraint per cell, as many
+    // as a pressure constant per cell. The deviatoric-shear part keeps the
+    // full rule, so no hourglass mode appears. The copier adds the
+    // Dirichlet inhomogeneities of this part to the load vector.
+    const auto volumetric_worker = [&](const Iterator                &cell,
+                                       MeshWorker::ScratchData<dim>  &scratch,
+                                       MeshWorker::CopyData<1, 1, 1> &copy)
+    {
+      const auto        &fe_values     = scratch.reinit(cell);
+      const unsigned int dofs_per_cell = fe_values.dofs_per_cell;
+      copy.reinit(dofs_per_cell);
+      cell->get_dof_indices(copy.local_dof_indices[0]);
+      std::vector<double> div(dofs_per_cell);
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          div[i] = fe_values[displacement].divergence(i, q);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = 0; j < dofs_per_cell; ++j)
+            copy.matrices[0](i, j) +=
+              lambda * div[i] * div[j] * fe_values.JxW(q);
+      }
+    };
+    MeshWorker::ScratchData<dim> volumetric_scratch(*mapping,
+                                                    *fe,
+                                                    *volumetric_quadrature,
+                                                    update_gradients |
+                                                      update_JxW_values);
+    MeshWorker::mesh_loop(dof_handler.active_cell_iterators(),
+                          volumetric_worker,
+                          copier,
+                          volumetric_scratch,
+                          copy,
+                          MeshWorker::assemble_own_cells);
+  }
+
+  template <int dim>
+  std::vector<double>
+  ElasticBody<dim>::reduced_dilatation(const Vector<double> &u) const
+  {
+    Assert(reduced_volumetric_integration(), ExcInternalError());
+    std::vector<double> dilatation(triangulation->n_active_cells());
+    FEValues<dim>       fe_values(
+      *mapping, *fe, *volumetric_quadrature, update_gradients);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<double>              div(volumetric_quadrature->size());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+    {
+      fe_values.reinit(cell);
+      fe_values[displacement].get_function_divergences(u, div);
+      dilatation[cell->active_cell_index()] = div[0];
+    }
+    return dilatation;
   }
 
   template <int dim>
@@ -451,6 +517,9 @@ namespace ddcontact
     FEValues<dim> fe_values(*mapping, *fe, *cell_quadrature, update_gradients);
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(cell_quadrature->size());
+    const std::vector<double> dilatation = reduced_volumetric_integration()
+                                             ? reduced_dilatation(u)
+                                             : std::vector<double>();
     for (const auto &cell : dof_handler.active_cell_iterators())
     {
       fe_values.reinit(cell);
@@ -458,7 +527,13 @@ namespace ddcontact
       auto &s = stress[cell->active_cell_index()];
       s.resize(strain.size());
       for (unsigned int q = 0; q < strain.size(); ++q)
+      {
         s[q] = material.stress(strain[q]);
+        if (reduced_volumetric_integration())
+          s[q] += material.lambda() *
+                  (dilatation[cell->active_cell_index()] - trace(strain[q])) *
+                  unit_symmetric_tensor<dim>();
+      }
     }
     return stress;
   }
@@ -477,8 +552,25 @@ namespace ddcontact
       fe_values.reinit(cell);
       fe_values[displacement].get_function_symmetric_gradients(u, strain);
       for (const unsigned int q : fe_values.quadrature_point_indices())
-        energy +=
-          0.5 * (material.stress(strain[q]) * strain[q]) * fe_values.JxW(q);
+        energy += 0.5 *
+                  (reduced_volumetric_integration()
+                     ? 2. * material.mu() * (strain[q] * strain[q])
+                     : material.stress(strain[q]) * strain[q]) *
+                  fe_values.JxW(q);
+    }
+    if (reduced_volumetric_integration())
+    {
+      // The volumetric part on its own (one-point) rule, as assembled.
+      const auto    dilatation = reduced_dilatation(u);
+      FEValues<dim> fe_reduced(
+        *mapping, *fe, *volumetric_quadrature, update_JxW_values);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_reduced.reinit(cell);
+        const double d = dilatation[cell->active_cell_index()];
+        for (const unsigned int q : fe_reduced.quadrature_point_indices())
+          energy += 0.5 * material.lambda() * d * d * fe_reduced.JxW(q);
+      }
     }
     return energy;
   }
@@ -520,7 +612,18 @@ namespace ddcontact
     result.x            = x;
     result.displacement = value[0];
     result.stress       = material.stress(strain[0]);
-    result.von_mises    = material.von_mises(result.stress);
+    if (reduced_volumetric_integration())
+    {
+      // The dilatation of the cell's reduced point, as in the assembly.
+      FEValues<dim> fe_reduced(
+        *mapping, *fe, *volumetric_quadrature, update_gradients);
+      std::vector<double> div(1);
+      fe_reduced.reinit(found.first);
+      fe_reduced[displacement].get_function_divergences(u, div);
+      result.stress += material.lambda() * (div[0] - trace(strain[0])) *
+                       unit_symmetric_tensor<dim>();
+    }
+    result.von_mises = material.von_mises(result.stress);
     return result;
   }
 

@@ -164,7 +164,10 @@ namespace ddcontact
       throw DivergenceError(
         "the monolithic Newton solver did not settle its active set in " +
         std::to_string(max_iterations) +
-        " iterations; raise Domain decomposition/Max Newton iterations");
+        " iterations (the active set cycles when theta is small against "
+        "the compliance of the contact zone, e.g. a slender body); raise the "
+        "contact pairs' Penalty (c) or Domain decomposition/Max Newton "
+        "iterations");
 
     for (unsigned int b = 0; b < bodies.size(); ++b)
       for (types::global_dof_index i = 0; i < bodies[b]->n_dofs(); ++i)

@@ -104,9 +104,8 @@ namespace ddcontact
   }
 
   void
-  NeumannDDSolver::solve_bodies(
-    const std::vector<std::vector<double>> &sigma_n,
-    std::vector<Vector<double>>            &u_tilde) const
+  NeumannDDSolver::solve_bodies(const std::vector<std::vector<double>> &sigma_n,
+                                std::vector<Vector<double>> &u_tilde) const
   {
     std::vector<Vector<double>> loads(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
@@ -317,36 +316,65 @@ namespace ddcontact
           delta_g.pop_front();
         }
       }
-      previous_residual    = f;
-      previous_g           = g;
-      const unsigned int m = delta_f.size();
-      if (m == 0)
-        x_new.add(gamma, f);
-      else
+      previous_residual = f;
+      previous_g        = g;
+      // The least-squares problem min ||f - sum alpha_i df_i|| by a
+      // modified Gram-Schmidt QR of the columns df_i, newest first. With a
+      // stiff penalty the differences df_i become nearly parallel (the
+      // residual is dominated by the few most compliant modes); a column
+      // whose remainder after orthogonalisation is below 1e-6 of its norm
+      // is dropped from the history (filtering): its coefficient would be
+      // up to 1e6 times the step and extrapolate across the kinks of the
+      // contact map (the Hertz scene diverged with 1e-10). 1e-6 on R is
+      // what the 1e-12 trace regularisation of the normal equations used
+      // before amounted to (their condition number is squared). The normal equations used before square this
+      // condition number (the paper scene at c = 1e-4 ran 3625 iterations
+      // into a non-finite iterate with them).
+      std::vector<Vector<double>> q;
+      FullMatrix<double>          r;
+      for (bool complete = false; !complete;)
       {
-        FullMatrix<double> normal(m, m);
-        Vector<double>     rhs(m), alpha(m);
-        for (unsigned int i = 0; i < m; ++i)
+        complete = true;
+        q.clear();
+        r.reinit(delta_f.size(), delta_f.size());
+        for (unsigned int j = 0; j < delta_f.size(); ++j)
         {
-          rhs(i) = delta_f[i] * f;
-          for (unsigned int j = 0; j < m; ++j)
-            normal(i, j) = delta_f[i] * delta_f[j];
+          const unsigned int column = delta_f.size() - 1 - j; // newest first
+          Vector<double>     v      = delta_f[column];
+          for (unsigned int i = 0; i < j; ++i)
+          {
+            r(i, j) = q[i] * v;
+            v.add(-r(i, j), q[i]);
+          }
+          r(j, j) = v.l2_norm();
+          if (!(r(j, j) > 1e-6 * delta_f[column].l2_norm()))
+          {
+            delta_f.erase(delta_f.begin() + column);
+            delta_g.erase(delta_g.begin() + column);
+            complete = false;
+            break;
+          }
+          v /= r(j, j);
+          q.push_back(v);
         }
-        double trace = 0;
-        for (unsigned int i = 0; i < m; ++i)
-          trace += normal(i, i);
-        for (unsigned int i = 0; i < m; ++i)
-          normal(i, i) += 1e-12 * trace + 1e-300;
-        normal.gauss_jordan();
-        normal.vmult(alpha, rhs);
-        // x_new = (x + gamma f) - sum alpha_i (dx_i + gamma df_i),
-        // with dx = dg - df.
-        x_new.add(gamma, f);
-        for (unsigned int i = 0; i < m; ++i)
-        {
-          x_new.add(-alpha(i), delta_g[i]);
-          x_new.add(alpha(i) * (1. - gamma), delta_f[i]);
-        }
+      }
+      const unsigned int m_kept = q.size();
+      Vector<double>     alpha(m_kept);
+      for (unsigned int i = m_kept; i-- > 0;)
+      {
+        double sum = q[i] * f;
+        for (unsigned int j = i + 1; j < m_kept; ++j)
+          sum -= r(i, j) * alpha(j);
+        alpha(i) = sum / r(i, i);
+      }
+      // x_new = (x + gamma f) - sum alpha_i (dx_i + gamma df_i), with
+      // dx = dg - df (alpha(j) belongs to the j-th newest column).
+      x_new.add(gamma, f);
+      for (unsigned int j = 0; j < m_kept; ++j)
+      {
+        const unsigned int column = m_kept - 1 - j;
+        x_new.add(-alpha(j), delta_g[column]);
+        x_new.add(alpha(j) * (1. - gamma), delta_f[column]);
       }
     }
 
@@ -380,7 +408,7 @@ namespace ddcontact
     for (unsigned int p = 0; p < pairs.size(); ++p)
       last_sigma_n[p] = pressure(p, u);
     solve_bodies(last_sigma_n, u_tilde);
-    last_u_tilde = u_tilde;
+    last_u_tilde        = u_tilde;
     const auto un       = normal_displacements_by_body(u);
     const auto un_tilde = normal_displacements_by_body(u_tilde);
 
@@ -440,26 +468,7 @@ namespace ddcontact
     const bool         stuck =
       record.iteration - best_k > std::max<unsigned int>(50, k_phase / 2);
     if (!finite || grew || stuck)
-    {
-      std::ostringstream s;
-      s << "the domain decomposition diverged at iteration " << record.iteration
-        << " (residual "
-        << (finite ? std::to_string(record.residual) : "not finite")
-        << ", best " << best << " at iteration " << best_k << ")";
-      if (parameters.relaxation == "fixed")
-      {
-        const double limit = estimate_gamma_limit();
-        s << ": Domain decomposition/Gamma = " << parameters.gamma
-          << " is above the estimated stable limit gamma* = " << limit
-          << "; use Gamma below " << limit << " (about "
-          << 2 * limit / (2 + limit) << " is fastest) or Relaxation = anderson";
-      }
-      else
-        s << " with Relaxation = " << parameters.relaxation
-          << "; try Relaxation = fixed with a smaller Gamma, or a larger "
-             "penalty c";
-      throw DivergenceError(s.str());
-    }
+      throw DivergenceError(divergence_message(record, best, best_k));
 
     const bool residual_test = record.residual <= parameters.eps_residual;
     const bool paper_test    = record.increment <= parameters.eps_u;
@@ -468,6 +477,66 @@ namespace ddcontact
     if (parameters.stopping == "paper")
       return paper_test;
     return residual_test || paper_test;
+  }
+
+  std::string
+  NeumannDDSolver::divergence_message(const IterationRecord &record,
+                                      const double           best,
+                                      const unsigned int     best_k) const
+  {
+    // gamma* = 2/(1 + lambda_max) of the linearised iteration (21) tells
+    // what went wrong: the relaxation (gamma above gamma*), the penalty
+    // (lambda_max ~ compliance of S / theta so large that no relaxation
+    // contracts in a useful number of steps), or the tolerance (the
+    // residual cannot fall below round-off times lambda_max).
+    const double       limit      = estimate_gamma_limit();
+    const double       lambda_max = 2. / limit - 1.;
+    std::ostringstream s;
+    s << std::setprecision(3) << "the domain decomposition diverged at "
+      << "iteration " << record.iteration << " (residual ";
+    if (std::isfinite(record.residual))
+      s << record.residual;
+    else
+      s << "not finite";
+    s << ", best " << best << " at iteration " << best_k
+      << "; estimated gamma* = " << limit << ")";
+
+    std::string penalty_entries;
+    for (const auto *pair : pairs)
+      penalty_entries += (penalty_entries.empty() ? "" : ", ") +
+                         ("Contact pair " + pair->name() + "/Penalty");
+
+    const double round_off =
+      1e3 * std::numeric_limits<double>::epsilon() * (1. + lambda_max);
+    if (best <= round_off)
+      s << ": the residual stagnates at the round-off level of this problem "
+        << "(about " << round_off << " = 1000 eps (1 + lambda_max)); raise "
+        << "Domain decomposition/eps_residual above " << 10 * best;
+    else if (limit < 1e-3)
+      s << ": the penalty is too stiff for the domain decomposition (the "
+        << "contact-zone compliance is " << lambda_max << " times theta, so "
+        << "every relaxation contracts by at most about 1 - gamma* per "
+        << "iteration); raise " << penalty_entries
+        << " (c of theta = c H/E_1) by a factor of about " << lambda_max / 40.
+        << " (for gamma* ~ 0.05; with contrasting "
+        << "materials, making the softer body Body 1 does the same) and set "
+        << "Domain decomposition/Augmented Lagrangian = true for an exact "
+        << "contact, or use Domain decomposition/Solver = monolithic";
+    else if (parameters.relaxation == "fixed" && parameters.gamma > limit)
+      s << ": Domain decomposition/Gamma = " << parameters.gamma
+        << " is above the estimated stable limit gamma*; use Gamma below "
+        << limit << " (about " << 2 * limit / (2 + limit)
+        << " is fastest) or Relaxation = anderson";
+    else if (parameters.relaxation == "fixed")
+      s << ": Domain decomposition/Gamma = " << parameters.gamma
+        << " is below the estimated gamma* of the linearised iteration, but "
+        << "the active set oscillates; use a smaller Gamma or Relaxation = "
+        << "anderson";
+    else
+      s << " with Relaxation = " << parameters.relaxation
+        << "; use Relaxation = fixed with Gamma = " << 2 * limit / (2 + limit)
+        << " (below gamma*), or a larger " << penalty_entries;
+    return s.str();
   }
 
   double
@@ -485,7 +554,7 @@ namespace ddcontact
       bodies[b]->solve(Vector<double>(), base[b]);
       v[b] = bodies[b]->get_solution();
       v[b] -= base[b];
-      if (v[b].l2_norm() == 0)
+      if (!(v[b].l2_norm() > 0) || !std::isfinite(v[b].l2_norm()))
         for (unsigned int i = 0; i < v[b].size(); ++i)
           v[b](i) = 1. + 0.1 * std::sin(1. + i);
       bodies[b]->get_constraints().set_zero(v[b]);
@@ -567,12 +636,16 @@ namespace ddcontact
       while (!converged)
       {
         if (records.size() >= parameters.max_iterations)
-          throw DivergenceError(
-            "the domain decomposition did not converge in " +
-            std::to_string(parameters.max_iterations) +
-            " iterations (residual " + std::to_string(records.back().residual) +
-            "); raise Domain decomposition/Max iterations, or use "
-            "Relaxation = anderson");
+        {
+          std::ostringstream s;
+          s << "the domain decomposition did not converge in "
+            << parameters.max_iterations << " iterations (residual "
+            << std::setprecision(3) << records.back().residual
+            << ", eps_residual " << parameters.eps_residual
+            << "); raise Domain decomposition/Max iterations, or use "
+               "Relaxation = anderson";
+          throw DivergenceError(s.str());
+        }
         converged = step();
       }
       if (!parameters.augmented_lagrangian ||

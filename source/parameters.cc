@@ -298,6 +298,15 @@ namespace ddcontact
                         "1",
                         Patterns::Integer(1, 2),
                         "Polynomial degree of the displacement (1 or 2).");
+      prm.declare_entry(
+        "Volumetric integration",
+        "full",
+        Patterns::Selection("full|reduced"),
+        "full: the bilinear form a_a (11) with (p+1)^2 Gauss points; "
+        "reduced: its volumetric part lambda div u div v with one Gauss "
+        "point per cell (selective reduced integration, B-bar on "
+        "parallelograms), which removes the volumetric locking of Q1 as "
+        "nu -> 1/2. Quadrilaterals of degree 1 only (Q2 locks far less).");
     }
     prm.leave_subsection();
 
@@ -394,8 +403,16 @@ namespace ddcontact
 
     prm.enter_subsection("Element");
     {
-      cell_type = prm.get("Cell type");
-      degree    = prm.get_integer("Degree");
+      cell_type              = prm.get("Cell type");
+      degree                 = prm.get_integer("Degree");
+      volumetric_integration = prm.get("Volumetric integration");
+      if (volumetric_integration == "reduced" &&
+          !(cell_type == "quadrilateral" && degree == 1))
+        throw InputError(section +
+                         "Element/Volumetric integration: reduced needs Cell "
+                         "type = quadrilateral and Degree = 1 (for triangles "
+                         "or degree 2 use full; near nu = 1/2 use Degree = "
+                         "2)");
     }
     prm.leave_subsection();
 
@@ -410,6 +427,22 @@ namespace ddcontact
       if (!(material.poisson_ratio > -1. && material.poisson_ratio < 0.5))
         throw InputError(section + "Material/Poisson's ratio: nu = " +
                          prm.get("Poisson's ratio") + " must lie in (-1, 0.5)");
+      // Volumetric locking: with lambda/mu = 2 nu/(1 - 2 nu) >= 100 the
+      // fully integrated linear elements (Q1, P1) can only represent nearly
+      // divergence-free fields by moving almost nothing, and the answer is
+      // silently far too stiff (the contact force of the paper's scene is
+      // 30 % off at nu = 0.499, 200 % at 0.4999, on 4 cells across).
+      const double nu = material.poisson_ratio;
+      if (degree == 1 && volumetric_integration == "full" &&
+          2. * nu / (1. - 2. * nu) >= 100.)
+        throw InputError(
+          section +
+          "Material/Poisson's ratio: nu = " + prm.get("Poisson's ratio") +
+          " makes linear elements lock (lambda/mu >= 100); set Element/"
+          "Degree = 2" +
+          (cell_type == "quadrilateral"
+             ? " or Element/Volumetric integration = reduced"
+             : ""));
     }
     prm.leave_subsection();
 

@@ -215,6 +215,21 @@ namespace ddcontact
       return dof_handler.n_dofs();
     }
 
+    /**
+     * Whether the volumetric term lambda div u div v of a_a (11) is
+     * integrated with one Gauss point per cell ("Element/Volumetric
+     * integration = reduced", Q1 only): selective reduced integration, which
+     * keeps Q1 free of volumetric locking as nu -> 1/2. The stress is then
+     * sigma = lambda (div u)(x_c) I + 2 mu eps(u), with the dilatation taken
+     * at the cell's reduced point x_c, consistently in stresses, energy and
+     * point values.
+     */
+    bool
+    reduced_volumetric_integration() const
+    {
+      return volumetric_quadrature != nullptr;
+    }
+
     /** Plane-strain stress sigma(u) (2) at every quadrature point of every
      * active cell, indexed [active_cell_index][q]. */
     std::vector<std::vector<SymmetricTensor<2, dim>>>
@@ -240,6 +255,11 @@ namespace ddcontact
     void
     check_boundary_ids() const;
 
+    /** div u at the reduced point of every active cell (reduced volumetric
+     * integration), indexed by active_cell_index. */
+    std::vector<double>
+    reduced_dilatation(const Vector<double> &u) const;
+
     const BodyParameters          parameters;
     const Material                material;
     const BoundaryConditions<dim> boundary_conditions;
@@ -249,7 +269,9 @@ namespace ddcontact
     std::unique_ptr<Mapping<dim>>        mapping;
     std::unique_ptr<Quadrature<dim>>     cell_quadrature;
     std::unique_ptr<Quadrature<dim - 1>> face_quadrature;
-    DoFHandler<dim>                      dof_handler;
+    // One Gauss point for the volumetric term, or null (full integration).
+    std::unique_ptr<Quadrature<dim>> volumetric_quadrature;
+    DoFHandler<dim>                  dof_handler;
 
     AffineConstraints<double> constraints;
     SparsityPattern           sparsity_pattern;

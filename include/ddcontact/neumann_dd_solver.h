@@ -157,6 +157,14 @@ namespace ddcontact
     bool
     uzawa_update();
 
+    /** The message of a DivergenceError: what diverged, and which
+     * parameter to change (Gamma, the penalty c, or eps_residual), judged
+     * from the estimated gamma*. */
+    std::string
+    divergence_message(const IterationRecord &record,
+                       double                 best,
+                       unsigned int           best_k) const;
+
     unsigned int
     body_index(const ElasticBody<2> &body) const;
 

@@ -53,6 +53,9 @@ namespace ddcontact
     // Element
     std::string  cell_type = "quadrilateral"; // or "triangle"
     unsigned int degree    = 1;
+    // "full", or "reduced": the volumetric term lambda div u div v of (11)
+    // on one Gauss point per Q1 cell (selective reduced integration).
+    std::string volumetric_integration = "full";
 
     Material material;
 
