@@ -18,8 +18,11 @@ namespace ddcontact
     class StressPostprocessor : public DataPostprocessor<dim>
     {
     public:
-      explicit StressPostprocessor(const Material &material)
-        : material(material)
+      StressPostprocessor(const ElasticBody<dim>    &body,
+                          const std::vector<double> &dilatation)
+        : body(body)
+        , material(body.get_material())
+        , dilatation(dilatation)
       {
       }
 
@@ -35,7 +38,11 @@ namespace ddcontact
             for (unsigned int j = i; j < dim; ++j)
               strain[i][j] = 0.5 * (inputs.solution_gradients[q][i][j] +
                                     inputs.solution_gradients[q][j][i]);
-          const auto s   = material.stress(strain);
+          // The body's own stress (2), with its reduced dilatation if any.
+          const auto s = body.stress_from_strain(
+            strain,
+            dilatation,
+            inputs.template get_cell<dim>()->active_cell_index());
           auto      &out = computed_quantities[q];
           out(0)         = s[0][0];
           out(1)         = s[1][1];
@@ -58,7 +65,9 @@ namespace ddcontact
       }
 
     private:
-      const Material material;
+      const ElasticBody<dim>    &body;
+      const Material             material;
+      const std::vector<double> &dilatation;
     };
 
     std::string
@@ -108,7 +117,8 @@ namespace ddcontact
                                displacement_names,
                                DataOut<2>::type_dof_data,
                                interpretation);
-      StressPostprocessor<2> stress(body.get_material());
+      const auto dilatation = body.reduced_dilatation(*solutions[b]);
+      StressPostprocessor<2> stress(body, dilatation);
       data_out.add_data_vector(*solutions[b], stress);
 
       Vector<double> body_id(n_cells), level(n_cells);

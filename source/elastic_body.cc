@@ -398,7 +398,8 @@ namespace ddcontact
   std::vector<double>
   ElasticBody<dim>::reduced_dilatation(const Vector<double> &u) const
   {
-    Assert(reduced_volumetric_integration(), ExcInternalError());
+    if (!reduced_volumetric_integration())
+      return {};
     std::vector<double> dilatation(triangulation->n_active_cells());
     FEValues<dim>       fe_values(
       *mapping, *fe, *volumetric_quadrature, update_gradients);
@@ -527,13 +528,9 @@ namespace ddcontact
       auto &s = stress[cell->active_cell_index()];
       s.resize(strain.size());
       for (unsigned int q = 0; q < strain.size(); ++q)
-      {
-        s[q] = material.stress(strain[q]);
-        if (reduced_volumetric_integration())
-          s[q] += material.lambda() *
-                  (dilatation[cell->active_cell_index()] - trace(strain[q])) *
-                  unit_symmetric_tensor<dim>();
-      }
+        s[q] = stress_from_strain(strain[q],
+                                  dilatation,
+                                  cell->active_cell_index());
     }
     return stress;
   }

@@ -229,6 +229,7 @@ namespace ddcontact
       const FEValuesExtractors::Vector     displacement(0);
       std::vector<SymmetricTensor<2, 2>>   strain(1);
       const auto                          &eta = a->indicators();
+      const auto dilatation = body.reduced_dilatation(body.get_solution());
       for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       {
         fe_values.reinit(cell);
@@ -244,7 +245,7 @@ namespace ddcontact
         const unsigned int c = cell->active_cell_index();
         out << cell->level() << ','
             << body.get_material().von_mises(
-                 body.get_material().stress(strain[0]))
+                 body.stress_from_strain(strain[0], dilatation, c))
             << ',' << (eta.size() == body.get_triangulation().n_active_cells() ?
                          eta(c) :
                          0.)

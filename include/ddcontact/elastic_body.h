@@ -230,6 +230,27 @@ namespace ddcontact
       return volumetric_quadrature != nullptr;
     }
 
+    /** div u at the reduced point of every active cell with reduced
+     * volumetric integration, indexed by active_cell_index; empty with
+     * full integration. */
+    std::vector<double>
+    reduced_dilatation(const Vector<double> &u) const;
+
+    /** The stress (2) from the strain at a point of the active cell @p c,
+     * with the cell's reduced dilatation from reduced_dilatation() (none
+     * if that is empty). */
+    SymmetricTensor<2, dim>
+    stress_from_strain(const SymmetricTensor<2, dim> &strain,
+                       const std::vector<double>     &dilatation,
+                       const unsigned int             c) const
+    {
+      auto s = material.stress(strain);
+      if (!dilatation.empty())
+        s += material.lambda() * (dilatation[c] - trace(strain)) *
+             unit_symmetric_tensor<dim>();
+      return s;
+    }
+
     /** Plane-strain stress sigma(u) (2) at every quadrature point of every
      * active cell, indexed [active_cell_index][q]. */
     std::vector<std::vector<SymmetricTensor<2, dim>>>
@@ -254,11 +275,6 @@ namespace ddcontact
 
     void
     check_boundary_ids() const;
-
-    /** div u at the reduced point of every active cell (reduced volumetric
-     * integration), indexed by active_cell_index. */
-    std::vector<double>
-    reduced_dilatation(const Vector<double> &u) const;
 
     const BodyParameters          parameters;
     const Material                material;
