@@ -19,8 +19,19 @@ namespace ddcontact
   }
 
   unsigned int
-  MonolithicContactSolver::run()
+  MonolithicContactSolver::run(
+    const std::vector<std::vector<double>> &multipliers)
   {
+    // lambda + g/theta = (f_n + theta lambda - u_1n - u_2n)/theta: the
+    // multipliers shift the gap of every contact point.
+    const auto gap = [&](const unsigned int p, const unsigned int q)
+    {
+      const auto &pt = pairs[p]->points()[q];
+      return multipliers.empty() ?
+               pt.gap :
+               pt.gap + pairs[p]->penalty() * multipliers[p][q];
+    };
+
     // One global numbering: the bodies' dofs one after another.
     std::vector<types::global_dof_index> offset(bodies.size() + 1, 0);
     for (unsigned int b = 0; b < bodies.size(); ++b)
@@ -106,7 +117,7 @@ namespace ddcontact
             cu += pts[q].a[i] * u(dofs[i]);
           for (unsigned int i = 0; i < pts[q].b.size(); ++i)
             cu += pts[q].b[i] * u(dofs[pts[q].a.size() + i]);
-          const bool now = pts[q].gap - cu < 0;
+          const bool now = gap(p, q) - cu < 0;
           changed        = changed || (now != active[p][q]);
           active[p][q]   = now;
           n_active += now;
@@ -118,7 +129,7 @@ namespace ddcontact
         break;
 
       // Matrix blockdiag(K_a) + (1/theta) sum_active w c c^T and right-hand
-      // side L + (1/theta) sum_active w f_n c.
+      // side L + (1/theta) sum_active w f_n c (f_n shifted by theta lambda).
       SparseMatrix<double> matrix(sparsity);
       for (unsigned int b = 0; b < bodies.size(); ++b)
       {
@@ -143,7 +154,7 @@ namespace ddcontact
             const double       w = pts[q].JxW / theta;
             for (unsigned int i = 0; i < c.size(); ++i)
             {
-              local_rhs(i) = w * pts[q].gap * c[i];
+              local_rhs(i) = w * gap(p, q) * c[i];
               for (unsigned int j = 0; j < c.size(); ++j)
                 local_matrix(i, j) = w * c[i] * c[j];
             }

@@ -145,13 +145,15 @@ namespace ddcontact
   NeumannDDSolver::initialize()
   {
     records.clear();
-    uzawa_updates    = 0;
-    phase_start      = 0;
-    last_penetration = std::numeric_limits<double>::max();
-    gamma            = parameters.gamma;
+    uzawa_updates      = 0;
+    mesh_uzawa_updates = 0;
+    phase_start        = 0;
+    last_penetration   = std::numeric_limits<double>::max();
+    gamma              = parameters.gamma;
     multipliers.assign(pairs.size(), {});
     for (unsigned int p = 0; p < pairs.size(); ++p)
       multipliers[p].assign(pairs[p]->points().size(), 0.);
+    record_multiplier_points();
     previous_residual.reinit(0);
     delta_f.clear();
     delta_g.clear();
@@ -231,15 +233,45 @@ namespace ddcontact
   }
 
   void
+  NeumannDDSolver::record_multiplier_points()
+  {
+    multiplier_points.assign(pairs.size(), {});
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      for (const auto &pt : pairs[p]->points())
+        multiplier_points[p].push_back(pt.x);
+  }
+
+  void
   NeumannDDSolver::reinit_after_refinement()
   {
+    // The contact points live on the common refinement of S_1 and S_2, so
+    // they move when either mesh is refined. lambda approximates the
+    // contact pressure, a function on S: each new point takes the value of
+    // the nearest old one (piecewise constant transfer; the next Uzawa
+    // phases correct it on the new mesh).
+    multipliers.resize(pairs.size());
     for (unsigned int p = 0; p < pairs.size(); ++p)
-      if (multipliers.size() <= p ||
-          multipliers[p].size() != pairs[p]->points().size())
-      {
-        multipliers.resize(pairs.size());
-        multipliers[p].assign(pairs[p]->points().size(), 0.);
-      }
+    {
+      const auto         &old_x = multiplier_points[p];
+      std::vector<double> lambda(pairs[p]->points().size(), 0.);
+      if (!old_x.empty() && multipliers[p].size() == old_x.size())
+        for (unsigned int q = 0; q < lambda.size(); ++q)
+        {
+          const Point<2> &x       = pairs[p]->points()[q].x;
+          unsigned int    nearest = 0;
+          for (unsigned int i = 1; i < old_x.size(); ++i)
+            if (x.distance_square(old_x[i]) <
+                x.distance_square(old_x[nearest]))
+              nearest = i;
+          lambda[q] = multipliers[p][nearest];
+        }
+      multipliers[p] = std::move(lambda);
+    }
+    record_multiplier_points();
+    // The penetration of the new mesh is judged anew.
+    mesh_uzawa_updates = 0;
+    last_penetration   = std::numeric_limits<double>::max();
+
     previous_residual.reinit(0);
     delta_f.clear();
     delta_g.clear();
@@ -247,6 +279,17 @@ namespace ddcontact
     last_u_tilde.clear();
     // The residual jumps with the new mesh: divergence is judged anew.
     phase_start = records.size();
+  }
+
+  void
+  NeumannDDSolver::adopt_current_iterate()
+  {
+    last_u_tilde.resize(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      last_u_tilde[b] = bodies[b]->get_solution();
+    last_sigma_n.resize(pairs.size());
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      last_sigma_n[p] = pressure(p, last_u_tilde);
   }
 
   const Vector<double> &
@@ -598,39 +641,58 @@ namespace ddcontact
   }
 
   bool
-  NeumannDDSolver::uzawa_update()
+  NeumannDDSolver::start_uzawa_phase()
   {
-    // lambda <- min(0, lambda + g/theta): the converged penalty pressure
-    // becomes the next multiplier.
+    if (!parameters.augmented_lagrangian ||
+        mesh_uzawa_updates >= parameters.al_max_updates)
+      return false;
+
+    // The converged pressure min(0, lambda + g/theta) of every pair, and
+    // how far the bodies still penetrate.
+    std::vector<std::vector<double>> sigma_n(pairs.size());
     double max_penetration = 0, max_displacement = 0;
     for (unsigned int p = 0; p < pairs.size(); ++p)
     {
-      const auto state = contact_state(p);
-      multipliers[p]   = state.sigma_n;
-      max_penetration  = std::max(max_penetration, state.max_penetration);
+      auto state      = contact_state(p);
+      sigma_n[p]      = std::move(state.sigma_n);
+      max_penetration = std::max(max_penetration, state.max_penetration);
       for (unsigned int q = 0; q < state.u_1n.size(); ++q)
         max_displacement = std::max(
           max_displacement, std::abs(state.u_1n[q]) + std::abs(state.u_2n[q]));
     }
-    pcout << "  Uzawa update " << uzawa_updates + 1 << ": max penetration "
-          << max_penetration << " (" << max_penetration / max_displacement
+    pcout << "  Uzawa check " << mesh_uzawa_updates + 1
+          << ": max penetration " << max_penetration << " ("
+          << max_penetration / std::max(max_displacement, 1e-300)
           << " of the approach)" << std::endl;
-    // Stop when the penetration is small enough, or when it no longer
-    // shrinks: with non-matching meshes the pointwise condition at every
-    // contact point cannot hold exactly for the discrete displacements.
-    const bool stagnated = max_penetration > 0.9 * last_penetration;
-    last_penetration     = max_penetration;
-    if (stagnated)
+    if (max_penetration <= parameters.al_tolerance * max_displacement)
+      return false;
+    // With non-matching meshes the pointwise condition at every contact
+    // point cannot hold exactly for the discrete displacements: stop when
+    // the penetration no longer shrinks.
+    if (max_penetration > 0.9 * last_penetration)
+    {
       pcout << "  Uzawa: penetration no longer decreases; stopping"
             << std::endl;
-    return !stagnated &&
-           max_penetration > parameters.al_tolerance * max_displacement;
+      return false;
+    }
+    last_penetration = max_penetration;
+
+    // lambda <- min(0, lambda + g/theta), and a new phase of the DD.
+    multipliers = std::move(sigma_n);
+    ++uzawa_updates;
+    ++mesh_uzawa_updates;
+    phase_start = records.size();
+    previous_residual.reinit(0);
+    delta_f.clear();
+    delta_g.clear();
+    gamma = (parameters.relaxation == "auto") ? gamma : parameters.gamma;
+    return true;
   }
 
   unsigned int
   NeumannDDSolver::run()
   {
-    while (true)
+    do
     {
       bool converged = false;
       while (!converged)
@@ -648,16 +710,8 @@ namespace ddcontact
         }
         converged = step();
       }
-      if (!parameters.augmented_lagrangian ||
-          uzawa_updates >= parameters.al_max_updates || !uzawa_update())
-        break;
-      ++uzawa_updates;
-      phase_start = records.size();
-      previous_residual.reinit(0);
-      delta_f.clear();
-      delta_g.clear();
-      gamma = (parameters.relaxation == "auto") ? gamma : parameters.gamma;
     }
+    while (start_uzawa_phase());
     return records.size();
   }
 

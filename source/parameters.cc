@@ -817,6 +817,12 @@ namespace ddcontact
     prm.enter_subsection("Adaptation");
     adaptation.parse(prm);
     prm.leave_subsection();
+    // The combined algorithm (Fig. 2) interleaves single DD steps with the
+    // refinement; the monolithic solver has no such steps.
+    if (adaptation.mode == "combined" && dd.solver == "monolithic")
+      throw InputError("Adaptation/Mode: combined needs Domain "
+                       "decomposition/Solver = dd; use Mode = nested with the "
+                       "monolithic solver");
     for (const auto &b : adaptation.bodies)
     {
       const auto it = std::find(body_names.begin(), body_names.end(), b);

@@ -114,15 +114,23 @@ namespace ddcontact
   Simulation::solve_contact()
   {
     TimerOutput::Scope t(timer, "contact solve");
-    dd_solver->initialize();
     if (parameters.dd.solver == "dd")
-      return dd_solver->run();
+    {
+      const unsigned int before = dd_solver->history().size();
+      dd_solver->run();
+      return dd_solver->history().size() - before;
+    }
 
+    // Semismooth Newton on the penalised problem, inside the same Uzawa
+    // loop as the DD when the augmented Lagrangian is on.
     MonolithicContactSolver newton(raw_pointers(bodies),
                                    raw_pointers(contact_pairs),
                                    parameters.dd.n_newton,
                                    pcout);
-    n_newton_iterations = newton.run();
+    do
+      n_newton_iterations += newton.run(dd_solver->get_multipliers());
+    while (dd_solver->start_uzawa_phase());
+    dd_solver->adopt_current_iterate();
     return 0;
   }
 
@@ -155,10 +163,7 @@ namespace ddcontact
       solve_bodies();
       return 0;
     }
-    TimerOutput::Scope t(timer, "contact solve");
-    const unsigned int before = dd_solver->history().size();
-    dd_solver->run();
-    return dd_solver->history().size() - before;
+    return solve_contact();
   }
 
   unsigned int
@@ -383,9 +388,11 @@ namespace ddcontact
         refine_and_transfer();
         frozen = false;
       }
-      else if (converged)
+      else if (converged && !dd_solver->start_uzawa_phase())
         break;
       else
+        // Not converged, or a new Uzawa phase with lambda <- sigma_n: the
+        // mesh is checked again when the DD has converged.
         frozen = true;
     }
     return dd_solver->history().size();
@@ -605,7 +612,10 @@ namespace ddcontact
       try
       {
         if (!parameters.adaptation.enabled())
+        {
+          dd_solver->initialize();
           n_contact_iterations = solve_contact();
+        }
         else if (parameters.adaptation.mode == "combined")
           n_contact_iterations = solve_combined();
         else

@@ -169,7 +169,7 @@ main()
     table.add_value("t on x=0, away from corners", t_away_errors.back());
     table.add_value("sigma, 4 points (rel)", s_errors.back());
   }
-  for (const std::string &c : {"u (max rel)",
+  for (const std::string c : {"u (max rel)",
                                "t on x=0 (max rel)",
                                "t on x=0, away from corners",
                                "sigma, 4 points (rel)"})

@@ -191,7 +191,7 @@ main()
     table.add_value("u (max rel)", u_errors.back());
     table.add_value("sigma/s0", s_errors.back());
   }
-  for (const std::string &c : {"u (max rel)", "sigma/s0"})
+  for (const std::string c : {"u (max rel)", "sigma/s0"})
   {
     table.set_scientific(c, true);
     table.set_precision(c, 2);

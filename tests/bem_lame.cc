@@ -178,7 +178,7 @@ main()
     table.add_value("roller t, away from corners", t_away_errors.back());
     table.add_value("sigma r=1.5 (rel)", s_errors.back());
   }
-  for (const std::string &c : {"u (max rel)",
+  for (const std::string c : {"u (max rel)",
                                "roller t (max rel)",
                                "roller t, away from corners",
                                "sigma r=1.5 (rel)"})

@@ -3,41 +3,28 @@
 // theta, augmented Lagrangian, divergence reported
 #include <ddcontact/simulation.h>
 
+#include "test_tools.h"
+
 #include <cmath>
 #include <iostream>
 #include <sstream>
 
 using namespace ddcontact;
+using namespace ddcontact::testing;
 
 namespace
 {
-  int failures = 0;
-
-  void
-  check(const bool ok, const std::string &what)
-  {
-    std::cout << (ok ? "  ok    " : "  FAIL  ") << what << std::endl;
-    if (!ok)
-      ++failures;
-  }
-
   /** Run the paper's scene on coarse meshes with extra overrides. */
   std::unique_ptr<Simulation>
   run(const std::string &source_dir, std::vector<std::string> overrides)
   {
     std::vector<std::string> all = {"Output directory=contact_dd_output",
                                     "Adaptation/Mode=none",
-                                    "Output/Write vtu=false",
                                     "Body omega1/Mesh/Initial refinement=1",
                                     "Body omega2/Mesh/Initial refinement=1",
                                     "Domain decomposition/Relaxation=anderson",
                                     "Domain decomposition/eps_residual=1e-10"};
-    all.insert(all.end(), overrides.begin(), overrides.end());
-    const ParameterReader reader(source_dir + "/prm/paper_two_bodies.prm", all);
-    static std::ostringstream quiet;
-    auto simulation = std::make_unique<Simulation>(reader.scene(), quiet);
-    simulation->run();
-    return simulation;
+    return run_scene(source_dir + "/prm/paper_two_bodies.prm", all, overrides);
   }
 } // namespace
 
@@ -259,6 +246,5 @@ main(int argc, char **argv)
           "gamma above gamma* reported as divergence naming Gamma");
   }
 
-  std::cout << (failures ? "FAILED" : "PASSED") << std::endl;
-  return failures ? 1 : 0;
+  return report();
 }

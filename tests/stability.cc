@@ -4,35 +4,22 @@
 #include <ddcontact/neumann_dd_solver.h>
 #include <ddcontact/simulation.h>
 
+#include "test_tools.h"
+
 #include <cmath>
 #include <iostream>
 #include <sstream>
 
 using namespace ddcontact;
+using namespace ddcontact::testing;
 
 namespace
 {
-  int failures = 0;
-
-  void
-  check(const bool ok, const std::string &what)
-  {
-    std::cout << (ok ? "  ok    " : "  FAIL  ") << what << std::endl;
-    if (!ok)
-      ++failures;
-  }
-
   std::unique_ptr<Simulation>
   run(const std::string &scene_file, const std::vector<std::string> &overrides)
   {
-    std::vector<std::string> all = {"Output directory=stability_output",
-                                    "Output/Write vtu=false"};
-    all.insert(all.end(), overrides.begin(), overrides.end());
-    const ParameterReader     reader(scene_file, all);
-    static std::ostringstream quiet;
-    auto simulation = std::make_unique<Simulation>(reader.scene(), quiet);
-    simulation->run();
-    return simulation;
+    std::vector<std::string> all = {"Output directory=stability_output"};
+    return run_scene(scene_file, all, overrides);
   }
 
   /** Contact force per unit length of S of a run of uniaxial.prm. */
@@ -367,6 +354,5 @@ main(int argc, char **argv)
           "reduced Q1: linear field exact (patch test)");
   }
 
-  std::cout << (failures ? "FAILED" : "PASSED") << std::endl;
-  return failures ? 1 : 0;
+  return report();
 }

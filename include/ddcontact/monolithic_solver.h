@@ -33,9 +33,12 @@ namespace ddcontact
                             ConditionalOStream                  &pcout);
 
     /** Solve from the bodies' current solutions (the initial active set);
-     * writes the result into them and returns the Newton iterations. */
+     * writes the result into them and returns the Newton iterations. With
+     * the augmented Lagrangian's multipliers lambda (one vector per pair,
+     * empty for none) the pressure is min(0, lambda + g/theta), i.e. the
+     * penalty problem with the gap shifted to f_n + theta lambda. */
     unsigned int
-    run();
+    run(const std::vector<std::vector<double>> &multipliers = {});
 
   private:
     std::vector<ElasticBody<2> *> bodies;

@@ -104,10 +104,32 @@ namespace ddcontact
       return records;
     }
 
+    /** Uzawa updates over the whole run (all meshes). */
     unsigned int
     n_uzawa_updates() const
     {
       return uzawa_updates;
+    }
+
+    /**
+     * The augmented Lagrangian's outer step, after the iteration on the
+     * current multipliers has converged: if the penetration is still above
+     * the tolerance and still shrinking, set lambda <- sigma_n (the
+     * converged pressure) and start a new phase of the DD (returns true);
+     * otherwise leave lambda as it is, so that the iterate and the
+     * reported pressure stay consistent (returns false). Always false
+     * without "Augmented Lagrangian". Also drives the monolithic solver's
+     * Uzawa loop.
+     */
+    bool
+    start_uzawa_phase();
+
+    /** The Uzawa multipliers lambda of every pair, at its contact points
+     * (zero without the augmented Lagrangian). */
+    const std::vector<std::vector<double>> &
+    get_multipliers() const
+    {
+      return multipliers;
     }
 
     /**
@@ -131,8 +153,18 @@ namespace ddcontact
     BoundaryTractionSamples
     last_contact_traction(const ElasticBody<2> &body) const;
 
+    /** Take the bodies' current solutions as the last body solutions,
+     * loaded by their own contact pressure: after a solver that converged
+     * without DD steps (the monolithic one), the converged u solves (20)
+     * with that load, so the estimator sees the same problem. */
+    void
+    adopt_current_iterate();
+
     /** Re-create internal vectors after a mesh change (the bodies keep
-     * their transferred solutions); keeps multipliers only if sizes match. */
+     * their transferred solutions and the pairs have been set up again).
+     * The multipliers move to the new contact points (each takes the value
+     * of the nearest old point), and the Uzawa loop starts afresh on the
+     * new mesh. */
     void
     reinit_after_refinement();
 
@@ -154,8 +186,10 @@ namespace ddcontact
     void
     relax(const std::vector<Vector<double>> &u_tilde);
 
-    bool
-    uzawa_update();
+    /** The current contact points of every pair, to transfer the
+     * multipliers after refinement. */
+    void
+    record_multiplier_points();
 
     /** The message of a DivergenceError: what diverged, and which
      * parameter to change (Gamma, the penalty c, or eps_residual), judged
@@ -174,11 +208,13 @@ namespace ddcontact
     ConditionalOStream           &pcout;
 
     std::vector<std::vector<double>> multipliers; // Uzawa lambda per pair
+    std::vector<std::vector<Point<2>>> multiplier_points; // where they live
     std::vector<IterationRecord>     records;
     // The last step's loads sigma_n^k (per pair) and solutions u~^{k+1}.
     std::vector<std::vector<double>> last_sigma_n;
     std::vector<Vector<double>>      last_u_tilde;
-    unsigned int                     uzawa_updates    = 0;
+    unsigned int                     uzawa_updates    = 0; // whole run
+    unsigned int                     mesh_uzawa_updates = 0; // this mesh
     double                           last_penetration = 0;
     unsigned int phase_start = 0; // first record of this Uzawa phase
     double       gamma       = 0;

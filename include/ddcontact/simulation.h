@@ -96,8 +96,8 @@ namespace ddcontact
     unsigned int
     solve_nested();
 
-    /** The problem on the current meshes to convergence: the DD with its
-     * Uzawa updates, or the body problems when there is no contact. */
+    /** The problem on the current meshes to convergence: the contact
+     * solve, or the body problems when there is no contact. */
     unsigned int
     solve_on_current_mesh();
 
@@ -126,8 +126,10 @@ namespace ddcontact
     void
     setup_contact();
 
-    /** The contact problem by DD (20)-(21) or by the monolithic Newton
-     * solver; returns the iteration count. */
+    /** The contact problem on the current meshes, from the current
+     * iterate, by DD (20)-(21) or by the monolithic Newton solver, each
+     * with its Uzawa updates if the augmented Lagrangian is on; returns
+     * the number of DD iterations it took. */
     unsigned int
     solve_contact();
 
