@@ -84,9 +84,17 @@ namespace ddcontact
     {
       // Mesh the geometry with the gmsh binary, in the legacy ASCII format
       // that GridIn reads without the Gmsh API.
-      const std::string msh = work_directory + "/" + parameters.name + ".msh";
+      // Under mpirun every process meshes (gmsh is deterministic) into a
+      // file of its own.
+      const std::string rank =
+        Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 ?
+          "." + std::to_string(
+                  Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)) :
+          "";
+      const std::string msh =
+        work_directory + "/" + parameters.name + rank + ".msh";
       const std::string log =
-        work_directory + "/" + parameters.name + ".gmsh.log";
+        work_directory + "/" + parameters.name + rank + ".gmsh.log";
       const std::string command = "gmsh -2 -format msh22 -v 2 -o '" + msh +
                                   "' '" + file + "' > '" + log + "' 2>&1";
       if (std::system(command.c_str()) != 0)
@@ -440,8 +448,11 @@ namespace ddcontact
   ElasticBody<dim>::setup_and_factorize()
   {
     setup_system();
-    assemble_system();
-    factorize();
+    if (solved_here)
+    {
+      assemble_system();
+      factorize();
+    }
   }
 
   template <int dim>
@@ -458,8 +469,31 @@ namespace ddcontact
     transfer.interpolate(old_solution, solution);
     // New hanging nodes and the Dirichlet data (5) on new boundary vertices.
     constraints.distribute(solution);
-    assemble_system();
-    factorize();
+    if (solved_here)
+    {
+      assemble_system();
+      factorize();
+    }
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::set_solved_here(const bool here)
+  {
+    solved_here = here;
+    if (solved_here && !is_factorized)
+    {
+      assemble_system();
+      factorize();
+    }
+    else if (!solved_here && is_factorized)
+    {
+      // (UMFPACK keeps its factors until the next initialize: it has no
+      // public clear().)
+      trilinos_matrix.clear();
+      amg_preconditioner.clear();
+      is_factorized = false;
+    }
   }
 
   template <int dim>

@@ -32,25 +32,16 @@ namespace
 int
 main(int argc, char **argv)
 {
+  bool root = true;
   using namespace ddcontact;
   try
   {
     Utilities::MPI::MPI_InitFinalize mpi(
       argc, argv, numbers::invalid_unsigned_int);
-    // The bodies live on serial triangulations: several processes would
-    // each run the whole scene and write the same files. Distributed runs
-    // (p4est, Trilinos, bodies on process groups) are not implemented yet.
-    if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
-    {
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        std::cerr << "ddcontact: error: runs on "
-                  << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
-                  << " MPI processes are not supported yet; run without "
-                     "mpirun (the bodies are solved concurrently by threads; "
-                     "set Threads in the parameter file)"
-                  << std::endl;
-      return 1;
-    }
+    // Under mpirun every process holds every body and solves the ones it
+    // owns (BodyDistribution); errors are the same on all of them, so the
+    // first process alone prints.
+    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
     std::string              parameter_file, output_directory;
     std::vector<std::string> overrides;
@@ -60,7 +51,8 @@ main(int argc, char **argv)
       const std::string arg = argv[i];
       if (arg == "--help" || arg == "-h")
       {
-        print_usage(std::cout);
+        if (root)
+          print_usage(std::cout);
         return 0;
       }
       else if (arg == "--print-parameters")
@@ -83,12 +75,14 @@ main(int argc, char **argv)
 
     if (print_parameters && parameter_file.empty())
     {
-      ParameterReader::print_defaults(std::cout);
+      if (root)
+        ParameterReader::print_defaults(std::cout);
       return 0;
     }
     if (parameter_file.empty())
     {
-      print_usage(std::cerr);
+      if (root)
+        print_usage(std::cerr);
       return 2;
     }
 
@@ -97,7 +91,8 @@ main(int argc, char **argv)
     const ParameterReader reader(parameter_file, overrides);
     if (print_parameters)
     {
-      reader.print(std::cout);
+      if (root)
+        reader.print(std::cout);
       return 0;
     }
 
@@ -105,24 +100,28 @@ main(int argc, char **argv)
     if (scene.n_threads > 0)
       MultithreadInfo::set_thread_limit(scene.n_threads);
     std::filesystem::create_directories(scene.output_directory);
-    reader.write_used(scene.output_directory + "/parameters.prm");
+    if (root)
+      reader.write_used(scene.output_directory + "/parameters.prm");
 
     Simulation simulation(scene, std::cout);
     simulation.run();
   }
   catch (const DivergenceError &e)
   {
-    std::cerr << "ddcontact: error: " << e.what() << std::endl;
+    if (root)
+      std::cerr << "ddcontact: error: " << e.what() << std::endl;
     return 4;
   }
   catch (const InputError &e)
   {
-    std::cerr << "ddcontact: error: " << e.what() << std::endl;
+    if (root)
+      std::cerr << "ddcontact: error: " << e.what() << std::endl;
     return 1;
   }
   catch (const std::exception &e)
   {
-    std::cerr << "ddcontact: error: " << e.what() << std::endl;
+    if (root)
+      std::cerr << "ddcontact: error: " << e.what() << std::endl;
     return 3;
   }
   return 0;

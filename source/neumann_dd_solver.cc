@@ -63,12 +63,25 @@ namespace ddcontact
   NeumannDDSolver::NeumannDDSolver(const DDParameters &parameters,
                                    const std::vector<ElasticBody<2> *> &bodies,
                                    const std::vector<ContactPair *>    &pairs,
-                                   ConditionalOStream                  &pcout)
+                                   const BodyDistribution &distribution,
+                                   ConditionalOStream     &pcout)
     : parameters(parameters)
     , bodies(bodies)
     , pairs(pairs)
+    , distribution(distribution)
     , pcout(pcout)
   {
+  }
+
+  void
+  NeumannDDSolver::solve_all(const std::vector<Vector<double>> &loads,
+                             std::vector<Vector<double>>       &u) const
+  {
+    // The body problems of (20) are independent: solve them concurrently,
+    // each on the process that owns it.
+    u.resize(bodies.size());
+    distribution.solve_and_share(
+      [&](const unsigned int b) { bodies[b]->solve(loads[b], u[b]); }, u);
   }
 
   unsigned int
@@ -115,13 +128,7 @@ namespace ddcontact
                                   loads[body_index(pairs[p]->get_body_1())],
                                   loads[body_index(pairs[p]->get_body_2())]);
 
-    // The body problems of (20) are independent: solve them concurrently.
-    u_tilde.resize(bodies.size());
-    Threads::TaskGroup<void> tasks;
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      tasks +=
-        Threads::new_task([&, b]() { bodies[b]->solve(loads[b], u_tilde[b]); });
-    tasks.join_all();
+    solve_all(loads, u_tilde);
   }
 
   std::vector<std::vector<double>>
@@ -169,9 +176,8 @@ namespace ddcontact
       // stiffness E'/H (E' = E/(1-nu^2), H its thickness across S), in
       // series with the penalty; the pressure of this model, applied to
       // the contact-free solution's gap, loads the first solve.
-      std::vector<Vector<double>> u_free(bodies.size());
-      for (unsigned int b = 0; b < bodies.size(); ++b)
-        bodies[b]->solve(Vector<double>(), u_free[b]);
+      std::vector<Vector<double>> u_free;
+      solve_all(std::vector<Vector<double>>(bodies.size()), u_free);
 
       std::vector<Vector<double>> loads(bodies.size());
       for (unsigned int b = 0; b < bodies.size(); ++b)
@@ -210,11 +216,7 @@ namespace ddcontact
         pair.add_contact_loads(
           sigma, loads[body_index(b1)], loads[body_index(b2)]);
       }
-      Threads::TaskGroup<void> tasks;
-      for (unsigned int b = 0; b < bodies.size(); ++b)
-        tasks +=
-          Threads::new_task([&, b]() { bodies[b]->solve(loads[b], u[b]); });
-      tasks.join_all();
+      solve_all(loads, u);
     }
 
     for (unsigned int b = 0; b < bodies.size(); ++b)
@@ -590,11 +592,10 @@ namespace ddcontact
     // lambda_max gives the stability limit of (21), gamma* = 2/(1 +
     // lambda_max) (the spectrum of I + A^{-1} J'' lies in [1, 1 +
     // lambda_max]).
-    std::vector<Vector<double>> base(bodies.size()), v(bodies.size()),
-      w(bodies.size());
+    std::vector<Vector<double>> base, v(bodies.size()), w;
+    solve_all(std::vector<Vector<double>>(bodies.size()), base);
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
-      bodies[b]->solve(Vector<double>(), base[b]);
       v[b] = bodies[b]->get_solution();
       v[b] -= base[b];
       if (!(v[b].l2_norm() > 0) || !std::isfinite(v[b].l2_norm()))
@@ -619,10 +620,10 @@ namespace ddcontact
           sigma[q] = -(u_1n[q] + u_2n[q]) / pair->penalty();
         pair->add_contact_loads(sigma, loads[b1], loads[b2]);
       }
+      solve_all(loads, w);
       double norm_v = 0, norm_w = 0;
       for (unsigned int b = 0; b < bodies.size(); ++b)
       {
-        bodies[b]->solve(loads[b], w[b]);
         w[b] -= base[b];
         w[b] *= -1.;
         norm_v += v[b].norm_sqr();

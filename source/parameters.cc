@@ -1,10 +1,13 @@
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/lac/vector.h>
 
 #include <ddcontact/parameters.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -717,6 +720,52 @@ namespace ddcontact
   }
 
   void
+  ParallelParameters::declare(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Body owners",
+      "auto",
+      Patterns::Anything(),
+      "Under mpirun: the process that solves each body's problem (20), "
+      "'auto' (balance the dofs, again after every refinement) or "
+      "'name: rank, name: rank' for every body. The other processes keep "
+      "the body's mesh and receive its solution.");
+  }
+
+  void
+  ParallelParameters::parse(ParameterHandler               &prm,
+                            const std::vector<std::string> &body_names)
+  {
+    body_owners.clear();
+    const std::string text = prm.get("Body owners");
+    if (text == "auto")
+      return;
+    const unsigned int n_processes =
+      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    for (const auto &item : split(text, ','))
+    {
+      const auto what  = "Parallel/Body owners: '" + item + "'";
+      const auto parts = split(item, ':');
+      if (parts.size() != 2)
+        throw InputError(what + " is not 'body: process'");
+      if (std::find(body_names.begin(), body_names.end(), parts[0]) ==
+          body_names.end())
+        throw InputError(what + ": '" + parts[0] +
+                         "' is not one of the Bodies");
+      const double rank = parse_double(parts[1], what);
+      if (rank < 0 || rank != std::floor(rank) || rank >= n_processes)
+        throw InputError(what + ": process " + parts[1] +
+                         " does not exist in a run on " +
+                         std::to_string(n_processes) + " processes");
+      body_owners[parts[0]] = static_cast<unsigned int>(rank);
+    }
+    for (const auto &name : body_names)
+      if (body_owners.count(name) == 0)
+        throw InputError("Parallel/Body owners: body '" + name +
+                         "' is not listed");
+  }
+
+  void
   SceneParameters::declare(ParameterHandler               &prm,
                            const std::vector<std::string> &bodies,
                            const std::vector<std::string> &pairs)
@@ -756,6 +805,10 @@ namespace ddcontact
 
     prm.enter_subsection("Adaptation");
     AdaptationParameters::declare(prm);
+    prm.leave_subsection();
+
+    prm.enter_subsection("Parallel");
+    ParallelParameters::declare(prm);
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
@@ -823,6 +876,14 @@ namespace ddcontact
       throw InputError("Adaptation/Mode: combined needs Domain "
                        "decomposition/Solver = dd; use Mode = nested with the "
                        "monolithic solver");
+    prm.enter_subsection("Parallel");
+    parallel.parse(prm, body_names);
+    prm.leave_subsection();
+    if (dd.solver == "monolithic" &&
+        Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      throw InputError("Domain decomposition/Solver: monolithic runs on one "
+                       "process; use Solver = dd under mpirun");
+
     for (const auto &b : adaptation.bodies)
     {
       const auto it = std::find(body_names.begin(), body_names.end(), b);

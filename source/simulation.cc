@@ -34,8 +34,9 @@ namespace ddcontact
   Simulation::Simulation(const SceneParameters &parameters,
                          std::ostream          &screen)
     : parameters(parameters)
-    , pcout(screen, true)
+    , pcout(screen, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+    , writes_files(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
   {
   }
 
@@ -49,13 +50,22 @@ namespace ddcontact
       bodies.push_back(std::make_unique<ElasticBody<2>>(body_parameters,
                                                         parameters.constants));
       bodies.back()->make_mesh(parameters.output_directory);
+      // Assembled and factorized only where it is solved, below.
+      bodies.back()->set_solved_here(false);
     }
-
-    // Assembly and factorization of the bodies are independent.
     Threads::TaskGroup<void> tasks;
     for (auto &body : bodies)
-      tasks += Threads::new_task([&body]() { body->setup_and_factorize(); });
+      tasks += Threads::new_task([&body]() { body->setup_system(); });
     tasks.join_all();
+
+    distribution = std::make_unique<BodyDistribution>(raw_pointers(bodies),
+                                                      parameters.parallel,
+                                                      MPI_COMM_WORLD);
+    distribution->distribute();
+    if (distribution->n_processes() > 1)
+      pcout << "  " << distribution->n_processes()
+            << " MPI processes; bodies solved on processes "
+            << distribution->describe() << std::endl;
 
     for (const auto &body : bodies)
       pcout << "  body " << std::setw(10) << std::left << body->name()
@@ -69,11 +79,17 @@ namespace ddcontact
   void
   Simulation::solve_bodies()
   {
-    TimerOutput::Scope       t(timer, "solve");
-    Threads::TaskGroup<void> tasks;
-    for (auto &body : bodies)
-      tasks += Threads::new_task([&body]() { body->solve(); });
-    tasks.join_all();
+    TimerOutput::Scope          t(timer, "solve");
+    std::vector<Vector<double>> u(bodies.size());
+    distribution->solve_and_share(
+      [&](const unsigned int b)
+      {
+        bodies[b]->solve();
+        u[b] = bodies[b]->get_solution();
+      },
+      u);
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      bodies[b]->get_solution() = u[b];
   }
 
   void
@@ -99,7 +115,11 @@ namespace ddcontact
             << std::endl;
     }
     dd_solver = std::make_unique<NeumannDDSolver>(
-      parameters.dd, raw_pointers(bodies), raw_pointers(contact_pairs), pcout);
+      parameters.dd,
+      raw_pointers(bodies),
+      raw_pointers(contact_pairs),
+      *distribution,
+      pcout);
     if (parameters.dd.write_every_iteration)
       dd_solver->set_iteration_callback(
         [this](const unsigned int k)
@@ -144,6 +164,8 @@ namespace ddcontact
           adaptations.push_back(std::make_unique<AdaptiveRefinement>(
             *body, parameters.adaptation));
 
+    if (!writes_files)
+      return;
     statistics = std::make_unique<std::ofstream>(parameters.output_directory +
                                                  "/statistics.csv");
     auto &out = *statistics;
@@ -201,6 +223,10 @@ namespace ddcontact
       tasks += Threads::new_task([&a]() { a->refine(); });
     tasks.join_all();
     ++n_adaptation_steps;
+    // Refinement changed the bodies' sizes: balance them again.
+    if (distribution->distribute())
+      pcout << "  bodies now solved on processes "
+            << distribution->describe() << std::endl;
     if (!contact_pairs.empty())
     {
       for (auto &pair : contact_pairs)
@@ -213,6 +239,11 @@ namespace ddcontact
   Simulation::output_adaptation_step()
   {
     output_results(n_output_steps);
+    if (!writes_files)
+    {
+      ++n_output_steps;
+      return;
+    }
     // The adapted meshes with the von Mises stress and eta per cell, for
     // plots without ParaView (the paper's Figs. 4 and 7).
     for (const auto &a : adaptations)
@@ -264,6 +295,8 @@ namespace ddcontact
   Simulation::write_statistics_row(const unsigned int marked,
                                    const bool         estimated)
   {
+    if (!writes_files)
+      return;
     auto &out = *statistics;
     out << std::setprecision(10) << n_adaptation_steps << ','
         << (dd_solver ? dd_solver->history().size() : 0);
@@ -401,6 +434,8 @@ namespace ddcontact
   void
   Simulation::write_history() const
   {
+    if (!writes_files)
+      return;
     std::ofstream out(parameters.output_directory + "/history.csv");
     out << "k,residual,increment,gamma,contact_force,active_length,"
            "max_penetration,time_s\n";
@@ -414,6 +449,8 @@ namespace ddcontact
   void
   Simulation::write_contact_profiles(const std::string &suffix) const
   {
+    if (!writes_files)
+      return;
     for (unsigned int p = 0; p < contact_pairs.size(); ++p)
     {
       const auto    state = dd_solver->contact_state(p);
@@ -431,6 +468,8 @@ namespace ddcontact
   void
   Simulation::output_results(const unsigned int step)
   {
+    if (!writes_files)
+      return;
     if (!parameters.write_vtu)
       return;
     TimerOutput::Scope t(timer, "output");
@@ -471,6 +510,8 @@ namespace ddcontact
       body_list.push_back(b);
     }
     json.set("bodies", body_list);
+    json.set("mpi_processes", distribution->n_processes());
+    json.set("body_owners", distribution->describe());
 
     Json points = Json::array();
     for (const auto &point : parameters.points)
@@ -580,7 +621,8 @@ namespace ddcontact
     json.set("timings", timings);
 
     summary_json = json;
-    json.write_file(parameters.output_directory + "/summary.json");
+    if (writes_files)
+      json.write_file(parameters.output_directory + "/summary.json");
   }
 
   void

@@ -51,6 +51,26 @@ namespace ddcontact
       simulation->run();
       return simulation;
     }
+    /** Every face of an active cell borders at most two active cells on its
+     * other side: a refined neighbour face has two children, both leaves. */
+    inline bool
+    one_irregular(const Triangulation<2> &tria)
+    {
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+        {
+          const auto face = cell->face(f);
+          if (face->has_children())
+          {
+            if (face->n_children() != 2)
+              return false;
+            for (unsigned int c = 0; c < 2; ++c)
+              if (face->child(c)->has_children())
+                return false;
+          }
+        }
+      return true;
+    }
   } // namespace testing
 } // namespace ddcontact
 

@@ -96,6 +96,21 @@ namespace ddcontact
     refine_and_transfer();
 
     /**
+     * Whether this process solves the body (see BodyDistribution): only
+     * then are the system assembled and factorized; elsewhere the body
+     * keeps its mesh, dofs and constraints. Switching it on assembles and
+     * factorizes, switching it off frees the matrix and factorization.
+     */
+    void
+    set_solved_here(bool solved_here);
+
+    bool
+    is_solved_here() const
+    {
+      return solved_here;
+    }
+
+    /**
      * Solve a_a(u, v) = l_a(v) + load(v) for all v: @p load is an
      * additional right-hand side (e.g. the contact traction of (20))
      * assembled with get_constraints().distribute_local_to_global() and
@@ -301,6 +316,7 @@ namespace ddcontact
     TrilinosWrappers::SparseMatrix    trilinos_matrix;
     TrilinosWrappers::PreconditionAMG amg_preconditioner;
     bool                              is_factorized = false;
+    bool                              solved_here   = true;
   };
 } // namespace ddcontact
 

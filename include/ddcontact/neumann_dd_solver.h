@@ -6,6 +6,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <ddcontact/body_distribution.h>
 #include <ddcontact/contact_pair.h>
 #include <ddcontact/elastic_body.h>
 #include <ddcontact/parameters.h>
@@ -65,9 +66,12 @@ namespace ddcontact
   class NeumannDDSolver
   {
   public:
+    /** The body problems are solved where @p distribution says (every
+     * body on this process when it has one process). */
     NeumannDDSolver(const DDParameters                  &parameters,
                     const std::vector<ElasticBody<2> *> &bodies,
                     const std::vector<ContactPair *>    &pairs,
+                    const BodyDistribution              &distribution,
                     ConditionalOStream                  &pcout);
 
     /** Initial guess (zero or Winkler); resets the history. Call after the
@@ -173,6 +177,12 @@ namespace ddcontact
     std::vector<double>
     pressure(unsigned int p, const std::vector<Vector<double>> &u) const;
 
+    /** Solve every body b with the extra load loads[b] (empty: none), each
+     * on its process, concurrently; every process receives all u[b]. */
+    void
+    solve_all(const std::vector<Vector<double>> &loads,
+              std::vector<Vector<double>>       &u) const;
+
     /** Solve all bodies with the contact loads of the normal stresses
      * sigma_n (one vector per pair). */
     void
@@ -205,6 +215,7 @@ namespace ddcontact
     const DDParameters            parameters;
     std::vector<ElasticBody<2> *> bodies;
     std::vector<ContactPair *>    pairs;
+    const BodyDistribution       &distribution;
     ConditionalOStream           &pcout;
 
     std::vector<std::vector<double>> multipliers; // Uzawa lambda per pair

@@ -182,6 +182,25 @@ namespace ddcontact
   };
 
   /**
+   * Runs on several MPI processes, in the subsection "Parallel": which
+   * process solves which body (BodyDistribution).
+   */
+  struct ParallelParameters
+  {
+    /** Empty: balance the bodies' dofs over the processes ("auto");
+     * otherwise the process of every body. */
+    std::map<std::string, unsigned int> body_owners;
+
+    static void
+    declare(ParameterHandler &prm);
+
+    /** Checks the names against @p body_names and the processes against
+     * the size of MPI_COMM_WORLD. */
+    void
+    parse(ParameterHandler &prm, const std::vector<std::string> &body_names);
+  };
+
+  /**
    * The top level of a parameter file: the scene's name, where results go,
    * which bodies exist (each with its own "Body <name>" subsection), named
    * constants for expressions, and output options.
@@ -200,6 +219,7 @@ namespace ddcontact
     std::vector<ContactPairParameters> contact_pairs;
     DDParameters                       dd;
     AdaptationParameters               adaptation;
+    ParallelParameters                 parallel;
 
     /** Declare the scene entries and, for each name, a body subsection
      * and a contact pair subsection. */

@@ -5,6 +5,7 @@
 #include <deal.II/base/timer.h>
 
 #include <ddcontact/adaptive_refinement.h>
+#include <ddcontact/body_distribution.h>
 #include <ddcontact/body_output.h>
 #include <ddcontact/contact_pair.h>
 #include <ddcontact/elastic_body.h>
@@ -46,6 +47,13 @@ namespace ddcontact
     get_bodies() const
     {
       return bodies;
+    }
+
+    /** Which process solves which body. */
+    const BodyDistribution &
+    get_distribution() const
+    {
+      return *distribution;
     }
 
     const NeumannDDSolver &
@@ -151,6 +159,9 @@ namespace ddcontact
     Timer                 wall_clock;
 
     std::vector<std::unique_ptr<ElasticBody<2>>> bodies;
+    std::unique_ptr<BodyDistribution>            distribution;
+    /** Process 0 writes the files (every process holds all results). */
+    const bool writes_files;
     std::vector<std::unique_ptr<ContactPair>>    contact_pairs;
     std::unique_ptr<NeumannDDSolver>             dd_solver;
     unsigned int                                 n_contact_iterations = 0;

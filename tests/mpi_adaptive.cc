@@ -1,0 +1,97 @@
+// DESCRIPTION: (run under mpirun -np 2) the combined algorithm on the
+// paper's scene with the bodies solved on two processes: every process
+// refines to the same one-irregular mesh, the bodies are balanced again
+// after refinement, and the result equals the one with both bodies on one
+// process to 1e-10
+#include <ddcontact/simulation.h>
+
+#include "test_tools.h"
+
+#include <cmath>
+#include <iostream>
+
+using namespace ddcontact;
+using namespace ddcontact::testing;
+
+namespace
+{
+  std::unique_ptr<Simulation>
+  run(const std::string &source_dir, const std::string &owners)
+  {
+    return run_scene(source_dir + "/prm/paper_two_bodies.prm",
+                     {"Output directory=mpi_adaptive_output",
+                      "Body omega1/Mesh/Initial refinement=1",
+                      "Body omega2/Mesh/Initial refinement=0",
+                      "Domain decomposition/Relaxation=anderson",
+                      "Domain decomposition/eps_residual=1e-10",
+                      "Adaptation/Mode=combined",
+                      "Adaptation/Estimator=fem-bem-scaled",
+                      "Adaptation/Delta=0.1",
+                      "Adaptation/Max level=4"},
+                     {"Parallel/Body owners=" + owners});
+  }
+
+  /** A number that differs between processes iff the meshes do. */
+  double
+  mesh_fingerprint(const Triangulation<2> &tria)
+  {
+    double sum = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      sum += cell->center()[0] * 1.3 + cell->center()[1] * 0.7 + cell->level();
+    return sum;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string                source_dir = (argc > 1) ? argv[1] : "..";
+  const MPI_Comm                   world      = MPI_COMM_WORLD;
+  const bool root = Utilities::MPI::this_mpi_process(world) == 0;
+  if (Utilities::MPI::n_mpi_processes(world) != 2)
+  {
+    std::cerr << "run this test with mpirun -np 2" << std::endl;
+    return 1;
+  }
+  // Only the first process prints; every process checks (a failure on
+  // either fails the test through the exit code mpirun reports).
+  if (!root)
+    std::cout.setstate(std::ios::failbit);
+
+  // Balanced ("auto"): omega1 (2210 dofs) first on process 0; Omega_2
+  // outgrows it under refinement and the two swap.
+  const auto  balanced = run(source_dir, "auto");
+  const auto &omega2   = balanced->get_bodies()[1]->get_triangulation();
+  const auto &distribution = balanced->get_distribution();
+  std::cout << "auto: " << omega2.n_active_cells() << " cells in Omega_2, "
+            << "bodies on processes " << distribution.describe() << std::endl;
+  check(one_irregular(omega2), "the adapted mesh is one-irregular");
+  const double fingerprint = mesh_fingerprint(omega2);
+  check(Utilities::MPI::min(fingerprint, world) ==
+          Utilities::MPI::max(fingerprint, world),
+        "every process holds the same adapted mesh");
+  check(omega2.n_active_cells() > 64, "Omega_2 was refined");
+  check(distribution.owner_of(0) != distribution.owner_of(1),
+        "the two bodies are solved on different processes");
+  check(distribution.owner_of(1) == 0,
+        "after refinement the larger Omega_2 moved to process 0");
+
+  // Both bodies on process 0 (process 1 only follows): the serial
+  // computation with the broadcasts of a parallel run.
+  const auto one = run(source_dir, "omega1: 0, omega2: 0");
+  const auto f_a = balanced->get_dd_solver().contact_state(0).force_1.norm();
+  const auto f_b = one->get_dd_solver().contact_state(0).force_1.norm();
+  std::cout << "force " << f_a << " (two processes) and " << f_b
+            << " (one); DD iterations "
+            << balanced->get_dd_solver().history().size() << " and "
+            << one->get_dd_solver().history().size() << std::endl;
+  check(balanced->get_dd_solver().history().size() ==
+          one->get_dd_solver().history().size(),
+        "the same number of DD iterations");
+  check(std::abs(f_a - f_b) <= 1e-10 * f_b, "the same contact force to 1e-10");
+
+  const int failed = Utilities::MPI::max(failures, world);
+  failures         = failed;
+  return report();
+}

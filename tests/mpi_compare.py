@@ -1,0 +1,98 @@
+"""Runs a scene with 1 and with 2 MPI processes and compares summary.json.
+
+The bodies are solved on different processes and their solutions
+broadcast (BodyDistribution); everything else runs identically on every
+process, so the two runs must agree: the same iteration counts, meshes and
+Uzawa updates, and every number equal to 1e-10 relative (numbers inside a
+list relative to the list's largest entry, so that a zero force component
+compares at the scale of the force). Also checks that the 2-process run
+really solved the bodies on two processes, and, with --expect-repartition,
+that it moved a body to another process after refinement.
+
+usage: mpi_compare.py MPIRUN EXE SCENE OUTDIR [--expect-repartition]
+                      [--set Section/Entry=value ...]
+"""
+import json
+import os
+import subprocess
+import sys
+
+TOLERANCE = 1e-10
+# Not results: where the bodies were solved, and how long it took.
+IGNORED = {"mpi_processes", "body_owners", "wall_time_s", "timings"}
+
+
+def run(mpirun, exe, scene, out, n, overrides):
+    # One thread per process in both runs: deal.II's threaded loops change
+    # the round-off with the number of threads, and a long Anderson
+    # iteration can amplify 1e-16 into a different iteration count.
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1", DEAL_II_NUM_THREADS="1")
+    command = [mpirun, "-np", str(n), exe, scene, "--output", out]
+    for o in overrides:
+        command += ["--set", o]
+    result = subprocess.run(command, env=env, capture_output=True, text=True,
+                            timeout=600)
+    if result.returncode != 0:
+        sys.exit(f"FAIL: {' '.join(command)} exited with {result.returncode}:\n"
+                 f"{result.stderr}")
+    with open(os.path.join(out, "summary.json")) as f:
+        return json.load(f), result.stdout
+
+
+def compare(a, b, path, scale, failures):
+    if isinstance(a, dict):
+        for key in sorted(set(a) | set(b)):
+            if key in IGNORED:
+                continue
+            if key not in a or key not in b:
+                failures.append(f"{path}/{key}: only in one run")
+                continue
+            compare(a[key], b[key], f"{path}/{key}", None, failures)
+    elif isinstance(a, list):
+        if len(a) != len(b):
+            failures.append(f"{path}: lengths {len(a)} and {len(b)}")
+            return
+        numbers = [abs(x) for x in a if isinstance(x, float)]
+        list_scale = max(numbers) if numbers else None
+        for i, (x, y) in enumerate(zip(a, b)):
+            compare(x, y, f"{path}[{i}]", list_scale, failures)
+    elif isinstance(a, bool) or isinstance(a, int) or isinstance(a, str):
+        if a != b:
+            failures.append(f"{path}: {a} and {b}")
+    elif isinstance(a, float):
+        reference = max(scale or 0.0, abs(a), abs(b), 1e-300)
+        if abs(a - b) > TOLERANCE * reference:
+            failures.append(f"{path}: {a!r} and {b!r} differ by "
+                            f"{abs(a - b) / reference:.2e} relative")
+    elif a != b:
+        failures.append(f"{path}: {a} and {b}")
+
+
+def main():
+    mpirun, exe, scene, out = sys.argv[1:5]
+    rest = sys.argv[5:]
+    expect_repartition = "--expect-repartition" in rest
+    overrides = [rest[i + 1] for i, r in enumerate(rest) if r == "--set"]
+    one, _ = run(mpirun, exe, scene, out + "_np1", 1, overrides)
+    two, log = run(mpirun, exe, scene, out + "_np2", 2, overrides)
+
+    failures = []
+    compare(one, two, "", None, failures)
+    owners = {int(item.split(":")[1]) for item in two["body_owners"].split(",")}
+    print(f"  1 process: {one.get('dd_iterations')} DD iterations; 2 processes: "
+          f"{two.get('dd_iterations')}, bodies on processes {two['body_owners']}")
+    if two["mpi_processes"] != 2 or (len(two["bodies"]) > 1 and owners != {0, 1}):
+        failures.append(f"the 2-process run did not use both processes "
+                        f"({two['body_owners']})")
+    if expect_repartition and "bodies now solved on processes" not in log:
+        failures.append("no body moved to another process after refinement")
+    for f in failures:
+        print("  FAIL " + f)
+    print("PASSED" if not failures else "FAILED")
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()
