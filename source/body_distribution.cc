@@ -1,6 +1,7 @@
 #include <ddcontact/body_distribution.h>
 
 #include <deal.II/base/thread_management.h>
+#include <deal.II/base/timer.h>
 
 #include <algorithm>
 #include <numeric>
@@ -94,6 +95,7 @@ namespace ddcontact
     std::vector<Vector<double>>             &per_body) const
   {
     AssertDimension(per_body.size(), bodies.size());
+    Timer                    timer;
     std::vector<std::string> errors(bodies.size());
     Threads::TaskGroup<void> tasks;
     for (unsigned int b = 0; b < bodies.size(); ++b)
@@ -111,12 +113,15 @@ namespace ddcontact
             }
           });
     tasks.join_all();
+    seconds_solving += timer.wall_time();
+    timer.restart();
     std::string first_error;
     for (const auto &e : errors)
       if (first_error.empty())
         first_error = e;
     agree_on_errors(first_error);
     share(per_body);
+    seconds_exchanging += timer.wall_time();
   }
 
   void

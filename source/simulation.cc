@@ -618,6 +618,12 @@ namespace ddcontact
       timings.set(section, seconds);
     for (const auto &[section, seconds] : timings_extra)
       timings.set(section, seconds);
+    // The body solves and the exchange of their solutions (on process 0;
+    // the exchange includes waiting for the slowest process).
+    timings.set("body solves", distribution->solve_seconds());
+    if (distribution->n_processes() > 1)
+      timings.set("exchange between processes",
+                  distribution->exchange_seconds());
     json.set("timings", timings);
 
     summary_json = json;

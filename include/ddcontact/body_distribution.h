@@ -98,6 +98,21 @@ namespace ddcontact
       return n_procs;
     }
 
+    /** Wall seconds this process spent in its own body solves, and in
+     * the exchange after them (waiting for the slowest process, then the
+     * broadcasts), summed over all calls of solve_and_share(). */
+    double
+    solve_seconds() const
+    {
+      return seconds_solving;
+    }
+
+    double
+    exchange_seconds() const
+    {
+      return seconds_exchanging;
+    }
+
     /** "omega1: 0, omega2: 1": the owners, for the screen and summary. */
     std::string
     describe() const;
@@ -108,6 +123,8 @@ namespace ddcontact
     const MPI_Comm                communicator;
     const unsigned int            this_process, n_procs;
     std::vector<unsigned int>     owner;
+    mutable double                seconds_solving    = 0;
+    mutable double                seconds_exchanging = 0;
   };
 } // namespace ddcontact
 

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Study (not a test): strong scaling of the DD from 1 to 2 MPI processes on
+# the paper's scene refined to about 1e6 unknowns (both bodies at Initial
+# refinement 6: 2 x 526850 dofs), fixed meshes, Anderson. Three runs: one
+# process with one thread (the bodies solved one after the other), one
+# process with two threads (the bodies solved by concurrent tasks), two
+# processes with one thread each (each body on its own process). Writes
+# doc/scaling.csv; doc/scaling.md discusses it. Usage:
+#   scripts/scaling.sh [REFINEMENT]     (default 6; 5 gives 2.6e5 unknowns)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install_deps.sh
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+ninja -C build ddcontact
+r=${1:-6}
+exe=build/ddcontact
+out=doc/scaling-runs
+rm -rf "$out"; mkdir -p "$out"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+common=(prm/paper_two_bodies.prm
+        --set "Adaptation/Mode=none" --set "Output/Write vtu=false"
+        --set "Body omega1/Mesh/Initial refinement=$r"
+        --set "Body omega2/Mesh/Initial refinement=$r"
+        --set "Domain decomposition/Relaxation=anderson")
+run() { # name, processes, threads
+  echo "== $1"
+  DEAL_II_NUM_THREADS=$3 mpirun --oversubscribe -np "$2" "$exe" "${common[@]}" \
+    --output "$out/$1" > "$out/$1.log"
+  grep -E "contact S:|wall time" "$out/$1.log" | sed 's/^/   /'
+}
+run np1_threads1 1 1
+run np1_threads2 1 2
+run np2_threads1 2 1
+python3 - "$out" doc/scaling.csv <<'PY'
+import json, sys
+out, csv = sys.argv[1], sys.argv[2]
+phases = ["setup", "contact setup", "contact solve", "body solves",
+          "exchange between processes"]
+with open(csv, "w") as f:
+    f.write("run,processes,threads,dofs,dd_iterations,wall_s,"
+            + ",".join(p.replace(" ", "_") + "_s" for p in phases)
+            + ",contact_solve_per_iteration_s\n")
+    for name, n, t in [("np1_threads1", 1, 1), ("np1_threads2", 1, 2),
+                       ("np2_threads1", 2, 1)]:
+        s = json.load(open(f"{out}/{name}/summary.json"))
+        dofs = sum(b["dofs"] for b in s["bodies"])
+        tm = s["timings"]
+        row = [name, n, t, dofs, s["dd_iterations"], f"{s['wall_time_s']:.3f}"]
+        row += [f"{tm.get(p, 0.0):.3f}" for p in phases]
+        row += [f"{tm['contact solve'] / s['dd_iterations']:.4f}"]
+        f.write(",".join(str(x) for x in row) + "\n")
+print(open(csv).read())
+PY
