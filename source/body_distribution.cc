@@ -50,28 +50,38 @@ namespace ddcontact
       for (unsigned int b = 0; b < bodies.size(); ++b)
         owner[b] = parameters.body_owners.at(bodies[b]->name());
     // Assembly and factorization of the bodies are independent.
+    for_each_body([&](const unsigned int b)
+                  { bodies[b]->set_solved_here(owns(b)); },
+                  false);
+    return owner != previous;
+  }
+
+  void
+  BodyDistribution::for_each_body(const std::function<void(unsigned int)> &work,
+                                  const bool owned_only) const
+  {
     std::vector<std::string> errors(bodies.size());
     Threads::TaskGroup<void> tasks;
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      tasks += Threads::new_task(
-        [&, b]()
-        {
-          try
+      if (!owned_only || owns(b))
+        tasks += Threads::new_task(
+          [&, b]()
           {
-            bodies[b]->set_solved_here(owns(b));
-          }
-          catch (const std::exception &e)
-          {
-            errors[b] = e.what();
-          }
-        });
+            try
+            {
+              work(b);
+            }
+            catch (const std::exception &e)
+            {
+              errors[b] = e.what();
+            }
+          });
     tasks.join_all();
     std::string first_error;
     for (const auto &e : errors)
       if (first_error.empty())
         first_error = e;
     agree_on_errors(first_error);
-    return owner != previous;
   }
 
   void
@@ -95,31 +105,10 @@ namespace ddcontact
     std::vector<Vector<double>>             &per_body) const
   {
     AssertDimension(per_body.size(), bodies.size());
-    Timer                    timer;
-    std::vector<std::string> errors(bodies.size());
-    Threads::TaskGroup<void> tasks;
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      if (owns(b))
-        tasks += Threads::new_task(
-          [&, b]()
-          {
-            try
-            {
-              solve(b);
-            }
-            catch (const std::exception &e)
-            {
-              errors[b] = e.what();
-            }
-          });
-    tasks.join_all();
+    Timer timer;
+    for_each_body(solve, true);
     seconds_solving += timer.wall_time();
     timer.restart();
-    std::string first_error;
-    for (const auto &e : errors)
-      if (first_error.empty())
-        first_error = e;
-    agree_on_errors(first_error);
     share(per_body);
     seconds_exchanging += timer.wall_time();
   }

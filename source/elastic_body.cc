@@ -87,10 +87,10 @@ namespace ddcontact
       // Under mpirun every process meshes (gmsh is deterministic) into a
       // file of its own.
       const std::string rank =
-        Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 ?
-          "." + std::to_string(
-                  Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)) :
-          "";
+        Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1
+          ? "." +
+              std::to_string(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD))
+          : "";
       const std::string msh =
         work_directory + "/" + parameters.name + rank + ".msh";
       const std::string log =
@@ -562,9 +562,8 @@ namespace ddcontact
       auto &s = stress[cell->active_cell_index()];
       s.resize(strain.size());
       for (unsigned int q = 0; q < strain.size(); ++q)
-        s[q] = stress_from_strain(strain[q],
-                                  dilatation,
-                                  cell->active_cell_index());
+        s[q] =
+          stress_from_strain(strain[q], dilatation, cell->active_cell_index());
     }
     return stress;
   }

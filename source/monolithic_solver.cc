@@ -27,9 +27,9 @@ namespace ddcontact
     const auto gap = [&](const unsigned int p, const unsigned int q)
     {
       const auto &pt = pairs[p]->points()[q];
-      return multipliers.empty() ?
-               pt.gap :
-               pt.gap + pairs[p]->penalty() * multipliers[p][q];
+      return multipliers.empty()
+               ? pt.gap
+               : pt.gap + pairs[p]->penalty() * multipliers[p][q];
     };
 
     // One global numbering: the bodies' dofs one after another.

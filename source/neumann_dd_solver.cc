@@ -262,8 +262,7 @@ namespace ddcontact
           const Point<2> &x       = pairs[p]->points()[q].x;
           unsigned int    nearest = 0;
           for (unsigned int i = 1; i < old_x.size(); ++i)
-            if (x.distance_square(old_x[i]) <
-                x.distance_square(old_x[nearest]))
+            if (x.distance_square(old_x[i]) < x.distance_square(old_x[nearest]))
               nearest = i;
           lambda[q] = multipliers[p][nearest];
         }
@@ -372,9 +371,9 @@ namespace ddcontact
       // up to 1e6 times the step and extrapolate across the kinks of the
       // contact map (the Hertz scene diverged with 1e-10). 1e-6 on R is
       // what the 1e-12 trace regularisation of the normal equations used
-      // before amounted to (their condition number is squared). The normal equations used before square this
-      // condition number (the paper scene at c = 1e-4 ran 3625 iterations
-      // into a non-finite iterate with them).
+      // before amounted to (their condition number is squared). The normal
+      // equations used before square this condition number (the paper scene at
+      // c = 1e-4 ran 3625 iterations into a non-finite iterate with them).
       std::vector<Vector<double>> q;
       FullMatrix<double>          r;
       for (bool complete = false; !complete;)
@@ -651,7 +650,7 @@ namespace ddcontact
     // The converged pressure min(0, lambda + g/theta) of every pair, and
     // how far the bodies still penetrate.
     std::vector<std::vector<double>> sigma_n(pairs.size());
-    double max_penetration = 0, max_displacement = 0;
+    double                           max_penetration = 0, max_displacement = 0;
     for (unsigned int p = 0; p < pairs.size(); ++p)
     {
       auto state      = contact_state(p);
@@ -661,8 +660,8 @@ namespace ddcontact
         max_displacement = std::max(
           max_displacement, std::abs(state.u_1n[q]) + std::abs(state.u_2n[q]));
     }
-    pcout << "  Uzawa check " << mesh_uzawa_updates + 1
-          << ": max penetration " << max_penetration << " ("
+    pcout << "  Uzawa check " << mesh_uzawa_updates + 1 << ": max penetration "
+          << max_penetration << " ("
           << max_penetration / std::max(max_displacement, 1e-300)
           << " of the approach)" << std::endl;
     if (max_penetration <= parameters.al_tolerance * max_displacement)
@@ -711,8 +710,7 @@ namespace ddcontact
         }
         converged = step();
       }
-    }
-    while (start_uzawa_phase());
+    } while (start_uzawa_phase());
     return records.size();
   }
 

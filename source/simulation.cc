@@ -58,9 +58,8 @@ namespace ddcontact
       tasks += Threads::new_task([&body]() { body->setup_system(); });
     tasks.join_all();
 
-    distribution = std::make_unique<BodyDistribution>(raw_pointers(bodies),
-                                                      parameters.parallel,
-                                                      MPI_COMM_WORLD);
+    distribution = std::make_unique<BodyDistribution>(
+      raw_pointers(bodies), parameters.parallel, MPI_COMM_WORLD);
     distribution->distribute();
     if (distribution->n_processes() > 1)
       pcout << "  " << distribution->n_processes()
@@ -114,12 +113,11 @@ namespace ddcontact
             << " contact points, theta = " << contact_pairs.back()->penalty()
             << std::endl;
     }
-    dd_solver = std::make_unique<NeumannDDSolver>(
-      parameters.dd,
-      raw_pointers(bodies),
-      raw_pointers(contact_pairs),
-      *distribution,
-      pcout);
+    dd_solver = std::make_unique<NeumannDDSolver>(parameters.dd,
+                                                  raw_pointers(bodies),
+                                                  raw_pointers(contact_pairs),
+                                                  *distribution,
+                                                  pcout);
     if (parameters.dd.write_every_iteration)
       dd_solver->set_iteration_callback(
         [this](const unsigned int k)
@@ -161,14 +159,14 @@ namespace ddcontact
     for (const auto &name : parameters.adaptation.bodies)
       for (auto &body : bodies)
         if (body->name() == name)
-          adaptations.push_back(std::make_unique<AdaptiveRefinement>(
-            *body, parameters.adaptation));
+          adaptations.push_back(
+            std::make_unique<AdaptiveRefinement>(*body, parameters.adaptation));
 
     if (!writes_files)
       return;
     statistics = std::make_unique<std::ofstream>(parameters.output_directory +
                                                  "/statistics.csv");
-    auto &out = *statistics;
+    auto &out  = *statistics;
     out << "cycle,dd_iterations";
     for (const auto &body : bodies)
       out << ",cells_" << body->name() << ",dofs_" << body->name();
@@ -225,8 +223,8 @@ namespace ddcontact
     ++n_adaptation_steps;
     // Refinement changed the bodies' sizes: balance them again.
     if (distribution->distribute())
-      pcout << "  bodies now solved on processes "
-            << distribution->describe() << std::endl;
+      pcout << "  bodies now solved on processes " << distribution->describe()
+            << std::endl;
     if (!contact_pairs.empty())
     {
       for (auto &pair : contact_pairs)
@@ -255,16 +253,14 @@ namespace ddcontact
       std::ofstream out(name.str());
       out << "x0,y0,x1,y1,x2,y2,x3,y3,level,von_mises,eta\n"
           << std::setprecision(8);
-      const Quadrature<2> centre =
-        body.is_simplex() ? Quadrature<2>(QGaussSimplex<2>(1)) :
-                            Quadrature<2>(QGauss<2>(1));
-      FEValues<2>      fe_values(body.get_mapping(),
-                            body.get_fe(),
-                            centre,
-                            update_gradients);
-      const FEValuesExtractors::Vector     displacement(0);
-      std::vector<SymmetricTensor<2, 2>>   strain(1);
-      const auto                          &eta = a->indicators();
+      const Quadrature<2> centre = body.is_simplex()
+                                     ? Quadrature<2>(QGaussSimplex<2>(1))
+                                     : Quadrature<2>(QGauss<2>(1));
+      FEValues<2>         fe_values(
+        body.get_mapping(), body.get_fe(), centre, update_gradients);
+      const FEValuesExtractors::Vector   displacement(0);
+      std::vector<SymmetricTensor<2, 2>> strain(1);
+      const auto                        &eta = a->indicators();
       const auto dilatation = body.reduced_dilatation(body.get_solution());
       for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       {
@@ -274,17 +270,17 @@ namespace ddcontact
         // Counter-clockwise corners (deal.II numbers those of a
         // quadrilateral lexicographically; a triangle repeats its last).
         const std::array<unsigned int, 4> corners =
-          (cell->n_vertices() == 3) ? std::array<unsigned int, 4>{{0, 1, 2, 2}} :
-                                      std::array<unsigned int, 4>{{0, 1, 3, 2}};
+          (cell->n_vertices() == 3) ? std::array<unsigned int, 4>{{0, 1, 2, 2}}
+                                    : std::array<unsigned int, 4>{{0, 1, 3, 2}};
         for (const unsigned int v : corners)
           out << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ',';
         const unsigned int c = cell->active_cell_index();
         out << cell->level() << ','
             << body.get_material().von_mises(
                  body.stress_from_strain(strain[0], dilatation, c))
-            << ',' << (eta.size() == body.get_triangulation().n_active_cells() ?
-                         eta(c) :
-                         0.)
+            << ','
+            << (eta.size() == body.get_triangulation().n_active_cells() ? eta(c)
+                                                                        : 0.)
             << '\n';
       }
     }
@@ -323,20 +319,19 @@ namespace ddcontact
     unsigned int capped = 0;
     for (const auto &a : adaptations)
       capped += a->n_capped();
-    const IterationRecord last =
-      (dd_solver && !dd_solver->history().empty()) ?
-        dd_solver->history().back() :
-        IterationRecord();
-    const auto   sections = timer.get_summary_data(TimerOutput::total_wall_time);
-    const auto   seconds  = [&](const std::string &section)
+    const IterationRecord last = (dd_solver && !dd_solver->history().empty())
+                                   ? dd_solver->history().back()
+                                   : IterationRecord();
+    const auto sections = timer.get_summary_data(TimerOutput::total_wall_time);
+    const auto seconds  = [&](const std::string &section)
     {
       const auto it = sections.find(section);
       return it == sections.end() ? 0. : it->second;
     };
     out << ',' << bem_unknowns << ',' << estimated << ',' << marked << ','
         << capped << ',' << eta_max << ',' << eta_sum << ','
-        << (norm2 > 0 ? std::sqrt(error2 / norm2) : 0.) << ','
-        << last.residual << ',' << last.increment << ',' << last.force << ','
+        << (norm2 > 0 ? std::sqrt(error2 / norm2) : 0.) << ',' << last.residual
+        << ',' << last.increment << ',' << last.force << ','
         << seconds("contact solve") + seconds("solve") << ','
         << seconds("adaptation: estimate and mark") << ','
         << seconds("adaptation: refine and transfer") << ','
@@ -410,8 +405,8 @@ namespace ddcontact
         marked = 0;
       }
       pcout << "  cycle " << n_adaptation_steps << " (DD iteration "
-            << dd_solver->history().size() << "): " << marked
-            << " cells marked" << std::endl;
+            << dd_solver->history().size() << "): " << marked << " cells marked"
+            << std::endl;
       write_statistics_row(marked, true);
       if (parameters.adaptation.write_every_mesh ||
           (marked == 0 && converged) || n_output_steps == 0)
@@ -596,9 +591,8 @@ namespace ddcontact
           e.set("stress_error_estimate", fb->global_error());
           e.set("bem_stress_norm", fb->stress_norm());
           e.set("relative_error_estimate",
-                fb->stress_norm() > 0 ?
-                  fb->global_error() / fb->stress_norm() :
-                  0.);
+                fb->stress_norm() > 0 ? fb->global_error() / fb->stress_norm()
+                                      : 0.);
           const auto &t = fb->timings();
           timings_extra["BEM setup (assembly, LU)"] += t.bem_setup;
           timings_extra["BEM solve"] += t.bem_solve;
@@ -682,10 +676,10 @@ namespace ddcontact
       {
         const auto state = dd_solver->contact_state(p);
         pcout << std::setprecision(6) << "  contact "
-              << contact_pairs[p]->name() << ": force "
-              << state.force_1.norm() << ", peak pressure "
-              << state.max_pressure << ", half-width " << state.half_width
-              << ", max penetration " << state.max_penetration << std::endl;
+              << contact_pairs[p]->name() << ": force " << state.force_1.norm()
+              << ", peak pressure " << state.max_pressure << ", half-width "
+              << state.half_width << ", max penetration "
+              << state.max_penetration << std::endl;
       }
       if (!parameters.adaptation.enabled())
         output_results(0);

@@ -16,12 +16,6 @@ namespace
 {
   const std::string al = "Domain decomposition/Augmented Lagrangian=true";
 
-  double
-  relative(const double a, const double b)
-  {
-    return std::abs(a - b) / std::abs(b);
-  }
-
   /**
    * prm/stability/uniaxial.prm with the augmented Lagrangian: on S the
    * pressure is uniform and the approach of the two blocks is C p, C =
@@ -41,21 +35,20 @@ namespace
                  const unsigned int              refinements = 0)
   {
     const double Delta = 1.366e-3, E = 2.1e5, nu = 0.3, H = 1, L = 4;
-    const double C     = (1 - nu * nu) * (H / E + H / E);
+    const double C            = (1 - nu * nu) * (H / E + H / E);
     const double al_tolerance = 1e-3; // the default "AL tolerance"
 
-    const auto   sim     = run_scene(scene_file,
-                               {"Output directory=augmented_lagrangian_output",
-                                al},
-                               overrides);
+    const auto sim =
+      run_scene(scene_file,
+                {"Output directory=augmented_lagrangian_output", al},
+                overrides);
     const auto   state   = sim->get_dd_solver().contact_state(0);
     const double p       = state.force_1.norm() / L;
     const double overlap = state.max_penetration;
     std::cout << label << ": p = " << p << ", theta = 0 closed form "
               << Delta / C << ", overlap " << overlap / Delta
-              << " of the approach, "
-              << sim->get_dd_solver().n_uzawa_updates() << " Uzawa updates"
-              << std::endl;
+              << " of the approach, " << sim->get_dd_solver().n_uzawa_updates()
+              << " Uzawa updates" << std::endl;
     if (refinements > 0)
     {
       const auto &omega2 = sim->get_bodies()[1]->get_triangulation();
@@ -128,10 +121,10 @@ main(int argc, char **argv)
       "Adaptation/Estimator=fem-bem-scaled",
       "Adaptation/Delta=0.1",
       "Adaptation/Max level=4"};
-    const auto dd = run_scene(source_dir + "/prm/paper_two_bodies.prm",
+    const auto dd       = run_scene(source_dir + "/prm/paper_two_bodies.prm",
                               scene,
                               {"Domain decomposition/Solver=dd"});
-    const auto newton = run_scene(source_dir + "/prm/paper_two_bodies.prm",
+    const auto newton   = run_scene(source_dir + "/prm/paper_two_bodies.prm",
                                   scene,
                                   {"Domain decomposition/Solver=monolithic"});
     const auto f_dd     = dd->get_dd_solver().contact_state(0);

@@ -59,18 +59,19 @@ main(int argc, char **argv)
   std::vector<double> errors;
   for (const std::string delta : {"0.1", "0.05"})
   {
-    const auto sim =
-      run(source_dir, {"Adaptation/Mode=combined", "Adaptation/Delta=" + delta});
-    const auto &tria = sim->get_bodies()[1]->get_triangulation();
-    const auto &json = sim->summary();
-    const double u2  = u2_at_point(*sim);
+    const auto sim = run(
+      source_dir, {"Adaptation/Mode=combined", "Adaptation/Delta=" + delta});
+    const auto  &tria = sim->get_bodies()[1]->get_triangulation();
+    const auto  &json = sim->summary();
+    const double u2   = u2_at_point(*sim);
     errors.push_back(std::abs(u2 - u_ref));
     std::cout << "delta = " << delta << ": " << tria.n_active_cells()
               << " cells, " << json.get("adaptation_cycles").as_number()
               << " adaptation steps, " << json.get("dd_iterations").as_number()
               << " DD iterations, u_2 = " << u2 << std::endl;
 
-    check(json.get("adaptation_cycles").as_number() > 0, "the mesh was adapted");
+    check(json.get("adaptation_cycles").as_number() > 0,
+          "the mesh was adapted");
     check(one_irregular(tria), "adapted mesh is one-irregular");
 
     // Where the refinement went: the finest cells lie at the ends of the
@@ -107,8 +108,8 @@ main(int argc, char **argv)
   // 2. The classical nested loop reaches the same mesh-converged answer
   //    class: its error is of the same size as the combined one.
   {
-    const auto sim = run(source_dir,
-                         {"Adaptation/Mode=nested", "Adaptation/Delta=0.05"});
+    const auto sim =
+      run(source_dir, {"Adaptation/Mode=nested", "Adaptation/Delta=0.05"});
     const double e = std::abs(u2_at_point(*sim) - u_ref);
     std::cout << "nested, delta = 0.05: error " << e << " (combined "
               << errors[1] << ")" << std::endl;

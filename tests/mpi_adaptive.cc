@@ -61,8 +61,8 @@ main(int argc, char **argv)
 
   // Balanced ("auto"): omega1 (2210 dofs) first on process 0; Omega_2
   // outgrows it under refinement and the two swap.
-  const auto  balanced = run(source_dir, "auto");
-  const auto &omega2   = balanced->get_bodies()[1]->get_triangulation();
+  const auto  balanced     = run(source_dir, "auto");
+  const auto &omega2       = balanced->get_bodies()[1]->get_triangulation();
   const auto &distribution = balanced->get_distribution();
   std::cout << "auto: " << omega2.n_active_cells() << " cells in Omega_2, "
             << "bodies on processes " << distribution.describe() << std::endl;

@@ -48,11 +48,6 @@ namespace
            ((1 - nu * nu) * H / E1 + (1 - nu * nu) * H / E2 + theta);
   }
 
-  double
-  relative(const double a, const double b)
-  {
-    return std::abs(a - b) / std::abs(b);
-  }
 } // namespace
 
 int

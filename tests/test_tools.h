@@ -5,6 +5,7 @@
 
 #include <ddcontact/simulation.h>
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -17,6 +18,13 @@ namespace ddcontact
   {
     /** The number of failed checks of this test program. */
     inline int failures = 0;
+
+    /** |a - b| / |b|. */
+    inline double
+    relative(const double a, const double b)
+    {
+      return std::abs(a - b) / std::abs(b);
+    }
 
     /** Print one check and count it if it failed. */
     inline void

@@ -80,6 +80,12 @@ namespace ddcontact
     void
     share(unsigned int b, Vector<double> &v) const;
 
+    /** Run @p work(b) for every body (or every body owned here) as
+     * concurrent tasks; an exception on any process is thrown on all. */
+    void
+    for_each_body(const std::function<void(unsigned int)> &work,
+                  bool                                     owned_only) const;
+
     /** Throw the first error message of any process on every process
      * (@p message empty: no error here). */
     void

@@ -293,14 +293,14 @@ namespace ddcontact
      * ancestors accounted for (none at the root).
      */
     void
-    stresses_in_box(const std::vector<Point<2>>        &x,
-                    std::vector<std::size_t>          &&points,
-                    const TargetBox                    &box,
-                    std::vector<unsigned int>         &&candidates,
-                    const TargetBox                    *parent,
+    stresses_in_box(const std::vector<Point<2>>              &x,
+                    std::vector<std::size_t>                &&points,
+                    const TargetBox                          &box,
+                    std::vector<unsigned int>               &&candidates,
+                    const TargetBox                          *parent,
                     const std::vector<SymmetricTensor<2, 2>> *parent_values,
-                    std::vector<SymmetricTensor<2, 2>> &stress,
-                    unsigned int                        depth) const;
+                    std::vector<SymmetricTensor<2, 2>>       &stress,
+                    unsigned int                              depth) const;
 
     Tensor<1, 2>
     scaled_displacement(const Point<2> &xi) const;
@@ -329,7 +329,7 @@ namespace ddcontact
     // every call of solve().
     Vector<double>     body_rhs;
     FullMatrix<double> contact_matrix;
-    bool               is_solved = false;
+    bool               is_solved                   = false;
     bool               use_far_field_interpolation = true;
 
     // Interior evaluations may run concurrently (const); the mutex sits

@@ -114,10 +114,10 @@ namespace ddcontact
     }
 
   private:
-    const ElasticBody<2>      &body;
-    const bool                 scaled;
-    BoundaryElementSolver      bem;
-    bool                       bem_is_current = false;
+    const ElasticBody<2>       &body;
+    const bool                  scaled;
+    BoundaryElementSolver       bem;
+    bool                        bem_is_current = false;
     boost::signals2::connection mesh_changed;
 
     Vector<double> eta, local_error;

@@ -218,15 +218,15 @@ namespace ddcontact
     const BodyDistribution       &distribution;
     ConditionalOStream           &pcout;
 
-    std::vector<std::vector<double>> multipliers; // Uzawa lambda per pair
+    std::vector<std::vector<double>>   multipliers; // Uzawa lambda per pair
     std::vector<std::vector<Point<2>>> multiplier_points; // where they live
-    std::vector<IterationRecord>     records;
+    std::vector<IterationRecord>       records;
     // The last step's loads sigma_n^k (per pair) and solutions u~^{k+1}.
     std::vector<std::vector<double>> last_sigma_n;
     std::vector<Vector<double>>      last_u_tilde;
-    unsigned int                     uzawa_updates    = 0; // whole run
+    unsigned int                     uzawa_updates      = 0; // whole run
     unsigned int                     mesh_uzawa_updates = 0; // this mesh
-    double                           last_penetration = 0;
+    double                           last_penetration   = 0;
     unsigned int phase_start = 0; // first record of this Uzawa phase
     double       gamma       = 0;
     Timer        timer;

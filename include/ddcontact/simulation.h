@@ -161,17 +161,17 @@ namespace ddcontact
     std::vector<std::unique_ptr<ElasticBody<2>>> bodies;
     std::unique_ptr<BodyDistribution>            distribution;
     /** Process 0 writes the files (every process holds all results). */
-    const bool writes_files;
-    std::vector<std::unique_ptr<ContactPair>>    contact_pairs;
-    std::unique_ptr<NeumannDDSolver>             dd_solver;
-    unsigned int                                 n_contact_iterations = 0;
-    unsigned int                                 n_newton_iterations  = 0;
-    std::unique_ptr<OutputWriter>                output_writer;
+    const bool                                       writes_files;
+    std::vector<std::unique_ptr<ContactPair>>        contact_pairs;
+    std::unique_ptr<NeumannDDSolver>                 dd_solver;
+    unsigned int                                     n_contact_iterations = 0;
+    unsigned int                                     n_newton_iterations  = 0;
+    std::unique_ptr<OutputWriter>                    output_writer;
     std::vector<std::unique_ptr<AdaptiveRefinement>> adaptations;
-    unsigned int                                 n_adaptation_steps = 0;
-    unsigned int                                 n_output_steps     = 0;
-    std::unique_ptr<std::ofstream>               statistics;
-    Json                                         summary_json;
+    unsigned int                                     n_adaptation_steps = 0;
+    unsigned int                                     n_output_steps     = 0;
+    std::unique_ptr<std::ofstream>                   statistics;
+    Json                                             summary_json;
   };
 } // namespace ddcontact
 
