@@ -860,9 +860,9 @@ namespace ddcontact
 
   template <typename Integrand>
   void
-  BoundaryElementSolver::integrate_boundary_solution(const Point<2> &xi,
+  BoundaryElementSolver::integrate_boundary_solution(const Point<2>    &xi,
                                                      const unsigned int e,
-                                                     Integrand &&f) const
+                                                     Integrand        &&f) const
   {
     const Element      &element = elements[e];
     const Tensor<1, 2> &u_a     = nodes[element.nodes[0]].displacement;
@@ -870,7 +870,11 @@ namespace ddcontact
     const Tensor<1, 2> &t_a = element.traction[0], &t_b = element.traction[1];
     auto integrand = [&](const Point<2> &x, const double s, const double w)
     {
-      f(x, element.normal, (1. - s) * t_a + s * t_b, (1. - s) * u_a + s * u_b, w);
+      f(x,
+        element.normal,
+        (1. - s) * t_a + s * t_b,
+        (1. - s) * u_a + s * u_b,
+        w);
     };
     integrate_element(xi, element.x_a, element.x_b, element.length, integrand);
   }
@@ -886,8 +890,7 @@ namespace ddcontact
                                     const Tensor<1, 2> &n,
                                     const Tensor<1, 2> &t,
                                     const Tensor<1, 2> &u,
-                                    const double        w)
-                                {
+                                    const double        w) {
                                   sigma +=
                                     w * kelvin.stress_integrand(xi, x, n, t, u);
                                 });
@@ -907,8 +910,7 @@ namespace ddcontact
 
   SymmetricTensor<2, 2>
   BoundaryElementSolver::scaled_stress(
-    const Point<2>                  &xi,
-    const std::vector<unsigned int> &subset) const
+    const Point<2> &xi, const std::vector<unsigned int> &subset) const
   {
     SymmetricTensor<2, 2> sigma;
     for (const unsigned int e : subset)
@@ -932,11 +934,9 @@ namespace ddcontact
     // interpolant (y lies in the parent box).
     const auto inherited = [&](const Point<2> &y)
     {
-      return parent ? cheb.interpolate(parent->lower,
-                                       parent->side,
-                                       *parent_values,
-                                       y) :
-                      SymmetricTensor<2, 2>();
+      return parent ? cheb.interpolate(
+                        parent->lower, parent->side, *parent_values, y)
+                    : SymmetricTensor<2, 2>();
     };
 
     // A box with few points: integrating its remaining elements at the
@@ -957,20 +957,21 @@ namespace ddcontact
     // (the Bernstein ellipse through the nearest singularity), i.e. to
     // about 5e-8 of the far field per level.
     const double   radius = box.side / std::sqrt(2.);
-    const Point<2> centre = box.lower + Tensor<1, 2>({0.5 * box.side, 0.5 * box.side});
+    const Point<2> centre =
+      box.lower + Tensor<1, 2>({0.5 * box.side, 0.5 * box.side});
     std::vector<unsigned int> far, near;
     for (const unsigned int e : candidates)
       (point_segment_distance(centre, elements[e].x_a, elements[e].x_b) >=
-           4. * radius ?
-         far :
-         near)
+           4. * radius
+         ? far
+         : near)
         .push_back(e);
     candidates.clear();
 
     // With no new far element the children interpolate the ancestors'
     // field directly (their points lie in the ancestor's box too).
-    std::vector<SymmetricTensor<2, 2>> values;
-    const TargetBox                   *child_parent        = parent;
+    std::vector<SymmetricTensor<2, 2>>        values;
+    const TargetBox                          *child_parent = parent;
     const std::vector<SymmetricTensor<2, 2>> *child_values = parent_values;
     if (!far.empty())
     {
@@ -979,7 +980,8 @@ namespace ddcontact
         for (unsigned int ky = 0; ky < ChebyshevRule::n; ++ky)
         {
           const Point<2> node =
-            box.lower + Tensor<1, 2>({box.side * cheb.t[kx], box.side * cheb.t[ky]});
+            box.lower +
+            Tensor<1, 2>({box.side * cheb.t[kx], box.side * cheb.t[ky]});
           values[kx * ChebyshevRule::n + ky] =
             inherited(node) + scaled_stress(node, far);
         }
@@ -1000,8 +1002,8 @@ namespace ddcontact
     {
       if (quadrant_points[q].empty())
         return;
-      const TargetBox sub{box.lower + Tensor<1, 2>({half * (q / 2), half * (q % 2)}),
-                          half};
+      const TargetBox sub{
+        box.lower + Tensor<1, 2>({half * (q / 2), half * (q % 2)}), half};
       stresses_in_box(x,
                       std::move(quadrant_points[q]),
                       sub,
@@ -1030,17 +1032,15 @@ namespace ddcontact
     // Somigliana displacement identity (BEM.md §1.3).
     Tensor<1, 2> result;
     for (unsigned int e = 0; e < elements.size(); ++e)
-      integrate_boundary_solution(xi,
-                                  e,
-                                  [&](const Point<2>     &x,
-                                      const Tensor<1, 2> &n,
-                                      const Tensor<1, 2> &t,
-                                      const Tensor<1, 2> &u,
-                                      const double        w)
-                                  {
-                                    result += w * kelvin.displacement_integrand(
-                                                    xi, x, n, t, u);
-                                  });
+      integrate_boundary_solution(
+        xi,
+        e,
+        [&](const Point<2>     &x,
+            const Tensor<1, 2> &n,
+            const Tensor<1, 2> &t,
+            const Tensor<1, 2> &u,
+            const double        w)
+        { result += w * kelvin.displacement_integrand(xi, x, n, t, u); });
     return result;
   }
 
@@ -1070,7 +1070,8 @@ namespace ddcontact
           lo[d] = std::min(lo[d], y[d]);
           hi[d] = std::max(hi[d], y[d]);
         }
-      const double side = 1.001 * std::max(hi[0] - lo[0], hi[1] - lo[1]) + 1e-12;
+      const double side =
+        1.001 * std::max(hi[0] - lo[0], hi[1] - lo[1]) + 1e-12;
       const TargetBox root{lo - Tensor<1, 2>({5e-4 * side, 5e-4 * side}), side};
       std::vector<std::size_t> all_points(points.size());
       std::iota(all_points.begin(), all_points.end(), std::size_t(0));
@@ -1129,32 +1130,62 @@ namespace ddcontact
   BoundaryElementSolver::stress_at_quadrature_points(
     const DoFHandler<2> &dof_handler,
     const Mapping<2>    &mapping,
-    const Quadrature<2> &quadrature) const
+    const Quadrature<2> &quadrature,
+    const MPI_Comm       communicator) const
   {
+    // This process's share: cells [first, last) in active cell order.
+    const unsigned int n_cells =
+      dof_handler.get_triangulation().n_active_cells();
+    // (Programs that never initialized MPI, e.g. the BEM tests, are one
+    // process.)
+    const bool         mpi = Utilities::MPI::job_supports_mpi();
+    const unsigned int n_procs =
+      mpi ? Utilities::MPI::n_mpi_processes(communicator) : 1;
+    const unsigned int rank =
+      mpi ? Utilities::MPI::this_mpi_process(communicator) : 0;
+    const unsigned int first = std::uint64_t(n_cells) * rank / n_procs;
+    const unsigned int last  = std::uint64_t(n_cells) * (rank + 1) / n_procs;
+
     FEValues<2> fe_values(
       mapping, dof_handler.get_fe(), quadrature, update_quadrature_points);
     std::vector<Point<2>> points;
-    points.reserve(dof_handler.get_triangulation().n_active_cells() *
-                   quadrature.size());
+    points.reserve((last - first) * quadrature.size());
     for (const auto &cell : dof_handler.active_cell_iterators())
-    {
-      fe_values.reinit(cell);
-      const auto &q_points = fe_values.get_quadrature_points();
-      points.insert(points.end(), q_points.begin(), q_points.end());
-    }
+      if (cell->active_cell_index() >= first &&
+          cell->active_cell_index() < last)
+      {
+        fe_values.reinit(cell);
+        const auto &q_points = fe_values.get_quadrature_points();
+        points.insert(points.end(), q_points.begin(), q_points.end());
+      }
 
     const auto stress = stress_at_points(points);
 
-    std::vector<std::vector<SymmetricTensor<2, 2>>> result(
-      dof_handler.get_triangulation().n_active_cells());
-    std::size_t p = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    // The three components of every point of every cell, zero outside
+    // this process's share; the sum over the processes fills them all.
+    const unsigned int  n_q = quadrature.size();
+    std::vector<double> values(std::size_t(n_cells) * n_q * 3, 0.);
+    for (std::size_t p = 0; p < stress.size(); ++p)
+      for (unsigned int k = 0; k < 3; ++k)
+        values[(std::size_t(first) * n_q + p) * 3 + k] =
+          stress[p][k == 2 ? 0 : k][k == 2 ? 1 : k];
+    if (n_procs > 1)
     {
-      auto &cell_stress = result[cell->active_cell_index()];
-      cell_stress.assign(stress.begin() + p,
-                         stress.begin() + p + quadrature.size());
-      p += quadrature.size();
+      std::vector<double> own = values;
+      Utilities::MPI::sum(
+        ArrayView<const double>(own), communicator, ArrayView<double>(values));
     }
+
+    std::vector<std::vector<SymmetricTensor<2, 2>>> result(
+      n_cells, std::vector<SymmetricTensor<2, 2>>(n_q));
+    for (unsigned int c = 0; c < n_cells; ++c)
+      for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const double *v    = &values[(std::size_t(c) * n_q + q) * 3];
+        result[c][q][0][0] = v[0];
+        result[c][q][1][1] = v[1];
+        result[c][q][0][1] = v[2];
+      }
     return result;
   }
 

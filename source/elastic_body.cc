@@ -87,7 +87,8 @@ namespace ddcontact
       // Under mpirun every process meshes (gmsh is deterministic) into a
       // file of its own.
       const std::string rank =
-        Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1
+        Utilities::MPI::job_supports_mpi() &&
+            Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1
           ? "." +
               std::to_string(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD))
           : "";

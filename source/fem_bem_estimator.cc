@@ -43,8 +43,13 @@ namespace ddcontact
     time.bem_solve += timer.wall_time();
 
     timer.restart();
-    const auto sigma_B = bem.stress_at_quadrature_points(
-      body.get_dof_handler(), body.get_mapping(), body.get_cell_quadrature());
+    // Under mpirun every process holds the body and its boundary solution:
+    // the interior evaluation, the estimator's main cost, is split.
+    const auto sigma_B =
+      bem.stress_at_quadrature_points(body.get_dof_handler(),
+                                      body.get_mapping(),
+                                      body.get_cell_quadrature(),
+                                      MPI_COMM_WORLD);
     time.bem_interior += timer.wall_time();
 
     // (24), (27): cell norms of sigma_B - sigma_F and the global norm of
@@ -55,7 +60,7 @@ namespace ddcontact
     const auto    &tria    = body.get_triangulation();
     Vector<double> area(tria.n_active_cells());
     local_error.reinit(tria.n_active_cells());
-    double total_area = 0, bem_norm2 = 0, error2 = 0;
+    double      total_area = 0, bem_norm2 = 0, error2 = 0;
     FEValues<2> fe_values(body.get_mapping(),
                           body.get_fe(),
                           body.get_cell_quadrature(),
@@ -84,10 +89,10 @@ namespace ddcontact
     const double reference =
       bem_stress_norm / (scaled ? std::sqrt(total_area) : total_area);
     for (unsigned int c = 0; c < eta.size(); ++c)
-      eta(c) = (reference > 0) ?
-                 local_error(c) /
-                   (scaled ? std::sqrt(area(c)) : area(c)) / reference :
-                 0.;
+      eta(c) =
+        (reference > 0)
+          ? local_error(c) / (scaled ? std::sqrt(area(c)) : area(c)) / reference
+          : 0.;
     time.compare += timer.wall_time();
   }
 } // namespace ddcontact

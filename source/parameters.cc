@@ -47,6 +47,15 @@ namespace ddcontact
       return one_line(e.what());
     }
 
+    unsigned int
+    n_world_processes()
+    {
+      // A program that never initialized MPI (a test) is one process.
+      return Utilities::MPI::job_supports_mpi()
+               ? Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
+               : 1;
+    }
+
     std::vector<std::string>
     split(const std::string &text, const char delimiter)
     {
@@ -591,7 +600,9 @@ namespace ddcontact
                       Patterns::Selection("zero|winkler"),
                       "zero, or the elastic-layer (Winkler) model: contact "
                       "pressure from the contact-free solution with springs "
-                      "E'/H in series with the penalty.");
+                      "E'/H in series with the penalty (replaced by zero "
+                      "when one DD step moves it ten times more than the "
+                      "zero guess, e.g. a plate bending onto a base).");
     prm.declare_entry("Augmented Lagrangian",
                       "false",
                       Patterns::Bool(),
@@ -740,8 +751,7 @@ namespace ddcontact
     const std::string text = prm.get("Body owners");
     if (text == "auto")
       return;
-    const unsigned int n_processes =
-      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const unsigned int n_processes = n_world_processes();
     for (const auto &item : split(text, ','))
     {
       const auto what  = "Parallel/Body owners: '" + item + "'";
@@ -879,8 +889,7 @@ namespace ddcontact
     prm.enter_subsection("Parallel");
     parallel.parse(prm, body_names);
     prm.leave_subsection();
-    if (dd.solver == "monolithic" &&
-        Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    if (dd.solver == "monolithic" && n_world_processes() > 1)
       throw InputError("Domain decomposition/Solver: monolithic runs on one "
                        "process; use Solver = dd under mpirun");
 

@@ -1,6 +1,7 @@
 #ifndef ddcontact_boundary_element_solver_h
 #define ddcontact_boundary_element_solver_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/symmetric_tensor.h>
@@ -72,11 +73,16 @@ namespace ddcontact
     stress_at_points(const std::vector<Point<2>> &points) const;
 
     /** sigma_B at the quadrature points of every active cell, indexed
-     * [active_cell_index][q], ready for the estimator (27). */
+     * [active_cell_index][q], ready for the estimator (27). With a
+     * communicator of several processes (each holding the same body and
+     * boundary solution) every process evaluates a contiguous share of the
+     * cells and all receive all values. */
     std::vector<std::vector<SymmetricTensor<2, 2>>>
-    stress_at_quadrature_points(const DoFHandler<2> &dof_handler,
-                                const Mapping<2>    &mapping,
-                                const Quadrature<2> &quadrature) const;
+    stress_at_quadrature_points(
+      const DoFHandler<2> &dof_handler,
+      const Mapping<2>    &mapping,
+      const Quadrature<2> &quadrature,
+      const MPI_Comm       communicator = MPI_COMM_SELF) const;
 
     unsigned int
     n_nodes() const;
