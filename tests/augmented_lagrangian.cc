@@ -4,7 +4,7 @@
 // and Newton agree on the adaptively refined paper scene
 #include <ddcontact/simulation.h>
 
-#include "test_tools.h"
+#include "scene_tools.h"
 
 #include <cmath>
 #include <iostream>

@@ -19,11 +19,14 @@
 
 #include <ddcontact/boundary_element_solver.h>
 
+#include "test_tools.h"
+
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 
 using namespace ddcontact;
+using namespace ddcontact::testing;
 
 namespace
 {
@@ -82,12 +85,6 @@ namespace
     const Tensor<1, 2> normal;
   };
 
-  double
-  rate(const std::vector<double> &e)
-  {
-    const unsigned int n = e.size();
-    return 0.5 * std::log2(e[n - 3] / e[n - 1]);
-  }
 } // namespace
 
 int
@@ -191,36 +188,21 @@ main()
     table.add_value("u (max rel)", u_errors.back());
     table.add_value("sigma/s0", s_errors.back());
   }
-  for (const std::string c : {"u (max rel)", "sigma/s0"})
-  {
-    table.set_scientific(c, true);
-    table.set_precision(c, 2);
-    table.evaluate_convergence_rates(c, ConvergenceTable::reduction_rate_log2);
-  }
-  table.write_text(std::cout, TableHandler::org_mode_table);
+  print_with_rates(table, {"u (max rel)", "sigma/s0"});
   std::cout << std::setprecision(6) << "sigma_xx at (0, 1.3): BEM "
             << sxx_bem / s0 << " s0, exact " << sxx_exact / s0 << " s0"
             << std::endl;
 
-  int        failures = 0;
-  const auto expect   = [&](const std::string &what, const bool ok)
-  {
-    std::cout << std::left << std::setw(70) << what << (ok ? "ok" : "FAIL")
-              << std::endl;
-    if (!ok)
-      ++failures;
-  };
   std::cout << std::fixed << std::setprecision(2)
-            << "rates (last two levels): sigma " << rate(s_errors) << ", u "
-            << rate(u_errors) << std::endl;
+            << "rates (last two levels): sigma " << rate_of_last_two(s_errors)
+            << ", u " << rate_of_last_two(u_errors) << std::endl;
   // Smooth solution, corners of the square are Neumann-Neumann: both
   // converge at 2.0 in the note (§6(c)).
-  expect("interior stress rate > 1.7", rate(s_errors) > 1.7);
-  expect("nodal displacement rate > 1.7", rate(u_errors) > 1.7);
+  check(rate_of_last_two(s_errors) > 1.7, "interior stress rate > 1.7");
+  check(rate_of_last_two(u_errors) > 1.7, "nodal displacement rate > 1.7");
   // Note at N = 128 (hole): sigma/s0 2.2e-3, u 5.9e-4; same order.
-  expect("finest sigma/s0 error < 10 x 2.2e-3", s_errors.back() < 2.2e-2);
-  expect("finest u error < 10 x 5.9e-4", u_errors.back() < 5.9e-3);
+  check(s_errors.back() < 2.2e-2, "finest sigma/s0 error < 10 x 2.2e-3");
+  check(u_errors.back() < 5.9e-3, "finest u error < 10 x 5.9e-4");
 
-  std::cout << (failures ? "FAILED" : "all checks passed") << std::endl;
-  return failures ? 1 : 0;
+  return report();
 }

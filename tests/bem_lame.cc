@@ -18,11 +18,14 @@
 
 #include <ddcontact/boundary_element_solver.h>
 
+#include "test_tools.h"
+
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 
 using namespace ddcontact;
+using namespace ddcontact::testing;
 
 namespace
 {
@@ -52,13 +55,6 @@ namespace
     return u_r * x / r;
   }
 
-  double
-  rate(const std::vector<double> &e)
-  {
-    // Mean rate over the last two refinements (h halves each time).
-    const unsigned int n = e.size();
-    return 0.5 * std::log2(e[n - 3] / e[n - 1]);
-  }
 } // namespace
 
 int
@@ -178,25 +174,12 @@ main()
     table.add_value("roller t, away from corners", t_away_errors.back());
     table.add_value("sigma r=1.5 (rel)", s_errors.back());
   }
-  for (const std::string c : {"u (max rel)",
-                               "roller t (max rel)",
-                               "roller t, away from corners",
-                               "sigma r=1.5 (rel)"})
-  {
-    table.set_scientific(c, true);
-    table.set_precision(c, 2);
-    table.evaluate_convergence_rates(c, ConvergenceTable::reduction_rate_log2);
-  }
-  table.write_text(std::cout, TableHandler::org_mode_table);
+  print_with_rates(table,
+                   {"u (max rel)",
+                    "roller t (max rel)",
+                    "roller t, away from corners",
+                    "sigma r=1.5 (rel)"});
 
-  int        failures = 0;
-  const auto expect   = [&](const std::string &what, const bool ok)
-  {
-    std::cout << std::left << std::setw(70) << what << (ok ? "ok" : "FAIL")
-              << std::endl;
-    if (!ok)
-      ++failures;
-  };
   // Rates: interior stresses O(h^2) (BEM.md §6); tractions in the max
   // norm are limited by the corners where the polygonal arcs meet the
   // rollers: there the polygon's corner angle is 90 deg + h/2 and the
@@ -206,21 +189,21 @@ main()
   // measured 1.9-2.5 for t.
   std::ostringstream r;
   r << std::fixed << std::setprecision(2) << "rates (last two levels): sigma "
-    << rate(s_errors) << ", u " << rate(u_errors) << ", t " << rate(t_errors)
-    << ", t away from corners " << rate(t_away_errors);
+    << rate_of_last_two(s_errors) << ", u " << rate_of_last_two(u_errors)
+    << ", t " << rate_of_last_two(t_errors) << ", t away from corners "
+    << rate_of_last_two(t_away_errors);
   std::cout << r.str() << std::endl;
-  expect("interior stress rate > 1.7", rate(s_errors) > 1.7);
-  expect("nodal displacement rate > 1.3", rate(u_errors) > 1.3);
-  expect("roller traction rate (max norm) > 0.8", rate(t_errors) > 0.8);
-  expect("roller traction rate away from corners > 1.7",
-         rate(t_away_errors) > 1.7);
+  check(rate_of_last_two(s_errors) > 1.7, "interior stress rate > 1.7");
+  check(rate_of_last_two(u_errors) > 1.3, "nodal displacement rate > 1.3");
+  check(rate_of_last_two(t_errors) > 0.8,
+        "roller traction rate (max norm) > 0.8");
+  check(rate_of_last_two(t_away_errors) > 1.7,
+        "roller traction rate away from corners > 1.7");
   // Finest level (N/arc = 128) against BEM.md §6(b), same order of
   // magnitude: sigma 3.7e-5, u 7.9e-5, t 1.7e-3.
-  expect("finest sigma error < 10 x 3.7e-5", s_errors.back() < 3.7e-4);
-  expect("finest u error < 10 x 7.9e-5", u_errors.back() < 7.9e-4);
-  expect("finest roller traction error < 10 x 1.7e-3",
-         t_errors.back() < 1.7e-2);
+  check(s_errors.back() < 3.7e-4, "finest sigma error < 10 x 3.7e-5");
+  check(u_errors.back() < 7.9e-4, "finest u error < 10 x 7.9e-5");
+  check(t_errors.back() < 1.7e-2, "finest roller traction error < 10 x 1.7e-3");
 
-  std::cout << (failures ? "FAILED" : "all checks passed") << std::endl;
-  return failures ? 1 : 0;
+  return report();
 }

@@ -5,7 +5,7 @@
 // need a BEM never build one
 #include <ddcontact/simulation.h>
 
-#include "test_tools.h"
+#include "scene_tools.h"
 
 #include <cmath>
 #include <iostream>

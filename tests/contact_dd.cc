@@ -3,7 +3,7 @@
 // theta, augmented Lagrangian, divergence reported
 #include <ddcontact/simulation.h>
 
-#include "test_tools.h"
+#include "scene_tools.h"
 
 #include <cmath>
 #include <iostream>

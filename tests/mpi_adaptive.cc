@@ -6,7 +6,7 @@
 // bodies on one process to 1e-10
 #include <ddcontact/simulation.h>
 
-#include "test_tools.h"
+#include "scene_tools.h"
 
 #include <cmath>
 #include <iostream>

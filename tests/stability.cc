@@ -4,7 +4,7 @@
 #include <ddcontact/neumann_dd_solver.h>
 #include <ddcontact/simulation.h>
 
-#include "test_tools.h"
+#include "scene_tools.h"
 
 #include <cmath>
 #include <iostream>

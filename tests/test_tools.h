@@ -1,13 +1,13 @@
 // Helpers shared by the test programs: a checklist that counts failures,
-// and a run of a scene file with overrides, quiet on the screen.
+// relative differences and convergence rates (scene_tools.h adds runs of
+// scene files).
 #ifndef ddcontact_tests_test_tools_h
 #define ddcontact_tests_test_tools_h
 
-#include <ddcontact/simulation.h>
+#include <deal.II/base/convergence_table.h>
 
 #include <cmath>
 #include <iostream>
-#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -43,41 +43,29 @@ namespace ddcontact
       return failures == 0 ? 0 : 1;
     }
 
-    /** Run @p scene_file with the entries @p defaults, then @p overrides
-     * (later ones win), writing no VTU; the screen output is dropped. */
-    inline std::unique_ptr<Simulation>
-    run_scene(const std::string              &scene_file,
-              std::vector<std::string>        defaults,
-              const std::vector<std::string> &overrides)
+    /** The mean convergence rate over the last two refinements of a
+     * sequence of errors on meshes whose h halves each time. */
+    inline double
+    rate_of_last_two(const std::vector<double> &errors)
     {
-      defaults.push_back("Output/Write vtu=false");
-      defaults.insert(defaults.end(), overrides.begin(), overrides.end());
-      const ParameterReader     reader(scene_file, defaults);
-      static std::ostringstream quiet;
-      quiet.str("");
-      auto simulation = std::make_unique<Simulation>(reader.scene(), quiet);
-      simulation->run();
-      return simulation;
+      const std::size_t n = errors.size();
+      return 0.5 * std::log2(errors[n - 3] / errors[n - 1]);
     }
-    /** Every face of an active cell borders at most two active cells on its
-     * other side: a refined neighbour face has two children, both leaves. */
-    inline bool
-    one_irregular(const Triangulation<2> &tria)
+
+    /** Print @p table with the @p columns in scientific notation and their
+     * log2 reduction rates. */
+    inline void
+    print_with_rates(dealii::ConvergenceTable       &table,
+                     const std::vector<std::string> &columns)
     {
-      for (const auto &cell : tria.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-        {
-          const auto face = cell->face(f);
-          if (face->has_children())
-          {
-            if (face->n_children() != 2)
-              return false;
-            for (unsigned int c = 0; c < 2; ++c)
-              if (face->child(c)->has_children())
-                return false;
-          }
-        }
-      return true;
+      for (const auto &c : columns)
+      {
+        table.set_scientific(c, true);
+        table.set_precision(c, 2);
+        table.evaluate_convergence_rates(
+          c, dealii::ConvergenceTable::reduction_rate_log2);
+      }
+      table.write_text(std::cout, dealii::TableHandler::org_mode_table);
     }
   } // namespace testing
 } // namespace ddcontact
