@@ -7,22 +7,12 @@
 #include <ddcontact/boundary_element_solver.h>
 #include <ddcontact/elastic_body.h>
 
+#include "test_tools.h"
+
 #include <iostream>
 
 using namespace ddcontact;
-
-namespace
-{
-  int failures = 0;
-
-  void
-  check(const bool ok, const std::string &what)
-  {
-    std::cout << (ok ? "  ok    " : "  FAIL  ") << what << std::endl;
-    if (!ok)
-      ++failures;
-  }
-} // namespace
+using namespace ddcontact::testing;
 
 int
 main(int argc, char **argv)
@@ -69,8 +59,9 @@ main(int argc, char **argv)
         difference = std::max(difference, (fast[c][q] - direct[c][q]).norm());
       }
     std::cout << body.get_triangulation().n_active_cells() << " cells, "
-              << bem.n_elements() << " boundary elements: max |sigma| = "
-              << largest << ", max difference " << difference << " ("
+              << bem.n_elements()
+              << " boundary elements: max |sigma| = " << largest
+              << ", max difference " << difference << " ("
               << difference / largest << " relative)" << std::endl;
     // The interpolation error bound of the admissibility condition is about
     // 5e-8 of the far field per level of the tree (see stresses_in_box);
@@ -81,6 +72,5 @@ main(int argc, char **argv)
           "interpolated far field equals the direct sum");
   }
 
-  std::cout << (failures == 0 ? "all passed" : "FAILED") << std::endl;
-  return failures == 0 ? 0 : 1;
+  return report();
 }

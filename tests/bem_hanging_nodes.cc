@@ -20,26 +20,16 @@
 
 #include <ddcontact/boundary_element_solver.h>
 
+#include "test_tools.h"
+
 #include <iomanip>
 #include <iostream>
 
 using namespace ddcontact;
+using namespace ddcontact::testing;
 
 namespace
 {
-  int failures = 0;
-
-  void
-  check(const std::string &what, const double error, const double tolerance)
-  {
-    const bool ok = error <= tolerance;
-    std::cout << "  " << std::left << std::setw(60) << what << " "
-              << std::scientific << std::setprecision(2) << error
-              << (ok ? "  ok" : "  FAIL") << std::endl;
-    if (!ok)
-      ++failures;
-  }
-
   /** A non-uniform load on the top: shear 0.3 x, pressure
    * 1 + 0.5 x - 0.2 x^2. */
   class TopLoad : public Function<2>
@@ -278,6 +268,5 @@ main()
     compare("refinement at the boundary vs extra interior refinement", a, b);
   }
 
-  std::cout << (failures ? "FAILED" : "all checks passed") << std::endl;
-  return failures ? 1 : 0;
+  return report();
 }

@@ -17,27 +17,17 @@
 #include <ddcontact/boundary_element_solver.h>
 #include <ddcontact/kelvin_solution.h>
 
+#include "test_tools.h"
+
 #include <iomanip>
 #include <iostream>
 #include <random>
 
 using namespace ddcontact;
+using namespace ddcontact::testing;
 
 namespace
 {
-  int failures = 0;
-
-  void
-  check(const std::string &what, const double error, const double tolerance)
-  {
-    const bool ok = error <= tolerance;
-    std::cout << std::left << std::setw(62) << what << " error "
-              << std::scientific << std::setprecision(2) << error
-              << (ok ? "  ok" : "  FAIL") << std::endl;
-    if (!ok)
-      ++failures;
-  }
-
   // Diagonal blocks of the assembled system against c_ij + A ln(L_in/L_out)
   // [[0, 1], [-1, 0]] at every boundary node of the mesh.
   void
@@ -250,6 +240,5 @@ main()
     check_free_terms("L-shape refined at the reentrant corner", tria);
   }
 
-  std::cout << (failures ? "FAILED" : "all checks passed") << std::endl;
-  return failures ? 1 : 0;
+  return report();
 }

@@ -23,26 +23,16 @@
 #include <ddcontact/boundary_element_solver.h>
 #include <ddcontact/parameters.h>
 
+#include "test_tools.h"
+
 #include <iomanip>
 #include <iostream>
 
 using namespace ddcontact;
+using namespace ddcontact::testing;
 
 namespace
 {
-  int failures = 0;
-
-  void
-  check(const std::string &what, const double error, const double tolerance)
-  {
-    const bool ok = error <= tolerance;
-    std::cout << "  " << std::left << std::setw(58) << what << " error "
-              << std::scientific << std::setprecision(2) << error
-              << (ok ? "  ok" : "  FAIL") << std::endl;
-    if (!ok)
-      ++failures;
-  }
-
   /** u = eps x + omega (-y, x) + c: the displacement of a uniform stress
    * state sigma0 in plane strain (BEM.md §6a) plus a rigid motion. */
   class LinearField : public Function<2>
@@ -369,6 +359,5 @@ main()
     }
   }
 
-  std::cout << (failures ? "FAILED" : "all checks passed") << std::endl;
-  return failures ? 1 : 0;
+  return report();
 }

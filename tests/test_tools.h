@@ -7,6 +7,7 @@
 #include <deal.II/base/convergence_table.h>
 
 #include <cmath>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -31,6 +32,19 @@ namespace ddcontact
     check(const bool ok, const std::string &what)
     {
       std::cout << (ok ? "  ok    " : "  FAIL  ") << what << std::endl;
+      if (!ok)
+        ++failures;
+    }
+
+    /** Print one check of an error against its tolerance and count it if
+     * the error is larger (or not a number). */
+    inline void
+    check(const std::string &what, const double error, const double tolerance)
+    {
+      const bool ok = error <= tolerance;
+      std::cout << "  " << std::left << std::setw(60) << what << " error "
+                << std::scientific << std::setprecision(2) << error
+                << std::defaultfloat << (ok ? "  ok" : "  FAIL") << std::endl;
       if (!ok)
         ++failures;
     }
