@@ -235,7 +235,16 @@ namespace ddcontact
         sigma_zero[p]  = pressure(p, zero);
         sigma_layer[p] = pressure(p, u);
       }
-      solve_bodies(sigma_zero, from_zero);
+      // Without an initial overlap the zero guess's step is the
+      // contact-free solution already at hand.
+      bool zero_is_loaded = false;
+      for (const auto &sigma : sigma_zero)
+        for (const double v : sigma)
+          zero_is_loaded = zero_is_loaded || (v != 0);
+      if (zero_is_loaded)
+        solve_bodies(sigma_zero, from_zero);
+      else
+        from_zero = u_free;
       solve_bodies(sigma_layer, from_layer);
       double step_zero = 0, step_layer = 0;
       for (unsigned int b = 0; b < bodies.size(); ++b)
