@@ -93,7 +93,12 @@ namespace ddcontact
         throw InputError(message);
       return;
     }
-    // Collective: every process calls this once at the same point.
+    // Collective: every process calls this once at the same point (after
+    // every set of body solves). The messages are gathered only when some
+    // process failed: the usual case costs one integer reduction.
+    if (Utilities::MPI::max(static_cast<int>(!message.empty()),
+                            communicator) == 0)
+      return;
     for (const auto &m : Utilities::MPI::all_gather(communicator, message))
       if (!m.empty())
         throw InputError(m);
