@@ -1,5 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
+#include <deal.II/distributed/tria_base.h>
+
 #include <deal.II/grid/grid_refinement.h>
 
 #include <deal.II/numerics/error_estimator.h>
@@ -98,6 +100,11 @@ namespace ddcontact
                                      {},
                                      u_fem,
                                      kelly);
+    // On a partitioned mesh every process estimates only its own cells;
+    // each cell has one owner, so the sum is the whole estimate.
+    if (const auto *tria = dynamic_cast<const parallel::TriangulationBase<2> *>(
+          &body.get_triangulation()))
+      Utilities::MPI::sum(kelly, tria->get_communicator(), kelly);
     eta = kelly;
   }
 

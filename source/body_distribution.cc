@@ -18,15 +18,78 @@ namespace ddcontact
     , communicator(communicator)
     , this_process(Utilities::MPI::this_mpi_process(communicator))
     , n_procs(Utilities::MPI::n_mpi_processes(communicator))
-    , owner(bodies.size(), 0)
+    , process_groups(parameters.process_groups(n_procs, bodies.size()))
+    , groups(bodies.size(), std::vector<unsigned int>{0})
   {
   }
+
+  namespace
+  {
+    /** The ranks first, ..., first + n - 1. */
+    std::vector<unsigned int>
+    ranks(const unsigned int first, const unsigned int n)
+    {
+      std::vector<unsigned int> r(n);
+      std::iota(r.begin(), r.end(), first);
+      return r;
+    }
+  } // namespace
 
   bool
   BodyDistribution::distribute()
   {
-    const std::vector<unsigned int> previous = owner;
-    if (parameters.body_owners.empty())
+    const auto previous = groups;
+    if (process_groups)
+    {
+      // Chosen once: a body's mesh is partitioned between its group, and
+      // refinement repartitions within the group.
+      if (groups_chosen)
+        return false;
+      groups_chosen = true;
+      if (parameters.mode == "all")
+        for (auto &g : groups)
+          g = ranks(0, n_procs);
+      else if (parameters.mode == "list")
+        for (unsigned int b = 0; b < bodies.size(); ++b)
+          groups[b] = parameters.body_groups.at(bodies[b]->name());
+      else
+      {
+        // One process per body, then each further process to the body
+        // with the most dofs per process; consecutive ranks per body.
+        std::vector<unsigned int> size(bodies.size(), 1);
+        for (unsigned int p = bodies.size(); p < n_procs; ++p)
+        {
+          unsigned int best = 0;
+          for (unsigned int b = 1; b < bodies.size(); ++b)
+            if (static_cast<double>(bodies[b]->n_dofs()) / size[b] >
+                static_cast<double>(bodies[best]->n_dofs()) / size[best])
+              best = b;
+          ++size[best];
+        }
+        unsigned int first = 0;
+        for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          groups[b] = ranks(first, size[b]);
+          first += size[b];
+        }
+      }
+      // Collective over the world, in the same body order everywhere.
+      // The bodies keep (and free) their groups' communicators.
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        MPI_Comm  group;
+        const int ierr = MPI_Comm_split(communicator,
+                                        owns(b) ? 0 : MPI_UNDEFINED,
+                                        this_process,
+                                        &group);
+        AssertThrowMPI(ierr);
+        bodies[b]->set_process_group(groups[b], group);
+      }
+    }
+    else if (parameters.mode == "list")
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        groups[b] = parameters.body_groups.at(bodies[b]->name());
+    else
     {
       // Largest body first onto the least loaded process: the time of one
       // DD iteration is that of the slowest process. Ties go to the lower
@@ -42,18 +105,15 @@ namespace ddcontact
       {
         const unsigned int p =
           std::min_element(load.begin(), load.end()) - load.begin();
-        owner[b] = p;
+        groups[b] = {p};
         load[p] += bodies[b]->n_dofs();
       }
     }
-    else
-      for (unsigned int b = 0; b < bodies.size(); ++b)
-        owner[b] = parameters.body_owners.at(bodies[b]->name());
     // Assembly and factorization of the bodies are independent.
     for_each_body([&](const unsigned int b)
                   { bodies[b]->set_solved_here(owns(b)); },
                   false);
-    return owner != previous;
+    return groups != previous;
   }
 
   void
@@ -61,22 +121,33 @@ namespace ddcontact
                                   const bool owned_only) const
   {
     std::vector<std::string> errors(bodies.size());
-    Threads::TaskGroup<void> tasks;
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      if (!owned_only || owns(b))
-        tasks += Threads::new_task(
-          [&, b]()
-          {
-            try
-            {
-              work(b);
-            }
-            catch (const std::exception &e)
-            {
-              errors[b] = e.what();
-            }
-          });
-    tasks.join_all();
+    const auto               run = [&](const unsigned int b)
+    {
+      try
+      {
+        work(b);
+      }
+      catch (const std::exception &e)
+      {
+        errors[b] = e.what();
+      }
+    };
+    if (process_groups)
+    {
+      // The work may be collective over a body's group or the world:
+      // every process takes the bodies in the same order, one at a time.
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        if (!owned_only || owns(b))
+          run(b);
+    }
+    else
+    {
+      Threads::TaskGroup<void> tasks;
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        if (!owned_only || owns(b))
+          tasks += Threads::new_task([&, b]() { run(b); });
+      tasks.join_all();
+    }
     std::string first_error;
     for (const auto &e : errors)
       if (first_error.empty())
@@ -127,7 +198,7 @@ namespace ddcontact
     if (!owns(b))
       v.reinit(bodies[b]->n_dofs());
     AssertDimension(v.size(), bodies[b]->n_dofs());
-    Utilities::MPI::broadcast(v.data(), v.size(), owner[b], communicator);
+    Utilities::MPI::broadcast(v.data(), v.size(), owner_of(b), communicator);
   }
 
   void
@@ -143,7 +214,11 @@ namespace ddcontact
   {
     std::ostringstream s;
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      s << (b ? ", " : "") << bodies[b]->name() << ": " << owner[b];
+    {
+      s << (b ? ", " : "") << bodies[b]->name() << ": " << groups[b].front();
+      if (groups[b].size() > 1)
+        s << '-' << groups[b].back();
+    }
     return s.str();
   }
 } // namespace ddcontact

@@ -1,3 +1,5 @@
+#include <deal.II/distributed/tria_base.h>
+
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
@@ -79,8 +81,10 @@ namespace ddcontact
     }
   } // namespace
 
-  OutputWriter::OutputWriter(const std::string &directory)
+  OutputWriter::OutputWriter(const std::string &directory,
+                             const MPI_Comm     communicator)
     : directory(directory)
+    , communicator(communicator)
   {
   }
 
@@ -99,11 +103,22 @@ namespace ddcontact
 
     std::vector<std::string> pieces;
     const std::string        group = step_name("bodies", step) + ".pvtu";
+    const unsigned int       this_process =
+      Utilities::MPI::this_mpi_process(communicator);
+    const bool root = this_process == 0;
 
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
       const auto &body    = *bodies[b];
       const auto  n_cells = body.get_triangulation().n_active_cells();
+
+      // A partitioned mesh is written by every process, each its own
+      // cells (DataOut's default selection); a serial one by process 0.
+      const auto *partitioned =
+        dynamic_cast<const parallel::TriangulationBase<2> *>(
+          &body.get_triangulation());
+      if (!partitioned && !root)
+        continue;
 
       DataOut<2> data_out;
       data_out.attach_dof_handler(body.get_dof_handler());
@@ -121,14 +136,20 @@ namespace ddcontact
       StressPostprocessor<2> stress(body, dilatation);
       data_out.add_data_vector(*solutions[b], stress);
 
-      Vector<double> body_id(n_cells), level(n_cells);
+      Vector<double> body_id(n_cells), level(n_cells), process(n_cells);
       for (const auto &cell : body.get_triangulation().active_cell_iterators())
       {
         body_id(cell->active_cell_index()) = b;
         level(cell->active_cell_index())   = cell->level();
+        // The process that assembles the cell (0 on a serial mesh).
+        process(cell->active_cell_index()) =
+          cell->subdomain_id() == numbers::invalid_subdomain_id ?
+            0. :
+            cell->subdomain_id();
       }
       data_out.add_data_vector(body_id, "body_id", DataOut<2>::type_cell_data);
       data_out.add_data_vector(level, "level", DataOut<2>::type_cell_data);
+      data_out.add_data_vector(process, "process", DataOut<2>::type_cell_data);
 
       std::vector<Vector<double>> extra;
       extra.reserve(extra_fields.size());
@@ -146,18 +167,36 @@ namespace ddcontact
 
       data_out.build_patches(body.get_mapping(), body.get_fe().degree);
 
-      const std::string piece = step_name(body.name(), step) + ".vtu";
-      std::ofstream     out(directory + "/" + piece);
-      data_out.write_vtu(out);
-      pieces.push_back(piece);
-
+      const std::string name = step_name(body.name(), step);
+      if (partitioned)
+      {
+        const auto owned = Utilities::MPI::all_gather(
+          communicator, partitioned->n_locally_owned_active_cells());
+        for (unsigned int p = 0; p < owned.size(); ++p)
+          if (owned[p] > 0)
+            pieces.push_back(name + "." + std::to_string(p) + ".vtu");
+        if (owned[this_process] > 0)
+        {
+          std::ofstream out(directory + "/" + name + "." +
+                            std::to_string(this_process) + ".vtu");
+          data_out.write_vtu(out);
+        }
+      }
+      else
+      {
+        pieces.push_back(name + ".vtu");
+        std::ofstream out(directory + "/" + pieces.back());
+        data_out.write_vtu(out);
+      }
       // Group the bodies of this step; every piece has the same fields.
-      if (b + 1 == bodies.size())
+      if (root && b + 1 == bodies.size())
       {
         std::ofstream out(directory + "/" + group);
         data_out.write_pvtu_record(out, pieces);
       }
     }
+    if (!root)
+      return;
 
     records.emplace_back(time, group);
     std::ofstream pvd(directory + "/solution.pvd");

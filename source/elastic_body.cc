@@ -1,5 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
+#include <deal.II/distributed/shared_tria.h>
+
 #include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/fe/fe_q.h>
@@ -16,6 +18,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <deal.II/meshworker/copy_data.h>
 #include <deal.II/meshworker/mesh_loop.h>
@@ -33,17 +36,36 @@ namespace ddcontact
 {
   template <int dim>
   ElasticBody<dim>::ElasticBody(const BodyParameters &parameters,
-                                const Constants      &constants)
+                                const Constants      &constants,
+                                const MPI_Comm        mesh_communicator)
     : parameters(parameters)
     , material(parameters.material)
     , boundary_conditions(make_boundary_conditions(parameters, constants))
+    , group_communicator(MPI_COMM_NULL)
+  {
     // Mesh smoothing keeps adapted quadrilateral meshes graded; deal.II 9.4
     // refines triangles only globally and without smoothing.
-    , triangulation(std::make_unique<Triangulation<dim>>(
-        parameters.cell_type == "triangle"
-          ? Triangulation<dim>::none
-          : Triangulation<dim>::limit_level_difference_at_vertices))
-  {
+    const auto smoothing =
+      parameters.cell_type == "triangle"
+        ? Triangulation<dim>::none
+        : Triangulation<dim>::limit_level_difference_at_vertices;
+    if (Utilities::MPI::n_mpi_processes(mesh_communicator) > 1)
+    {
+      // Every process keeps every cell (no artificial cells); the
+      // subdomain ids say which process of the group assembles a cell.
+      auto shared = std::make_unique<parallel::shared::Triangulation<dim>>(
+        mesh_communicator,
+        smoothing,
+        false,
+        parallel::shared::Triangulation<dim>::partition_custom_signal);
+      shared->signals.create.connect([this]() { partition_between_group(); });
+      shared->signals.post_refinement.connect(
+        [this]() { partition_between_group(); });
+      triangulation = std::move(shared);
+    }
+    else
+      triangulation = std::make_unique<Triangulation<dim>>(smoothing);
+
     static_assert(dim == 2, "ddcontact bodies are two-dimensional");
     const unsigned int p = parameters.degree;
     if (is_simplex())
@@ -228,6 +250,100 @@ namespace ddcontact
   }
 
   template <int dim>
+  ElasticBody<dim>::~ElasticBody()
+  {
+    // The distributed solver objects use the group's communicator: release
+    // them (collectively, every process destroys the bodies in the same
+    // order) before the communicator.
+    distributed_direct.reset();
+    amg_preconditioner.clear();
+    distributed_matrix.clear();
+    distributed_load.clear();
+    if (group_communicator != MPI_COMM_NULL)
+      MPI_Comm_free(&group_communicator);
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::partition_between_group()
+  {
+    const unsigned int k = process_group.size();
+    if (k == 1)
+      for (const auto &cell : triangulation->active_cell_iterators())
+        cell->set_subdomain_id(process_group[0]);
+    else
+    {
+      if (is_simplex())
+      {
+        // Equal shares of the active cells in their order.
+        const unsigned int n = triangulation->n_active_cells();
+        for (const auto &cell : triangulation->active_cell_iterators())
+          cell->set_subdomain_id(
+            static_cast<std::size_t>(cell->active_cell_index()) * k / n);
+      }
+      else
+        GridTools::partition_triangulation_zorder(k, *triangulation);
+      for (const auto &cell : triangulation->active_cell_iterators())
+        cell->set_subdomain_id(process_group[cell->subdomain_id()]);
+    }
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::set_process_group(const std::vector<unsigned int> &ranks,
+                                      const MPI_Comm group)
+  {
+    AssertThrow(!ranks.empty(), ExcInternalError());
+    AssertThrow(
+      ranks.size() == 1 ||
+        dynamic_cast<parallel::shared::Triangulation<dim> *>(
+          triangulation.get()) != nullptr,
+      ExcMessage("a body on several processes needs a partitioned mesh"));
+    const bool changed = ranks != process_group;
+    process_group      = ranks;
+    if (group_communicator != MPI_COMM_NULL)
+      MPI_Comm_free(&group_communicator);
+    group_communicator = group;
+    if (changed &&
+        dynamic_cast<parallel::shared::Triangulation<dim> *>(
+          triangulation.get()) != nullptr)
+    {
+      // No cell is flagged: the refinement step only fires the
+      // post-refinement signal, which partitions between the new group.
+      triangulation->execute_coarsening_and_refinement();
+      setup_system();
+    }
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::gather_in_group(const TrilinosWrappers::MPI::Vector &owned,
+                                    Vector<double> &whole) const
+  {
+    // A partitioned DoFHandler numbers the dofs subdomain by subdomain:
+    // every process of the group owns one contiguous range.
+    const IndexSet &mine = dof_handler.locally_owned_dofs();
+    AssertThrow(mine.is_contiguous(), ExcInternalError());
+    const int first = mine.n_elements() ? *mine.begin() : 0;
+    const int count = mine.n_elements();
+    const auto firsts = Utilities::MPI::all_gather(group_communicator, first);
+    const auto counts = Utilities::MPI::all_gather(group_communicator, count);
+    std::vector<double> local(count);
+    for (int i = 0; i < count; ++i)
+      local[i] = owned[first + i];
+    whole.reinit(dof_handler.n_dofs());
+    const int ierr = MPI_Allgatherv(local.data(),
+                                    count,
+                                    MPI_DOUBLE,
+                                    whole.data(),
+                                    counts.data(),
+                                    firsts.data(),
+                                    MPI_DOUBLE,
+                                    group_communicator);
+    AssertThrowMPI(ierr);
+  }
+
+  template <int dim>
   void
   ElasticBody<dim>::setup_system()
   {
@@ -243,21 +359,63 @@ namespace ddcontact
         *mapping, dof_handler, id, *d.displacement, constraints, d.mask);
     constraints.close();
 
-    DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    sparsity_pattern.copy_from(dsp);
-    stiffness_matrix.reinit(sparsity_pattern);
     load_vector.reinit(dof_handler.n_dofs());
     solution.reinit(dof_handler.n_dofs());
+    if (solved_here)
+      setup_matrix();
     is_factorized = false;
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::setup_matrix()
+  {
+    // The old factorization and preconditioner refer to the old matrix
+    // (and MUMPS frees its factors collectively): release them first.
+    distributed_direct.reset();
+    amg_preconditioner.clear();
+    if (is_solved_distributed())
+    {
+      // The rows of this process's dofs, with the columns its cells
+      // couple them to; entries of other rows are sent to their owners.
+      const IndexSet &owned = dof_handler.locally_owned_dofs();
+      IndexSet        relevant;
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+      TrilinosWrappers::SparsityPattern sp(owned,
+                                           owned,
+                                           relevant,
+                                           group_communicator);
+      DoFTools::make_sparsity_pattern(dof_handler, sp, constraints, false);
+      sp.compress();
+      distributed_matrix.reinit(sp);
+      distributed_load.reinit(owned, group_communicator);
+      stiffness_matrix.clear();
+      sparsity_pattern.reinit(0, 0, 0);
+    }
+    else
+    {
+      DynamicSparsityPattern dsp(dof_handler.n_dofs());
+      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+      sparsity_pattern.copy_from(dsp);
+      stiffness_matrix.reinit(sparsity_pattern);
+    }
   }
 
   template <int dim>
   void
   ElasticBody<dim>::assemble_system()
   {
-    stiffness_matrix = 0;
-    load_vector      = 0;
+    const bool distributed = is_solved_distributed();
+    if (distributed)
+    {
+      distributed_matrix = 0;
+      distributed_load   = 0;
+    }
+    else
+    {
+      stiffness_matrix = 0;
+      load_vector      = 0;
+    }
 
     using Iterator = typename DoFHandler<dim>::active_cell_iterator;
     const FEValuesExtractors::Vector displacement(0);
@@ -334,13 +492,21 @@ namespace ddcontact
         }
     };
 
+    // On a partitioned mesh mesh_loop visits only this process's cells.
     const auto copier = [&](const MeshWorker::CopyData<1, 1, 1> &copy)
     {
-      constraints.distribute_local_to_global(copy.matrices[0],
-                                             copy.vectors[0],
-                                             copy.local_dof_indices[0],
-                                             stiffness_matrix,
-                                             load_vector);
+      if (distributed)
+        constraints.distribute_local_to_global(copy.matrices[0],
+                                               copy.vectors[0],
+                                               copy.local_dof_indices[0],
+                                               distributed_matrix,
+                                               distributed_load);
+      else
+        constraints.distribute_local_to_global(copy.matrices[0],
+                                               copy.vectors[0],
+                                               copy.local_dof_indices[0],
+                                               stiffness_matrix,
+                                               load_vector);
     };
 
     MeshWorker::ScratchData<dim> scratch(
@@ -361,8 +527,23 @@ namespace ddcontact
                             MeshWorker::assemble_boundary_faces,
                           boundary_worker);
 
-    if (!reduced_volumetric_integration())
-      return;
+    if (reduced_volumetric_integration())
+      assemble_reduced_volumetric_term(copier);
+    if (distributed)
+    {
+      distributed_matrix.compress(VectorOperation::add);
+      distributed_load.compress(VectorOperation::add);
+    }
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::assemble_reduced_volumetric_term(
+    const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier)
+  {
+    using Iterator = typename DoFHandler<dim>::active_cell_iterator;
+    const FEValuesExtractors::Vector displacement(0);
+    const double                     lambda = material.lambda();
 
     // Selective reduced integration: lambda div u div v on one Gauss point
     // per cell. For nu -> 1/2 (lambda/mu -> infinity) the full rule forces
@@ -395,6 +576,7 @@ namespace ddcontact
                                                     *volumetric_quadrature,
                                                     update_gradients |
                                                       update_JxW_values);
+    MeshWorker::CopyData<1, 1, 1> copy;
     MeshWorker::mesh_loop(dof_handler.active_cell_iterators(),
                           volumetric_worker,
                           copier,
@@ -427,11 +609,23 @@ namespace ddcontact
   void
   ElasticBody<dim>::factorize()
   {
+    const bool distributed = is_solved_distributed();
     if (parameters.solver == "direct")
-      direct_solver.initialize(stiffness_matrix);
+    {
+      if (distributed)
+      {
+        // MUMPS through Amesos: factorized once per mesh over the group.
+        distributed_direct = std::make_unique<TrilinosWrappers::SolverDirect>(
+          direct_control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                         "Amesos_Mumps"));
+        distributed_direct->initialize(distributed_matrix);
+      }
+      else
+        direct_solver.initialize(stiffness_matrix);
+    }
     else
     {
-      trilinos_matrix.reinit(stiffness_matrix);
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
       data.elliptic              = true;
       data.higher_order_elements = (parameters.degree > 1);
@@ -439,7 +633,13 @@ namespace ddcontact
       data.aggregation_threshold = 0.02;
       DoFTools::extract_constant_modes(
         dof_handler, ComponentMask(dim, true), data.constant_modes);
-      amg_preconditioner.initialize(trilinos_matrix, data);
+      if (distributed)
+        amg_preconditioner.initialize(distributed_matrix, data);
+      else
+      {
+        trilinos_matrix.reinit(stiffness_matrix);
+        amg_preconditioner.initialize(trilinos_matrix, data);
+      }
     }
     is_factorized = true;
   }
@@ -484,6 +684,7 @@ namespace ddcontact
     solved_here = here;
     if (solved_here && !is_factorized)
     {
+      setup_matrix();
       assemble_system();
       factorize();
     }
@@ -493,6 +694,8 @@ namespace ddcontact
       // public clear().)
       trilinos_matrix.clear();
       amg_preconditioner.clear();
+      distributed_direct.reset();
+      distributed_matrix.clear();
       is_factorized = false;
     }
   }
@@ -502,31 +705,67 @@ namespace ddcontact
   ElasticBody<dim>::solve(const Vector<double> &load, Vector<double> &u) const
   {
     Assert(is_factorized, ExcMessage("factorize() must be called first"));
-    Vector<double> rhs(load_vector);
     if (load.size() > 0)
+      AssertDimension(load.size(), dof_handler.n_dofs());
+    const auto no_convergence = [&](const SolverControl::NoConvergence &e)
     {
-      AssertDimension(load.size(), rhs.size());
-      rhs += load;
+      return InputError(parameters.section() +
+                        "/Solver: cg-amg did not converge in " +
+                        std::to_string(e.last_step) + " iterations (residual " +
+                        std::to_string(e.last_residual) +
+                        "); raise Max iterations or use Type = direct");
+    };
+    if (is_solved_distributed())
+    {
+      // Every process of the group holds the whole load: it takes the
+      // rows it owns, and the group gathers the whole displacement.
+      TrilinosWrappers::MPI::Vector rhs(distributed_load), x;
+      x.reinit(distributed_load);
+      if (load.size() > 0)
+      {
+        for (const auto i : dof_handler.locally_owned_dofs())
+          rhs[i] = distributed_load[i] + load[i];
+        rhs.compress(VectorOperation::insert);
+      }
+      if (parameters.solver == "direct")
+        distributed_direct->solve(x, rhs);
+      else
+      {
+        SolverControl control(parameters.solver_max_iterations,
+                              parameters.solver_tolerance * rhs.l2_norm());
+        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+        try
+        {
+          cg.solve(distributed_matrix, x, rhs, amg_preconditioner);
+        }
+        catch (const SolverControl::NoConvergence &e)
+        {
+          throw no_convergence(e);
+        }
+      }
+      gather_in_group(x, u);
     }
-    u.reinit(dof_handler.n_dofs());
-    if (parameters.solver == "direct")
-      direct_solver.vmult(u, rhs);
     else
     {
-      SolverControl            control(parameters.solver_max_iterations,
-                            parameters.solver_tolerance * rhs.l2_norm());
-      SolverCG<Vector<double>> cg(control);
-      try
+      Vector<double> rhs(load_vector);
+      if (load.size() > 0)
+        rhs += load;
+      u.reinit(dof_handler.n_dofs());
+      if (parameters.solver == "direct")
+        direct_solver.vmult(u, rhs);
+      else
       {
-        cg.solve(trilinos_matrix, u, rhs, amg_preconditioner);
-      }
-      catch (const SolverControl::NoConvergence &e)
-      {
-        throw InputError(
-          parameters.section() + "/Solver: cg-amg did not converge in " +
-          std::to_string(e.last_step) + " iterations (residual " +
-          std::to_string(e.last_residual) +
-          "); raise Max iterations or use Type = direct");
+        SolverControl            control(parameters.solver_max_iterations,
+                              parameters.solver_tolerance * rhs.l2_norm());
+        SolverCG<Vector<double>> cg(control);
+        try
+        {
+          cg.solve(trilinos_matrix, u, rhs, amg_preconditioner);
+        }
+        catch (const SolverControl::NoConvergence &e)
+        {
+          throw no_convergence(e);
+        }
       }
     }
     constraints.distribute(u);

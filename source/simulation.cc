@@ -45,18 +45,31 @@ namespace ddcontact
   {
     TimerOutput::Scope t(timer, "setup");
     bodies.clear();
+    // With process groups every mesh is partitioned over the world (and
+    // its refinement is collective); otherwise each body is serial.
+    const bool partitioned = parameters.parallel.process_groups(
+      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
+      parameters.bodies.size());
     for (const auto &body_parameters : parameters.bodies)
     {
-      bodies.push_back(std::make_unique<ElasticBody<2>>(body_parameters,
-                                                        parameters.constants));
-      bodies.back()->make_mesh(parameters.output_directory);
+      bodies.push_back(std::make_unique<ElasticBody<2>>(
+        body_parameters,
+        parameters.constants,
+        partitioned ? MPI_COMM_WORLD : MPI_COMM_SELF));
       // Assembled and factorized only where it is solved, below.
       bodies.back()->set_solved_here(false);
+      bodies.back()->make_mesh(parameters.output_directory);
     }
-    Threads::TaskGroup<void> tasks;
-    for (auto &body : bodies)
-      tasks += Threads::new_task([&body]() { body->setup_system(); });
-    tasks.join_all();
+    if (partitioned)
+      for (auto &body : bodies)
+        body->setup_system();
+    else
+    {
+      Threads::TaskGroup<void> tasks;
+      for (auto &body : bodies)
+        tasks += Threads::new_task([&body]() { body->setup_system(); });
+      tasks.join_all();
+    }
 
     distribution = std::make_unique<BodyDistribution>(
       raw_pointers(bodies), parameters.parallel, MPI_COMM_WORLD);
@@ -215,11 +228,19 @@ namespace ddcontact
   Simulation::refine_and_transfer()
   {
     TimerOutput::Scope t(timer, "adaptation: refine and transfer");
-    // The adapted bodies' meshes are independent: refine them at once.
-    Threads::TaskGroup<void> tasks;
-    for (auto &a : adaptations)
-      tasks += Threads::new_task([&a]() { a->refine(); });
-    tasks.join_all();
+    // The adapted bodies' meshes are independent: refine them at once
+    // (one after the other on partitioned meshes, whose refinement is
+    // collective).
+    if (distribution->uses_process_groups())
+      for (auto &a : adaptations)
+        a->refine();
+    else
+    {
+      Threads::TaskGroup<void> tasks;
+      for (auto &a : adaptations)
+        tasks += Threads::new_task([&a]() { a->refine(); });
+      tasks.join_all();
+    }
     ++n_adaptation_steps;
     // Refinement changed the bodies' sizes: balance them again.
     if (distribution->distribute())
@@ -463,14 +484,16 @@ namespace ddcontact
   void
   Simulation::output_results(const unsigned int step)
   {
-    if (!writes_files)
+    // Partitioned meshes are written in pieces by all processes.
+    if (!writes_files && !distribution->uses_process_groups())
       return;
     if (!parameters.write_vtu)
       return;
     TimerOutput::Scope t(timer, "output");
     if (!output_writer)
-      output_writer =
-        std::make_unique<OutputWriter>(parameters.output_directory);
+      output_writer = std::make_unique<OutputWriter>(
+        parameters.output_directory,
+        distribution->uses_process_groups() ? MPI_COMM_WORLD : MPI_COMM_SELF);
     std::vector<const ElasticBody<2> *> body_pointers;
     std::vector<const Vector<double> *> solutions;
     std::vector<OutputWriter::CellData> cell_data(bodies.size());

@@ -3,7 +3,11 @@
 // refines to the same one-irregular mesh, the bodies are balanced again
 // after refinement, the BEM interior stresses split over the processes
 // equal the whole evaluation, and the result equals the one with both
-// bodies on one process to 1e-10
+// bodies on one process to 1e-10; then with every body partitioned between
+// both processes (Body owners = all): the adapted mesh is repartitioned
+// into two equal halves, and the result equals the serial one
+#include <deal.II/distributed/shared_tria.h>
+
 #include <ddcontact/simulation.h>
 
 #include "scene_tools.h"
@@ -122,6 +126,35 @@ main(int argc, char **argv)
           one->get_dd_solver().history().size(),
         "the same number of DD iterations");
   check(std::abs(f_a - f_b) <= 1e-10 * f_b, "the same contact force to 1e-10");
+
+  // Every body on both processes: the meshes are partitioned and each
+  // refinement repartitions them (z-order halves, siblings kept together).
+  {
+    const auto  all = run(source_dir, "all");
+    const auto &tria =
+      dynamic_cast<const parallel::shared::Triangulation<2> &>(
+        all->get_bodies()[1]->get_triangulation());
+    const auto owned =
+      Utilities::MPI::all_gather(world, tria.n_locally_owned_active_cells());
+    std::cout << "all: " << tria.n_active_cells() << " cells in Omega_2, "
+              << owned[0] << " on process 0 and " << owned[1]
+              << " on process 1" << std::endl;
+    check(one_irregular(tria), "the partitioned adapted mesh is one-irregular");
+    check(tria.n_active_cells() ==
+            balanced->get_bodies()[1]->get_triangulation().n_active_cells(),
+          "the partitioned run refines to the same mesh");
+    check(owned[0] + owned[1] == tria.n_active_cells() &&
+            std::max(owned[0], owned[1]) - std::min(owned[0], owned[1]) <= 4,
+          "after refinement each process owns half of Omega_2's cells");
+    const auto f_all = all->get_dd_solver().contact_state(0).force_1.norm();
+    std::cout << "force " << f_all << " (partitioned); DD iterations "
+              << all->get_dd_solver().history().size() << std::endl;
+    check(all->get_dd_solver().history().size() ==
+            one->get_dd_solver().history().size(),
+          "partitioned: the same number of DD iterations");
+    check(std::abs(f_all - f_b) <= 1e-10 * f_b,
+          "partitioned: the same contact force to 1e-10");
+  }
 
   const int failed = Utilities::MPI::max(failures, world);
   failures         = failed;

@@ -1,16 +1,20 @@
-"""Runs a scene with 1 and with 2 MPI processes and compares summary.json.
+"""Runs a scene with 1 and with N MPI processes and compares summary.json.
 
-The bodies are solved on different processes and their solutions
-broadcast (BodyDistribution); everything else runs identically on every
-process, so the two runs must agree: the same iteration counts, meshes and
-Uzawa updates, and every number equal to 1e-10 relative (numbers inside a
-list relative to the list's largest entry, so that a zero force component
-compares at the scale of the force). Also checks that the 2-process run
-really solved the bodies on two processes, and, with --expect-repartition,
-that it moved a body to another process after refinement.
+The bodies are solved on different processes (or process groups, with a
+distributed direct solver) and their solutions broadcast
+(BodyDistribution); everything else runs identically on every process, so
+the two runs must agree: the same iteration counts, meshes and Uzawa
+updates, and every number equal to 1e-10 relative (numbers inside a list
+relative to the list's largest entry, so that a zero force component
+compares at the scale of the force). Also checks that the N-process run
+really solved the bodies on all N processes, and, with
+--expect-repartition, that it moved a body to another process after
+refinement.
 
-usage: mpi_compare.py MPIRUN EXE SCENE OUTDIR [--expect-repartition]
+usage: mpi_compare.py MPIRUN EXE SCENE OUTDIR [--np N] [--expect-repartition]
                       [--set Section/Entry=value ...]
+                      [--parallel-set Section/Entry=value ...]
+(--parallel-set applies to the N-process run only.)
 """
 import json
 import os
@@ -20,6 +24,10 @@ import sys
 TOLERANCE = 1e-10
 # Not results: where the bodies were solved, and how long it took.
 IGNORED = {"mpi_processes", "body_owners", "wall_time_s", "timings"}
+# Changes of the iterate divided by its norm: already relative to the
+# solution, so compared to 1e-10 absolutely (a different direct solver's
+# round-off, 1e-16 of |u|, is 1e-10 of a residual of 1e-6).
+RELATIVE_TO_SOLUTION = {"dd_residual", "dd_increment"}
 
 
 def run(mpirun, exe, scene, out, n, overrides):
@@ -49,7 +57,8 @@ def compare(a, b, path, scale, failures):
             if key not in a or key not in b:
                 failures.append(f"{path}/{key}: only in one run")
                 continue
-            compare(a[key], b[key], f"{path}/{key}", None, failures)
+            compare(a[key], b[key], f"{path}/{key}",
+                    1.0 if key in RELATIVE_TO_SOLUTION else None, failures)
     elif isinstance(a, list):
         if len(a) != len(b):
             failures.append(f"{path}: lengths {len(a)} and {len(b)}")
@@ -75,16 +84,25 @@ def main():
     rest = sys.argv[5:]
     expect_repartition = "--expect-repartition" in rest
     overrides = [rest[i + 1] for i, r in enumerate(rest) if r == "--set"]
+    parallel = [rest[i + 1] for i, r in enumerate(rest)
+                if r == "--parallel-set"]
+    n = int(rest[rest.index("--np") + 1]) if "--np" in rest else 2
     one, _ = run(mpirun, exe, scene, out + "_np1", 1, overrides)
-    two, log = run(mpirun, exe, scene, out + "_np2", 2, overrides)
+    two, log = run(mpirun, exe, scene, out + f"_np{n}", n,
+                   overrides + parallel)
 
     failures = []
     compare(one, two, "", None, failures)
-    owners = {int(item.split(":")[1]) for item in two["body_owners"].split(",")}
-    print(f"  1 process: {one.get('dd_iterations')} DD iterations; 2 processes: "
-          f"{two.get('dd_iterations')}, bodies on processes {two['body_owners']}")
-    if two["mpi_processes"] != 2 or (len(two["bodies"]) > 1 and owners != {0, 1}):
-        failures.append(f"the 2-process run did not use both processes "
+    # "omega1: 0-1, omega2: 2": every process must solve some body.
+    owners = set()
+    for item in two["body_owners"].split(","):
+        first, _, last = item.split(":")[1].strip().partition("-")
+        owners |= set(range(int(first), int(last or first) + 1))
+    print(f"  1 process: {one.get('dd_iterations')} DD iterations; {n} "
+          f"processes: {two.get('dd_iterations')}, bodies on processes "
+          f"{two['body_owners']}")
+    if two["mpi_processes"] != n or owners != set(range(n)):
+        failures.append(f"the {n}-process run did not use all processes "
                         f"({two['body_owners']})")
     if expect_repartition and "bodies now solved on processes" not in log:
         failures.append("no body moved to another process after refinement")

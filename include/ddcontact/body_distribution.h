@@ -8,6 +8,7 @@
 #include <ddcontact/elastic_body.h>
 #include <ddcontact/parameters.h>
 
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -18,22 +19,26 @@ namespace ddcontact
 
   /**
    * The DD's natural parallelism over MPI processes: the body problems of
-   * one iteration (20) are independent, so each body is solved on the
-   * process that owns it, and the solutions are then broadcast, so that
-   * every process holds every body's iterate. Everything else (contact
-   * pressures (20), relaxation (21), Anderson, output decisions) is cheap
-   * and runs identically on every process on identical data, which keeps
-   * the iteration bit-for-bit equal to the serial one for any number of
-   * processes.
+   * one iteration (20) are independent, so each body is solved by its own
+   * processes, and the solutions are then broadcast, so that every process
+   * holds every body's iterate. Everything else (contact pressures (20),
+   * relaxation (21), Anderson, estimation and refinement) is cheap and runs
+   * identically on every process on identical data, which keeps the
+   * iteration equal to the serial one for any number of processes.
    *
-   * Only the owner assembles and factorizes a body; the others keep its
-   * mesh, DoFHandler and constraints (for the contact maps and the
-   * transfer after refinement). Owners are chosen by the parameter
-   * "Parallel/Body owners": "auto" balances the bodies' dofs over the
-   * processes (largest body first onto the least loaded process, again
-   * after every refinement), or an explicit list "omega1: 0, omega2: 1".
-   * With more processes than bodies the extra processes only follow along:
-   * splitting one body over a process group needs distributed meshes.
+   * Two layouts, chosen by "Parallel/Body owners"
+   * (ParallelParameters::process_groups):
+   * - one process per body (at most as many processes as bodies): the
+   *   owner assembles, factorizes and solves the whole body; "auto"
+   *   balances the dofs (largest body first onto the least loaded
+   *   process) and balances again after every refinement;
+   * - process groups: every body on a group of processes (disjoint groups
+   *   sized in proportion to the dofs with "auto", all processes with
+   *   "all", or a list). The body's mesh is partitioned between its group
+   *   (ElasticBody::set_process_group), which assembles a distributed
+   *   matrix and solves it together; the groups are fixed for the run and
+   *   the partition within a group follows every refinement. Bodies whose
+   *   groups overlap are solved one after the other.
    * With one process everything is owned locally and nothing is sent.
    */
   class BodyDistribution
@@ -43,23 +48,46 @@ namespace ddcontact
                      const ParallelParameters            &parameters,
                      const MPI_Comm                       communicator);
 
-    /** Choose the owners from the bodies' current sizes and tell every
-     * body whether it is solved here (the newly owned ones assemble and
-     * factorize, concurrently). Returns true if an owner changed. */
+    BodyDistribution(const BodyDistribution &) = delete;
+    BodyDistribution &
+    operator=(const BodyDistribution &) = delete;
+
+    /** Choose the owners (or, the first time, the process groups) from
+     * the bodies' current sizes and tell every body whether it is solved
+     * here (the newly owned ones assemble and factorize). Returns true if
+     * an owner changed. */
     bool
     distribute();
 
-    /** Whether body @p b is solved on this process. */
+    /** Whether body @p b is solved on this process (alone or with the
+     * rest of its group). */
     bool
     owns(unsigned int b) const
     {
-      return owner[b] == this_process;
+      return std::find(groups[b].begin(), groups[b].end(), this_process) !=
+             groups[b].end();
     }
 
+    /** The process that sends body @p b's solution to the others: the
+     * first of its group. */
     unsigned int
     owner_of(unsigned int b) const
     {
-      return owner[b];
+      return groups[b][0];
+    }
+
+    /** The processes that solve body @p b. */
+    const std::vector<unsigned int> &
+    group_of(unsigned int b) const
+    {
+      return groups[b];
+    }
+
+    /** Whether the meshes are partitioned over process groups. */
+    bool
+    uses_process_groups() const
+    {
+      return process_groups;
     }
 
     /**
@@ -119,7 +147,8 @@ namespace ddcontact
       return seconds_exchanging;
     }
 
-    /** "omega1: 0, omega2: 1": the owners, for the screen and summary. */
+    /** "omega1: 0, omega2: 1-2": the processes of every body, for the
+     * screen and summary. */
     std::string
     describe() const;
 
@@ -128,7 +157,9 @@ namespace ddcontact
     const ParallelParameters      parameters;
     const MPI_Comm                communicator;
     const unsigned int            this_process, n_procs;
-    std::vector<unsigned int>     owner;
+    const bool                    process_groups;
+    std::vector<std::vector<unsigned int>> groups;
+    bool                                   groups_chosen = false;
     mutable double                seconds_solving    = 0;
     mutable double                seconds_exchanging = 0;
   };

@@ -23,6 +23,13 @@ namespace ddcontact
    * sigma_22), the von Mises stress, the body id and the refinement level;
    * further cell fields (e.g. an error estimator) may be added per body;
    * bodies that lack a field get zeros so that all pieces match.
+   *
+   * A body whose mesh is partitioned between processes (process groups,
+   * ElasticBody) is written in pieces: every process writes the cells it
+   * owns (one VTU file per process, "omega1-0003.1.vtu"), and the step's
+   * .pvtu lists all pieces. write_step() is then collective over
+   * @p communicator; process 0 writes the whole serial bodies, the .pvtu
+   * and the .pvd.
    */
   class OutputWriter
   {
@@ -30,7 +37,8 @@ namespace ddcontact
     /** Cell fields by name, each of size n_active_cells. */
     using CellData = std::map<std::string, Vector<double>>;
 
-    explicit OutputWriter(const std::string &directory);
+    OutputWriter(const std::string &directory,
+                 const MPI_Comm     communicator = MPI_COMM_SELF);
 
     /** Write step @p step (labelled @p time in ParaView) for all bodies;
      * @p solutions[b] is the displacement of bodies[b]. */
@@ -43,6 +51,7 @@ namespace ddcontact
 
   private:
     const std::string                           directory;
+    const MPI_Comm                              communicator;
     std::vector<std::pair<double, std::string>> records;
   };
 } // namespace ddcontact

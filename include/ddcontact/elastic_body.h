@@ -16,13 +16,18 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
+
+#include <deal.II/meshworker/copy_data.h>
 
 #include <ddcontact/boundary_conditions.h>
 #include <ddcontact/material.h>
 #include <ddcontact/parameters.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -51,12 +56,32 @@ namespace ddcontact
    * factorized once per mesh (factorize()) and solve() only does the
    * forward and backward substitution. solve() is const and may be called
    * for several bodies at once from different threads.
+   *
+   * Under mpirun with process groups (ParallelParameters::process_groups)
+   * the triangulation is a parallel::shared::Triangulation on
+   * MPI_COMM_WORLD: every process keeps the whole mesh and the whole
+   * iterate (the contact maps, the BEM and the refinement stay replicated),
+   * but the cells are partitioned between the processes of the body's
+   * group, which assemble their cells into a Trilinos matrix distributed
+   * over the group and solve it together (Amesos MUMPS or CG with AMG).
+   * The partition follows every refinement (repartitioning in the
+   * post-refinement signal).
    */
   template <int dim>
   class ElasticBody
   {
   public:
-    ElasticBody(const BodyParameters &parameters, const Constants &constants);
+    /** @p mesh_communicator: MPI_COMM_SELF for a serial triangulation, or
+     * MPI_COMM_WORLD for a mesh partitioned over process groups. */
+    ElasticBody(const BodyParameters &parameters,
+                const Constants      &constants,
+                const MPI_Comm        mesh_communicator = MPI_COMM_SELF);
+
+    ~ElasticBody();
+
+    ElasticBody(const ElasticBody &) = delete;
+    ElasticBody &
+    operator=(const ElasticBody &) = delete;
 
     /**
      * Create the initial mesh (rectangle or Gmsh file; a .geo file is
@@ -108,6 +133,31 @@ namespace ddcontact
     is_solved_here() const
     {
       return solved_here;
+    }
+
+    /**
+     * The processes (world ranks, ascending) that solve the body, and
+     * their communicator (MPI_COMM_NULL on the other processes; the body
+     * takes it over and frees it). Needs a
+     * mesh on MPI_COMM_WORLD; repartitions the cells between the group
+     * (collective over the world) and distributes the dofs again. Call
+     * set_solved_here() after.
+     */
+    void
+    set_process_group(const std::vector<unsigned int> &ranks,
+                      const MPI_Comm                   group_communicator);
+
+    const std::vector<unsigned int> &
+    get_process_group() const
+    {
+      return process_group;
+    }
+
+    /** Whether this process solves the body together with others. */
+    bool
+    is_solved_distributed() const
+    {
+      return solved_here && process_group.size() > 1;
     }
 
     /**
@@ -291,6 +341,30 @@ namespace ddcontact
     void
     check_boundary_ids() const;
 
+    /** The lambda div u div v term of a_a (11) on one Gauss point per cell
+     * (see reduced_volumetric_integration()), through @p copier. */
+    void
+    assemble_reduced_volumetric_term(
+      const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)>
+        &copier);
+
+    /** The sparsity pattern and matrix (serial, or distributed over the
+     * process group), where the body is solved. */
+    void
+    setup_matrix();
+
+    /** Subdomain ids of the cells: the process group's ranks, the cells
+     * split in z-order (quadrilaterals) or in the order of the active
+     * cells (triangles). Called after every change of the mesh. */
+    void
+    partition_between_group();
+
+    /** The solution vector of the distributed solve, whole on every
+     * process of the group. */
+    void
+    gather_in_group(const TrilinosWrappers::MPI::Vector &owned,
+                    Vector<double>                      &whole) const;
+
     const BodyParameters          parameters;
     const Material                material;
     const BoundaryConditions<dim> boundary_conditions;
@@ -317,6 +391,16 @@ namespace ddcontact
     TrilinosWrappers::PreconditionAMG amg_preconditioner;
     bool                              is_factorized = false;
     bool                              solved_here   = true;
+
+    // Process groups: the world ranks solving this body, their
+    // communicator, and the matrix, load and direct solver distributed over
+    // them.
+    std::vector<unsigned int>                              process_group{0};
+    MPI_Comm                                               group_communicator;
+    TrilinosWrappers::SparseMatrix                         distributed_matrix;
+    TrilinosWrappers::MPI::Vector                          distributed_load;
+    mutable SolverControl                                  direct_control;
+    mutable std::unique_ptr<TrilinosWrappers::SolverDirect> distributed_direct;
   };
 } // namespace ddcontact
 

@@ -183,13 +183,26 @@ namespace ddcontact
 
   /**
    * Runs on several MPI processes, in the subsection "Parallel": which
-   * process solves which body (BodyDistribution).
+   * processes solve which body (BodyDistribution).
    */
   struct ParallelParameters
   {
-    /** Empty: balance the bodies' dofs over the processes ("auto");
-     * otherwise the process of every body. */
-    std::map<std::string, unsigned int> body_owners;
+    /** "auto", "all" or "list" (the groups below). */
+    std::string mode = "auto";
+    /** With mode "list": the processes (world ranks, ascending) that solve
+     * every body. */
+    std::map<std::string, std::vector<unsigned int>> body_groups;
+
+    /**
+     * Whether the bodies' meshes are partitioned over process groups
+     * (parallel::shared::Triangulation on MPI_COMM_WORLD, a distributed
+     * matrix and solver on every group with more than one process): with
+     * "all", with a list in which a body has several processes, and with
+     * "auto" when there are more processes than bodies. Otherwise every
+     * body is solved whole on one process (or there is one process).
+     */
+    bool
+    process_groups(unsigned int n_processes, unsigned int n_bodies) const;
 
     static void
     declare(ParameterHandler &prm);
