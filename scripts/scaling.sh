@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Study (not a test): strong scaling of the DD from 1 to 2 MPI processes on
 # the paper's scene refined to about 1e6 unknowns (both bodies at Initial
-# refinement 6: 2 x 526850 dofs), fixed meshes, Anderson. Three runs: one
+# refinement 6: 2 x 526850 dofs), fixed meshes, Anderson. Four runs: one
 # process with one thread (the bodies solved one after the other), one
 # process with two threads (the bodies solved by concurrent tasks), two
-# processes with one thread each (each body on its own process). Writes
+# processes with one thread each (each body on its own process), and two
+# processes with every body partitioned between both (Body owners = all:
+# MUMPS over the two processes, the bodies one after the other). Writes
 # doc/scaling.csv; doc/scaling.md discusses it. Usage:
 #   scripts/scaling.sh [REFINEMENT]     (default 6; 5 gives 2.6e5 unknowns)
 set -euo pipefail
@@ -22,15 +24,16 @@ common=(prm/paper_two_bodies.prm
         --set "Body omega1/Mesh/Initial refinement=$r"
         --set "Body omega2/Mesh/Initial refinement=$r"
         --set "Domain decomposition/Relaxation=anderson")
-run() { # name, processes, threads
+run() { # name, processes, threads, further --set options
   echo "== $1"
   DEAL_II_NUM_THREADS=$3 mpirun --oversubscribe -np "$2" "$exe" "${common[@]}" \
-    --output "$out/$1" > "$out/$1.log"
+    "${@:4}" --output "$out/$1" > "$out/$1.log"
   grep -E "contact S:|wall time" "$out/$1.log" | sed 's/^/   /'
 }
 run np1_threads1 1 1
 run np1_threads2 1 2
 run np2_threads1 2 1
+run np2_all 2 1 --set "Parallel/Body owners=all"
 python3 - "$out" doc/scaling.csv <<'PY'
 import json, sys
 out, csv = sys.argv[1], sys.argv[2]
@@ -41,7 +44,7 @@ with open(csv, "w") as f:
             + ",".join(p.replace(" ", "_") + "_s" for p in phases)
             + ",contact_solve_per_iteration_s\n")
     for name, n, t in [("np1_threads1", 1, 1), ("np1_threads2", 1, 2),
-                       ("np2_threads1", 2, 1)]:
+                       ("np2_threads1", 2, 1), ("np2_all", 2, 1)]:
         s = json.load(open(f"{out}/{name}/summary.json"))
         dofs = sum(b["dofs"] for b in s["bodies"])
         tm = s["timings"]

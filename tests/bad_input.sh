@@ -44,6 +44,8 @@ case_ "combined with the monolithic solver" "Adaptation/Mode" "$src/prm/paper_tw
 case_ "body owner names no body" "Parallel/Body owners" "$base" --set "Parallel/Body owners=lower: 0, nobody: 0"
 case_ "body owner on a missing process" "does not exist" "$base" --set "Parallel/Body owners=lower: 0, upper: 3"
 case_ "body without owner" "'upper' is not listed" "$base" --set "Parallel/Body owners=lower: 0"
+case_ "body owner range backwards" "is not a process or a range" "$base" --set "Parallel/Body owners=lower: 0, upper: 0-0-0"
+case_ "body owner range beyond the run" "does not exist" "$base" --set "Parallel/Body owners=lower: 0-1, upper: 0"
 
 echo "$((19 - failures)) passed, $failures failed"
 [ $failures -eq 0 ]
