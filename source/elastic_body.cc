@@ -320,19 +320,15 @@ namespace ddcontact
   ElasticBody<dim>::gather_in_group(const TrilinosWrappers::MPI::Vector &owned,
                                     Vector<double> &whole) const
   {
-    // A partitioned DoFHandler numbers the dofs subdomain by subdomain:
-    // every process of the group owns one contiguous range.
+    // Every process of the group owns one contiguous range (setup_matrix).
     const IndexSet &mine = dof_handler.locally_owned_dofs();
-    AssertThrow(mine.is_contiguous(), ExcInternalError());
     const int first = mine.n_elements() ? *mine.begin() : 0;
     const int count = mine.n_elements();
     const auto firsts = Utilities::MPI::all_gather(group_communicator, first);
     const auto counts = Utilities::MPI::all_gather(group_communicator, count);
-    std::vector<double> local(count);
-    for (int i = 0; i < count; ++i)
-      local[i] = owned[first + i];
     whole.reinit(dof_handler.n_dofs());
-    const int ierr = MPI_Allgatherv(local.data(),
+    // (The owned values are contiguous in the Trilinos vector.)
+    const int ierr = MPI_Allgatherv(owned.begin(),
                                     count,
                                     MPI_DOUBLE,
                                     whole.data(),
@@ -379,7 +375,10 @@ namespace ddcontact
       // The rows of this process's dofs, with the columns its cells
       // couple them to; entries of other rows are sent to their owners.
       const IndexSet &owned = dof_handler.locally_owned_dofs();
-      IndexSet        relevant;
+      // A partitioned DoFHandler numbers the dofs subdomain by subdomain;
+      // solve() and gather_in_group() rely on one range per process.
+      AssertThrow(owned.is_contiguous(), ExcInternalError());
+      IndexSet relevant;
       DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
       TrilinosWrappers::SparsityPattern sp(owned,
                                            owned,
@@ -723,9 +722,15 @@ namespace ddcontact
       x.reinit(distributed_load);
       if (load.size() > 0)
       {
-        for (const auto i : dof_handler.locally_owned_dofs())
-          rhs[i] = distributed_load[i] + load[i];
-        rhs.compress(VectorOperation::insert);
+        // The owned entries are one contiguous range (see
+        // gather_in_group()), stored in order.
+        const IndexSet &owned = dof_handler.locally_owned_dofs();
+        if (owned.n_elements() > 0)
+          std::transform(rhs.begin(),
+                         rhs.end(),
+                         load.begin() + *owned.begin(),
+                         rhs.begin(),
+                         std::plus<double>());
       }
       if (parameters.solver == "direct")
         distributed_direct->solve(x, rhs);
