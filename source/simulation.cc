@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <functional>
 #include <sstream>
 
 namespace ddcontact
@@ -28,6 +29,27 @@ namespace ddcontact
       for (const auto &o : owners)
         pointers.push_back(o.get());
       return pointers;
+    }
+
+    /** Call @p work on every object: as concurrent tasks, or one after
+     * the other (in the same order on every process) when the work is
+     * collective over MPI, as on partitioned meshes. */
+    template <typename T>
+    void
+    for_each_object(const std::vector<std::unique_ptr<T>> &objects,
+                    const bool                             in_turn,
+                    const std::function<void(T &)>        &work)
+    {
+      if (in_turn)
+      {
+        for (const auto &o : objects)
+          work(*o);
+        return;
+      }
+      Threads::TaskGroup<void> tasks;
+      for (const auto &o : objects)
+        tasks += Threads::new_task([&work, &o]() { work(*o); });
+      tasks.join_all();
     }
   } // namespace
 
@@ -60,16 +82,10 @@ namespace ddcontact
       bodies.back()->set_solved_here(false);
       bodies.back()->make_mesh(parameters.output_directory);
     }
-    if (partitioned)
-      for (auto &body : bodies)
-        body->setup_system();
-    else
-    {
-      Threads::TaskGroup<void> tasks;
-      for (auto &body : bodies)
-        tasks += Threads::new_task([&body]() { body->setup_system(); });
-      tasks.join_all();
-    }
+    for_each_object<ElasticBody<2>>(bodies,
+                                    partitioned,
+                                    [](ElasticBody<2> &body)
+                                    { body.setup_system(); });
 
     distribution = std::make_unique<BodyDistribution>(
       raw_pointers(bodies), parameters.parallel, MPI_COMM_WORLD);
@@ -231,16 +247,10 @@ namespace ddcontact
     // The adapted bodies' meshes are independent: refine them at once
     // (one after the other on partitioned meshes, whose refinement is
     // collective).
-    if (distribution->uses_process_groups())
-      for (auto &a : adaptations)
-        a->refine();
-    else
-    {
-      Threads::TaskGroup<void> tasks;
-      for (auto &a : adaptations)
-        tasks += Threads::new_task([&a]() { a->refine(); });
-      tasks.join_all();
-    }
+    for_each_object<AdaptiveRefinement>(adaptations,
+                                        distribution->uses_process_groups(),
+                                        [](AdaptiveRefinement &a)
+                                        { a.refine(); });
     ++n_adaptation_steps;
     // Refinement changed the bodies' sizes: balance them again.
     if (distribution->distribute())
