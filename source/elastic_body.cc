@@ -31,6 +31,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 
 namespace ddcontact
 {
@@ -294,19 +295,18 @@ namespace ddcontact
                                       const MPI_Comm group)
   {
     AssertThrow(!ranks.empty(), ExcInternalError());
-    AssertThrow(
-      ranks.size() == 1 ||
-        dynamic_cast<parallel::shared::Triangulation<dim> *>(
-          triangulation.get()) != nullptr,
-      ExcMessage("a body on several processes needs a partitioned mesh"));
+    const bool partitioned =
+      dynamic_cast<parallel::shared::Triangulation<dim> *>(
+        triangulation.get()) != nullptr;
+    AssertThrow(ranks.size() == 1 || partitioned,
+                ExcMessage(
+                  "a body on several processes needs a partitioned mesh"));
     const bool changed = ranks != process_group;
     process_group      = ranks;
     if (group_communicator != MPI_COMM_NULL)
       MPI_Comm_free(&group_communicator);
     group_communicator = group;
-    if (changed &&
-        dynamic_cast<parallel::shared::Triangulation<dim> *>(
-          triangulation.get()) != nullptr)
+    if (changed && partitioned)
     {
       // No cell is flagged: the refinement step only fires the
       // post-refinement signal, which partitions between the new group.
@@ -320,20 +320,15 @@ namespace ddcontact
   ElasticBody<dim>::gather_in_group(const TrilinosWrappers::MPI::Vector &owned,
                                     Vector<double> &whole) const
   {
-    // Every process of the group owns one contiguous range (setup_matrix).
-    const IndexSet &mine = dof_handler.locally_owned_dofs();
-    const int first = mine.n_elements() ? *mine.begin() : 0;
-    const int count = mine.n_elements();
-    const auto firsts = Utilities::MPI::all_gather(group_communicator, first);
-    const auto counts = Utilities::MPI::all_gather(group_communicator, count);
+    // Every process of the group owns one contiguous range, stored in
+    // order in the Trilinos vector (group_ranges, from setup_matrix()).
     whole.reinit(dof_handler.n_dofs());
-    // (The owned values are contiguous in the Trilinos vector.)
     const int ierr = MPI_Allgatherv(owned.begin(),
-                                    count,
+                                    owned.locally_owned_size(),
                                     MPI_DOUBLE,
                                     whole.data(),
-                                    counts.data(),
-                                    firsts.data(),
+                                    group_range_sizes.data(),
+                                    group_range_starts.data(),
                                     MPI_DOUBLE,
                                     group_communicator);
     AssertThrowMPI(ierr);
@@ -378,6 +373,11 @@ namespace ddcontact
       // A partitioned DoFHandler numbers the dofs subdomain by subdomain;
       // solve() and gather_in_group() rely on one range per process.
       AssertThrow(owned.is_contiguous(), ExcInternalError());
+      group_range_starts = Utilities::MPI::all_gather(
+        group_communicator,
+        static_cast<int>(owned.n_elements() ? *owned.begin() : 0));
+      group_range_sizes = Utilities::MPI::all_gather(
+        group_communicator, static_cast<int>(owned.n_elements()));
       IndexSet relevant;
       DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
       TrilinosWrappers::SparsityPattern sp(owned,
@@ -706,13 +706,26 @@ namespace ddcontact
     Assert(is_factorized, ExcMessage("factorize() must be called first"));
     if (load.size() > 0)
       AssertDimension(load.size(), dof_handler.n_dofs());
-    const auto no_convergence = [&](const SolverControl::NoConvergence &e)
+    // CG with the AMG preconditioner, on the serial or the distributed
+    // matrix and vectors.
+    const auto solve_cg = [&](const auto &matrix, auto &x, const auto &rhs)
     {
-      return InputError(parameters.section() +
-                        "/Solver: cg-amg did not converge in " +
-                        std::to_string(e.last_step) + " iterations (residual " +
-                        std::to_string(e.last_residual) +
-                        "); raise Max iterations or use Type = direct");
+      SolverControl control(parameters.solver_max_iterations,
+                            parameters.solver_tolerance * rhs.l2_norm());
+      SolverCG<std::remove_const_t<std::remove_reference_t<decltype(rhs)>>>
+        cg(control);
+      try
+      {
+        cg.solve(matrix, x, rhs, amg_preconditioner);
+      }
+      catch (const SolverControl::NoConvergence &e)
+      {
+        throw InputError(parameters.section() +
+                         "/Solver: cg-amg did not converge in " +
+                         std::to_string(e.last_step) + " iterations (residual " +
+                         std::to_string(e.last_residual) +
+                         "); raise Max iterations or use Type = direct");
+      }
     };
     if (is_solved_distributed())
     {
@@ -735,19 +748,7 @@ namespace ddcontact
       if (parameters.solver == "direct")
         distributed_direct->solve(x, rhs);
       else
-      {
-        SolverControl control(parameters.solver_max_iterations,
-                              parameters.solver_tolerance * rhs.l2_norm());
-        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-        try
-        {
-          cg.solve(distributed_matrix, x, rhs, amg_preconditioner);
-        }
-        catch (const SolverControl::NoConvergence &e)
-        {
-          throw no_convergence(e);
-        }
-      }
+        solve_cg(distributed_matrix, x, rhs);
       gather_in_group(x, u);
     }
     else
@@ -759,19 +760,7 @@ namespace ddcontact
       if (parameters.solver == "direct")
         direct_solver.vmult(u, rhs);
       else
-      {
-        SolverControl            control(parameters.solver_max_iterations,
-                              parameters.solver_tolerance * rhs.l2_norm());
-        SolverCG<Vector<double>> cg(control);
-        try
-        {
-          cg.solve(trilinos_matrix, u, rhs, amg_preconditioner);
-        }
-        catch (const SolverControl::NoConvergence &e)
-        {
-          throw no_convergence(e);
-        }
-      }
+        solve_cg(trilinos_matrix, u, rhs);
     }
     constraints.distribute(u);
     for (const double v : u)

@@ -76,13 +76,6 @@ namespace ddcontact
       return groups[b][0];
     }
 
-    /** The processes that solve body @p b. */
-    const std::vector<unsigned int> &
-    group_of(unsigned int b) const
-    {
-      return groups[b];
-    }
-
     /** Whether the meshes are partitioned over process groups. */
     bool
     uses_process_groups() const

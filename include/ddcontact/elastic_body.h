@@ -147,12 +147,6 @@ namespace ddcontact
     set_process_group(const std::vector<unsigned int> &ranks,
                       const MPI_Comm                   group_communicator);
 
-    const std::vector<unsigned int> &
-    get_process_group() const
-    {
-      return process_group;
-    }
-
     /** Whether this process solves the body together with others. */
     bool
     is_solved_distributed() const
@@ -401,6 +395,9 @@ namespace ddcontact
     TrilinosWrappers::MPI::Vector                          distributed_load;
     mutable SolverControl                                  direct_control;
     mutable std::unique_ptr<TrilinosWrappers::SolverDirect> distributed_direct;
+    // First dof and number of dofs of every process of the group (its
+    // ranges are contiguous), for gathering the solution.
+    std::vector<int> group_range_starts, group_range_sizes;
   };
 } // namespace ddcontact
 
