@@ -11,7 +11,11 @@ really solved the bodies on all N processes, and, with
 --expect-repartition, that it moved a body to another process after
 refinement.
 
-usage: mpi_compare.py MPIRUN EXE SCENE OUTDIR [--np N] [--expect-repartition]
+With an iterative body solver, --tolerance T replaces 1e-10 by the
+solver's accuracy.
+
+usage: mpi_compare.py MPIRUN EXE SCENE OUTDIR [--np N] [--tolerance T]
+                      [--expect-repartition]
                       [--set Section/Entry=value ...]
                       [--parallel-set Section/Entry=value ...]
 (--parallel-set applies to the N-process run only.)
@@ -87,6 +91,9 @@ def main():
     parallel = [rest[i + 1] for i, r in enumerate(rest)
                 if r == "--parallel-set"]
     n = int(rest[rest.index("--np") + 1]) if "--np" in rest else 2
+    if "--tolerance" in rest:
+        global TOLERANCE
+        TOLERANCE = float(rest[rest.index("--tolerance") + 1])
     one, _ = run(mpirun, exe, scene, out + "_np1", 1, overrides)
     two, log = run(mpirun, exe, scene, out + f"_np{n}", n,
                    overrides + parallel)
