@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/mpi_remote_point_evaluation.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -5,72 +7,212 @@
 #include <ddcontact/contact_pair.h>
 
 #include <algorithm>
+#include <array>
 
 namespace ddcontact
 {
   namespace
   {
-    /** A boundary face of a zone, as a straight segment (linear mapping). */
+    /** A boundary face of a zone, as a straight segment (linear mapping),
+     * with its cell where this process holds it (invalid when the face
+     * was gathered from another process of a distributed mesh). */
     struct ZoneFace
     {
       DoFHandler<2>::active_cell_iterator cell;
-      unsigned int                        face_no;
       Point<2>                            a, b;
       Tensor<1, 2>                        normal; // outward
     };
 
+    /** The faces with boundary id @p id: all of them on every process
+     * (on a distributed mesh each process finds those of its own cells and
+     * the lists are gathered, in the order of the processes). */
     std::vector<ZoneFace>
     zone_faces(const ElasticBody<2> &body, const types::boundary_id id)
     {
       std::vector<ZoneFace> faces;
       for (const auto &cell : body.get_dof_handler().active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == id)
-          {
-            ZoneFace           z{cell,
-                       f,
-                       cell->face(f)->vertex(0),
-                       cell->face(f)->vertex(1),
-                       Tensor<1, 2>()};
-            const Tensor<1, 2> t = z.b - z.a;
-            Tensor<1, 2>       n({t[1], -t[0]});
-            n /= n.norm();
-            if (n * (cell->face(f)->center() - cell->center()) < 0)
-              n *= -1.;
-            z.normal = n;
-            faces.push_back(z);
-          }
+        if (body.computes(cell))
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == id)
+            {
+              ZoneFace z{cell,
+                         cell->face(f)->vertex(0),
+                         cell->face(f)->vertex(1),
+                         Tensor<1, 2>()};
+              const Tensor<1, 2> t = z.b - z.a;
+              Tensor<1, 2>       n({t[1], -t[0]});
+              n /= n.norm();
+              if (n * (cell->face(f)->center() - cell->center()) < 0)
+                n *= -1.;
+              z.normal = n;
+              faces.push_back(z);
+            }
+      if (!body.is_mesh_distributed())
+        return faces;
+
+      std::vector<std::array<double, 6>> mine;
+      for (const auto &z : faces)
+        mine.push_back({{z.a[0], z.a[1], z.b[0], z.b[1], z.normal[0],
+                         z.normal[1]}});
+      faces.clear();
+      for (const auto &from_process : Utilities::MPI::all_gather(
+             body.get_triangulation().get_communicator(), mine))
+        for (const auto &g : from_process)
+          faces.push_back({DoFHandler<2>::active_cell_iterator(),
+                           Point<2>(g[0], g[1]),
+                           Point<2>(g[2], g[3]),
+                           Tensor<1, 2>({g[4], g[5]})});
       return faces;
     }
 
-    /** Values of the normal component of every shape function at points
-     * of one cell given in real coordinates. */
-    std::vector<std::vector<double>>
-    normal_shape_values(const ElasticBody<2>                      &body,
-                        const DoFHandler<2>::active_cell_iterator &cell,
-                        const std::vector<Point<2>>               &points,
-                        const Tensor<1, 2>                        &normal)
+    /**
+     * What the cell holding a point knows of it: the cell's dofs, the
+     * value of every shape function at the point (of its one nonzero
+     * component), and the body's constraint of every dof (n_entries[i] < 0:
+     * none; otherwise that many entries of masters/weights, none for a
+     * Dirichlet dof). Sent between processes by RemotePointEvaluation.
+     */
+    struct PointShape
     {
-      std::vector<Point<2>> unit_points(points.size());
-      for (unsigned int i = 0; i < points.size(); ++i)
-        unit_points[i] =
-          body.get_mapping().transform_real_to_unit_cell(cell, points[i]);
+      std::vector<types::global_dof_index> dofs;
+      std::vector<double>                  values;
+      std::vector<int>                     n_entries;
+      std::vector<types::global_dof_index> masters;
+      std::vector<double>                  weights;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &dofs &values &n_entries &masters &weights;
+      }
+    };
+
+    /** PointShape at unit points of one cell (one FEValues per cell). */
+    std::vector<PointShape>
+    point_shapes(const ElasticBody<2>                      &body,
+                 const DoFHandler<2>::active_cell_iterator &cell,
+                 const std::vector<Point<2>>               &unit_points)
+    {
       FEValues<2> fe_values(body.get_mapping(),
                             body.get_fe(),
                             Quadrature<2>(unit_points),
                             update_values);
       fe_values.reinit(cell);
-      const auto                      &fe = body.get_fe();
-      std::vector<std::vector<double>> values(
-        points.size(), std::vector<double>(fe.dofs_per_cell));
-      for (unsigned int q = 0; q < points.size(); ++q)
-        for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
+      PointShape common;
+      common.dofs.resize(body.get_fe().dofs_per_cell);
+      cell->get_dof_indices(common.dofs);
+      const auto &constraints = body.get_constraints();
+      for (const auto dof : common.dofs)
+      {
+        if (!constraints.is_constrained(dof))
         {
-          const unsigned int c = fe.system_to_component_index(i).first;
-          values[q][i]         = fe_values.shape_value(i, q) * normal[c];
+          common.n_entries.push_back(-1);
+          continue;
         }
-      return values;
+        const auto *entries = constraints.get_constraint_entries(dof);
+        common.n_entries.push_back(entries ? entries->size() : 0);
+        if (entries)
+          for (const auto &[master, weight] : *entries)
+          {
+            common.masters.push_back(master);
+            common.weights.push_back(weight);
+          }
+      }
+      std::vector<PointShape> shapes(unit_points.size(), common);
+      for (unsigned int q = 0; q < unit_points.size(); ++q)
+        for (unsigned int i = 0; i < common.dofs.size(); ++i)
+          shapes[q].values.push_back(fe_values.shape_value(i, q));
+      return shapes;
+    }
+
+    /** PointShape at points given in real coordinates in one cell. */
+    std::vector<PointShape>
+    point_shapes_at(const ElasticBody<2>                      &body,
+                    const DoFHandler<2>::active_cell_iterator &cell,
+                    const std::vector<Point<2>>               &points)
+    {
+      std::vector<Point<2>> unit_points;
+      for (const auto &x : points)
+        unit_points.push_back(
+          body.get_mapping().transform_real_to_unit_cell(cell, x));
+      return point_shapes(body, cell, unit_points);
+    }
+
+    /** PointShape at @p points of a distributed mesh: the owners of the
+     * cells around the points evaluate and send (collective). */
+    std::vector<PointShape>
+    remote_point_shapes(const ElasticBody<2>        &body,
+                        const std::vector<Point<2>> &points,
+                        const std::string           &section)
+    {
+      // One cell per point (a point on a cell edge would otherwise be
+      // loaded twice); the tolerance is in unit coordinates.
+      Utilities::MPI::RemotePointEvaluation<2> remote(1e-6, true);
+      remote.reinit(points, body.get_triangulation(), body.get_mapping());
+      if (!remote.all_points_found())
+        throw InputError(section + ": a contact point lies in no cell of "
+                                   "body '" +
+                         body.name() + "'");
+      std::vector<PointShape> shapes, buffer;
+      remote.evaluate_and_process<PointShape>(
+        shapes,
+        buffer,
+        [&](const ArrayView<PointShape> &values, const auto &cell_data)
+        {
+          for (unsigned int c = 0; c < cell_data.cells.size(); ++c)
+          {
+            const DoFHandler<2>::active_cell_iterator cell(
+              &body.get_triangulation(),
+              cell_data.cells[c].first,
+              cell_data.cells[c].second,
+              &body.get_dof_handler());
+            const unsigned int begin = cell_data.reference_point_ptrs[c],
+                               end   = cell_data.reference_point_ptrs[c + 1];
+            const auto         in_cell =
+              point_shapes(body,
+                           cell,
+                           std::vector<Point<2>>(
+                             cell_data.reference_point_values.begin() + begin,
+                             cell_data.reference_point_values.begin() + end));
+            std::copy(in_cell.begin(), in_cell.end(), values.begin() + begin);
+          }
+        });
+      AssertDimension(shapes.size(), points.size());
+      return shapes;
+    }
+
+    /** The normal-component coefficients of a point, and its load with the
+     * constraints resolved (see ContactPoint). */
+    void
+    couple(const PointShape                     &shape,
+           const FiniteElement<2>               &fe,
+           const Tensor<1, 2>                   &normal,
+           std::vector<types::global_dof_index> &dofs,
+           std::vector<double>                  &a,
+           std::vector<types::global_dof_index> &load_dofs,
+           std::vector<double>                  &load)
+    {
+      dofs = shape.dofs;
+      a.resize(dofs.size());
+      load_dofs.clear();
+      load.clear();
+      for (unsigned int i = 0, e = 0; i < dofs.size(); ++i)
+      {
+        a[i] = shape.values[i] * normal[fe.system_to_component_index(i).first];
+        if (shape.n_entries[i] < 0)
+        {
+          load_dofs.push_back(dofs[i]);
+          load.push_back(a[i]);
+        }
+        else
+          for (int k = 0; k < shape.n_entries[i]; ++k, ++e)
+          {
+            load_dofs.push_back(shape.masters[e]);
+            load.push_back(a[i] * shape.weights[e]);
+          }
+      }
     }
   } // namespace
 
@@ -87,27 +229,6 @@ namespace ddcontact
                                    1,
                                    constants,
                                    "Contact pair " + parameters.name + "/Gap");
-  }
-
-  double
-  ContactPair::thickness_of_body_1() const
-  {
-    if (parameters.thickness > 0)
-      return parameters.thickness;
-    // Extent of body 1 along the mean normal of S_1.
-    Tensor<1, 2> mean;
-    for (const auto &p : contact_points)
-      mean += p.normal;
-    if (mean.norm() == 0)
-      return body_1.get_triangulation().begin_active()->diameter();
-    mean /= mean.norm();
-    double lo = std::numeric_limits<double>::max(), hi = -lo;
-    for (const auto &v : body_1.get_triangulation().get_vertices())
-    {
-      lo = std::min(lo, v * mean);
-      hi = std::max(hi, v * mean);
-    }
-    return hi - lo;
   }
 
   void
@@ -135,6 +256,10 @@ namespace ddcontact
 
     const QGauss<1> gauss(parameters.n_gauss);
     contact_points.clear();
+    // Per point, the shapes of both bodies there: computed from the face's
+    // cell at once on a serial or shared mesh, by the owners of a
+    // distributed one at the end.
+    std::vector<PointShape> shapes_1, shapes_2;
     for (const auto &face : faces_1)
     {
       const Tensor<1, 2>  t      = face.b - face.a;
@@ -153,7 +278,7 @@ namespace ddcontact
                                { return std::abs(x - y) < 1e-10; }),
                    breaks.end());
 
-      std::vector<ContactPoint> face_points;
+      std::vector<Point<2>> xs;
       for (unsigned int piece = 0; piece + 1 < breaks.size(); ++piece)
         for (unsigned int q = 0; q < gauss.size(); ++q)
         {
@@ -165,57 +290,77 @@ namespace ddcontact
           p.JxW =
             gauss.weight(q) * (breaks[piece + 1] - breaks[piece]) * length;
           p.normal = face.normal;
-          face_points.push_back(p);
-        }
 
-      // Body 1: dofs and normal shape values of the face's cell.
-      std::vector<Point<2>> xs;
-      for (const auto &p : face_points)
-        xs.push_back(p.x);
-      const auto a = normal_shape_values(body_1, face.cell, xs, face.normal);
-      std::vector<types::global_dof_index> dofs_1(
-        body_1.get_fe().dofs_per_cell);
-      face.cell->get_dof_indices(dofs_1);
-
-      for (unsigned int q = 0; q < face_points.size(); ++q)
-      {
-        auto &p  = face_points[q];
-        p.a      = a[q];
-        p.dofs_1 = dofs_1;
-
-        // Orthogonal projection P(x) on S_2: the closest point.
-        double          best  = std::numeric_limits<double>::max();
-        const ZoneFace *owner = nullptr;
-        for (const auto &f : faces_2)
-        {
-          const Tensor<1, 2> d = f.b - f.a;
-          const double       r =
-            std::clamp((p.x - f.a) * d / d.norm_square(), 0., 1.);
-          const Point<2> candidate = f.a + r * d;
-          const double   distance  = candidate.distance(p.x);
-          if (distance < best)
+          // Orthogonal projection P(x) on S_2: the closest point.
+          double          best  = std::numeric_limits<double>::max();
+          const ZoneFace *owner = nullptr;
+          for (const auto &f : faces_2)
           {
-            best         = distance;
-            owner        = &f;
-            p.projection = candidate;
+            const Tensor<1, 2> d = f.b - f.a;
+            const double       r =
+              std::clamp((p.x - f.a) * d / d.norm_square(), 0., 1.);
+            const Point<2> candidate = f.a + r * d;
+            const double   distance  = candidate.distance(p.x);
+            if (distance < best)
+            {
+              best         = distance;
+              owner        = &f;
+              p.projection = candidate;
+            }
           }
+          p.gap = gap_function ? gap_function->value(p.x)
+                               : (p.projection - p.x) * p.normal;
+          if (!body_2.is_mesh_distributed())
+            shapes_2.push_back(
+              point_shapes_at(body_2, owner->cell, {p.projection})[0]);
+          xs.push_back(p.x);
+          contact_points.push_back(p);
         }
-        p.gap = gap_function ? gap_function->value(p.x)
-                             : (p.projection - p.x) * p.normal;
-
-        // n_2 = -n_1 (small-gap assumption).
-        p.b = normal_shape_values(
-          body_2, owner->cell, {p.projection}, -face.normal)[0];
-        p.dofs_2.resize(body_2.get_fe().dofs_per_cell);
-        owner->cell->get_dof_indices(p.dofs_2);
-      }
-      contact_points.insert(
-        contact_points.end(), face_points.begin(), face_points.end());
+      if (!body_1.is_mesh_distributed())
+        for (const auto &shape : point_shapes_at(body_1, face.cell, xs))
+          shapes_1.push_back(shape);
     }
+
+    if (body_1.is_mesh_distributed() || body_2.is_mesh_distributed())
+    {
+      std::vector<Point<2>> xs, projections;
+      for (const auto &p : contact_points)
+      {
+        xs.push_back(p.x);
+        projections.push_back(p.projection);
+      }
+      if (body_1.is_mesh_distributed())
+        shapes_1 = remote_point_shapes(body_1, xs, section + "Boundary id 1");
+      if (body_2.is_mesh_distributed())
+        shapes_2 =
+          remote_point_shapes(body_2, projections, section + "Boundary id 2");
+    }
+    for (unsigned int q = 0; q < contact_points.size(); ++q)
+    {
+      auto &p = contact_points[q];
+      couple(
+        shapes_1[q], body_1.get_fe(), p.normal, p.dofs_1, p.a, p.load_dofs_1, p.load_1);
+      // n_2 = -n_1 (small-gap assumption).
+      couple(
+        shapes_2[q], body_2.get_fe(), -p.normal, p.dofs_2, p.b, p.load_dofs_2, p.load_2);
+    }
+
+    // Thickness of both bodies along the mean normal of S_1 (the x axis
+    // if the normals cancel).
+    Tensor<1, 2> mean;
+    for (const auto &p : contact_points)
+      mean += p.normal;
+    mean = (mean.norm() > 0) ? mean / mean.norm() : Tensor<1, 2>({1., 0.});
+    const auto extent_1 = body_1.extent_along(mean);
+    const auto extent_2 = body_2.extent_along(mean);
+    thickness_1         = parameters.thickness > 0 ?
+                            parameters.thickness :
+                            extent_1.second - extent_1.first;
+    thickness_2         = extent_2.second - extent_2.first;
 
     // theta = c H / E_1 (paper, section 6), or given.
     theta = (parameters.penalty_type == "relative")
-              ? parameters.penalty * thickness_of_body_1() /
+              ? parameters.penalty * thickness_1 /
                   body_1.get_material().youngs_modulus
               : parameters.penalty;
   }
@@ -247,10 +392,9 @@ namespace ddcontact
                                  Vector<double>            &load_2) const
   {
     AssertDimension(sigma_n.size(), contact_points.size());
-    const auto    &fe_1 = body_1.get_fe();
-    const auto    &fe_2 = body_2.get_fe();
-    Tensor<1, 2>   force_1, force_2;
-    Vector<double> local_1(fe_1.dofs_per_cell), local_2(fe_2.dofs_per_cell);
+    const auto  &fe_1 = body_1.get_fe();
+    const auto  &fe_2 = body_2.get_fe();
+    Tensor<1, 2> force_1, force_2;
     for (unsigned int q = 0; q < contact_points.size(); ++q)
     {
       if (sigma_n[q] == 0.)
@@ -258,19 +402,14 @@ namespace ddcontact
       const auto  &p = contact_points[q];
       const double s = sigma_n[q] * p.JxW;
       for (unsigned int i = 0; i < p.a.size(); ++i)
-      {
-        local_1(i) = s * p.a[i];
-        force_1[fe_1.system_to_component_index(i).first] += local_1(i);
-      }
+        force_1[fe_1.system_to_component_index(i).first] += s * p.a[i];
       for (unsigned int i = 0; i < p.b.size(); ++i)
-      {
-        local_2(i) = s * p.b[i];
-        force_2[fe_2.system_to_component_index(i).first] += local_2(i);
-      }
-      body_1.get_constraints().distribute_local_to_global(
-        local_1, p.dofs_1, load_1);
-      body_2.get_constraints().distribute_local_to_global(
-        local_2, p.dofs_2, load_2);
+        force_2[fe_2.system_to_component_index(i).first] += s * p.b[i];
+      // The constraints are resolved in the load coefficients.
+      for (unsigned int i = 0; i < p.load_1.size(); ++i)
+        load_1(p.load_dofs_1[i]) += s * p.load_1[i];
+      for (unsigned int i = 0; i < p.load_2.size(); ++i)
+        load_2(p.load_dofs_2[i]) += s * p.load_2[i];
     }
     return {force_1, force_2};
   }

@@ -1,6 +1,8 @@
+#include <deal.II/base/mpi_remote_point_evaluation.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/tria.h>
 
 #include <deal.II/dofs/dof_tools.h>
 
@@ -38,10 +40,12 @@ namespace ddcontact
   template <int dim>
   ElasticBody<dim>::ElasticBody(const BodyParameters &parameters,
                                 const Constants      &constants,
-                                const MPI_Comm        mesh_communicator)
+                                const MPI_Comm        mesh_communicator,
+                                const bool            distributed_mesh)
     : parameters(parameters)
     , material(parameters.material)
     , boundary_conditions(make_boundary_conditions(parameters, constants))
+    , mesh_distributed(distributed_mesh)
     , group_communicator(MPI_COMM_NULL)
   {
     // Mesh smoothing keeps adapted quadrilateral meshes graded; deal.II 9.4
@@ -50,7 +54,16 @@ namespace ddcontact
       parameters.cell_type == "triangle"
         ? Triangulation<dim>::none
         : Triangulation<dim>::limit_level_difference_at_vertices;
-    if (Utilities::MPI::n_mpi_processes(mesh_communicator) > 1)
+    AssertThrow(!mesh_distributed || parameters.cell_type != "triangle",
+                ExcMessage("p4est meshes hold quadrilaterals only"));
+    if (mesh_distributed)
+      // p4est partitions the cells between all processes of the
+      // communicator (z-order of the forest) and again after every
+      // refinement.
+      triangulation =
+        std::make_unique<parallel::distributed::Triangulation<dim>>(
+          mesh_communicator, smoothing);
+    else if (Utilities::MPI::n_mpi_processes(mesh_communicator) > 1)
     {
       // Every process keeps every cell (no artificial cells); the
       // subdomain ids say which process of the group assembles a cell.
@@ -211,6 +224,9 @@ namespace ddcontact
       {
         for (const auto &cell : triangulation->active_cell_iterators())
         {
+          // p4est takes the flags of the owned cells.
+          if (!computes(cell))
+            continue;
           const auto box = cell->bounding_box();
           if (box.get_boundary_points().first[0] <= hi[0] &&
               box.get_boundary_points().second[0] >= lo[0] &&
@@ -298,15 +314,23 @@ namespace ddcontact
     const bool partitioned =
       dynamic_cast<parallel::shared::Triangulation<dim> *>(
         triangulation.get()) != nullptr;
-    AssertThrow(ranks.size() == 1 || partitioned,
+    AssertThrow(ranks.size() == 1 || partitioned || mesh_distributed,
                 ExcMessage(
                   "a body on several processes needs a partitioned mesh"));
+    // p4est splits the forest between all processes of the mesh's
+    // communicator, which must be the group.
+    AssertThrow(!mesh_distributed ||
+                  ranks.size() == Utilities::MPI::n_mpi_processes(
+                                    triangulation->get_communicator()),
+                ExcMessage("a distributed mesh is solved by all processes"));
     const bool changed = ranks != process_group;
     process_group      = ranks;
     if (group_communicator != MPI_COMM_NULL)
       MPI_Comm_free(&group_communicator);
     group_communicator = group;
-    if (changed && partitioned)
+    if (changed && mesh_distributed)
+      setup_system();
+    else if (changed && partitioned)
     {
       // No cell is flagged: the refinement step only fires the
       // post-refinement signal, which partitions between the new group.
@@ -342,8 +366,16 @@ namespace ddcontact
     dof_handler.distribute_dofs(*fe);
 
     // Hanging nodes first, then the Dirichlet data (5); merged in one
-    // object so that a Dirichlet node that is also hanging is handled.
+    // object so that a Dirichlet node that is also hanging is handled. A
+    // distributed mesh knows the constraints of its locally relevant dofs
+    // only.
     constraints.clear();
+    if (mesh_distributed)
+    {
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+      constraints.reinit(relevant);
+    }
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     for (const auto &[id, d] : boundary_conditions.dirichlet)
       VectorTools::interpolate_boundary_values(
@@ -597,6 +629,8 @@ namespace ddcontact
     std::vector<double>              div(volumetric_quadrature->size());
     for (const auto &cell : dof_handler.active_cell_iterators())
     {
+      if (!computes(cell))
+        continue;
       fe_values.reinit(cell);
       fe_values[displacement].get_function_divergences(u, div);
       dilatation[cell->active_cell_index()] = div[0];
@@ -749,6 +783,10 @@ namespace ddcontact
         distributed_direct->solve(x, rhs);
       else
         solve_cg(distributed_matrix, x, rhs);
+      // On a distributed mesh no process knows every constraint: each
+      // resolves those of its own dofs before the gather.
+      if (mesh_distributed)
+        constraints.distribute(x);
       gather_in_group(x, u);
     }
     else
@@ -762,7 +800,8 @@ namespace ddcontact
       else
         solve_cg(trilinos_matrix, u, rhs);
     }
-    constraints.distribute(u);
+    if (!mesh_distributed)
+      constraints.distribute(u);
     for (const double v : u)
       if (!std::isfinite(v))
         throw InputError(parameters.section() +
@@ -791,6 +830,8 @@ namespace ddcontact
                                              : std::vector<double>();
     for (const auto &cell : dof_handler.active_cell_iterators())
     {
+      if (!computes(cell))
+        continue;
       fe_values.reinit(cell);
       fe_values[displacement].get_function_symmetric_gradients(u, strain);
       auto &s = stress[cell->active_cell_index()];
@@ -813,6 +854,8 @@ namespace ddcontact
     double                               energy = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
     {
+      if (!computes(cell))
+        continue;
       fe_values.reinit(cell);
       fe_values[displacement].get_function_symmetric_gradients(u, strain);
       for (const unsigned int q : fe_values.quadrature_point_indices())
@@ -830,13 +873,17 @@ namespace ddcontact
         *mapping, *fe, *volumetric_quadrature, update_JxW_values);
       for (const auto &cell : dof_handler.active_cell_iterators())
       {
+        if (!computes(cell))
+          continue;
         fe_reduced.reinit(cell);
         const double d = dilatation[cell->active_cell_index()];
         for (const unsigned int q : fe_reduced.quadrature_point_indices())
           energy += 0.5 * material.lambda() * d * d * fe_reduced.JxW(q);
       }
     }
-    return energy;
+    return mesh_distributed ?
+             Utilities::MPI::sum(energy, triangulation->get_communicator()) :
+             energy;
   }
 
   template <int dim>
@@ -844,48 +891,102 @@ namespace ddcontact
   ElasticBody<dim>::point_values(const Point<dim>     &x,
                                  const Vector<double> &u) const
   {
-    // The cache version reports a point outside the mesh by an invalid
-    // iterator instead of an assertion.
-    const GridTools::Cache<dim> cache(*triangulation, *mapping);
-    const auto tria_found = GridTools::find_active_cell_around_point(cache, x);
-    if (tria_found.first.state() != IteratorState::valid)
+    const auto outside = [&]()
     {
       std::ostringstream s;
       s << "Output/Points: the point (" << x << ") does not lie in body '"
         << parameters.name << "'";
-      throw InputError(s.str());
-    }
-    const std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
-                          found(typename DoFHandler<dim>::active_cell_iterator(
-              &*triangulation,
-              tria_found.first->level(),
-              tria_found.first->index(),
-              &dof_handler),
-            tria_found.second);
-    const Quadrature<dim> at_point(std::vector<Point<dim>>{found.second});
-    FEValues<dim>         fe_values(
-      *mapping, *fe, at_point, update_values | update_gradients);
-    fe_values.reinit(found.first);
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<Tensor<1, dim>>          value(1);
-    std::vector<SymmetricTensor<2, dim>> strain(1);
-    fe_values[displacement].get_function_values(u, value);
-    fe_values[displacement].get_function_symmetric_gradients(u, strain);
+      return InputError(s.str());
+    };
+    using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
+    // Displacement and stress at the unit point @p xi of @p cell.
+    const auto evaluate = [&](const CellIterator &cell, const Point<dim> &xi)
+    {
+      const Quadrature<dim> at_point(std::vector<Point<dim>>{xi});
+      FEValues<dim>         fe_values(
+        *mapping, *fe, at_point, update_values | update_gradients);
+      fe_values.reinit(cell);
+      const FEValuesExtractors::Vector     displacement(0);
+      std::vector<Tensor<1, dim>>          value(1);
+      std::vector<SymmetricTensor<2, dim>> strain(1);
+      fe_values[displacement].get_function_values(u, value);
+      fe_values[displacement].get_function_symmetric_gradients(u, strain);
+
+      PointValues<dim> result;
+      result.x            = x;
+      result.displacement = value[0];
+      result.stress       = material.stress(strain[0]);
+      if (reduced_volumetric_integration())
+      {
+        // The dilatation of the cell's reduced point, as in the assembly.
+        FEValues<dim> fe_reduced(
+          *mapping, *fe, *volumetric_quadrature, update_gradients);
+        std::vector<double> div(1);
+        fe_reduced.reinit(cell);
+        fe_reduced[displacement].get_function_divergences(u, div);
+        result.stress += material.lambda() * (div[0] - trace(strain[0])) *
+                         unit_symmetric_tensor<dim>();
+      }
+      return result;
+    };
 
     PointValues<dim> result;
-    result.x            = x;
-    result.displacement = value[0];
-    result.stress       = material.stress(strain[0]);
-    if (reduced_volumetric_integration())
+    if (mesh_distributed)
     {
-      // The dilatation of the cell's reduced point, as in the assembly.
-      FEValues<dim> fe_reduced(
-        *mapping, *fe, *volumetric_quadrature, update_gradients);
-      std::vector<double> div(1);
-      fe_reduced.reinit(found.first);
-      fe_reduced[displacement].get_function_divergences(u, div);
-      result.stress += material.lambda() * (div[0] - trace(strain[0])) *
-                       unit_symmetric_tensor<dim>();
+      // The process owning the cell around x evaluates and sends
+      // (collective over the mesh's processes, which all ask for x).
+      static_assert(dim == 2, "five values: u and the plane stress");
+      using Values = std::array<double, 5>;
+      Utilities::MPI::RemotePointEvaluation<dim> remote(1e-6, true);
+      remote.reinit({x}, *triangulation, *mapping);
+      if (!remote.all_points_found())
+        throw outside();
+      std::vector<Values> found, buffer;
+      remote.template evaluate_and_process<Values>(
+        found,
+        buffer,
+        [&](const ArrayView<Values> &values, const auto &cell_data)
+        {
+          for (unsigned int c = 0; c < cell_data.cells.size(); ++c)
+          {
+            const CellIterator cell(&*triangulation,
+                                    cell_data.cells[c].first,
+                                    cell_data.cells[c].second,
+                                    &dof_handler);
+            for (unsigned int k = cell_data.reference_point_ptrs[c];
+                 k < cell_data.reference_point_ptrs[c + 1];
+                 ++k)
+            {
+              const auto v =
+                evaluate(cell, cell_data.reference_point_values[k]);
+              values[k] = {{v.displacement[0],
+                            v.displacement[1],
+                            v.stress[0][0],
+                            v.stress[1][1],
+                            v.stress[0][1]}};
+            }
+          }
+        });
+      const Values &v     = found.at(0);
+      result.x            = x;
+      result.displacement = Tensor<1, dim>({v[0], v[1]});
+      result.stress[0][0] = v[2];
+      result.stress[1][1] = v[3];
+      result.stress[0][1] = v[4];
+    }
+    else
+    {
+      // The cache version reports a point outside the mesh by an invalid
+      // iterator instead of an assertion.
+      const GridTools::Cache<dim> cache(*triangulation, *mapping);
+      const auto found = GridTools::find_active_cell_around_point(cache, x);
+      if (found.first.state() != IteratorState::valid)
+        throw outside();
+      result = evaluate(CellIterator(&*triangulation,
+                                     found.first->level(),
+                                     found.first->index(),
+                                     &dof_handler),
+                        found.second);
     }
     result.von_mises = material.von_mises(result.stress);
     return result;
@@ -897,8 +998,31 @@ namespace ddcontact
   {
     double h = std::numeric_limits<double>::max();
     for (const auto &cell : triangulation->active_cell_iterators())
-      h = std::min(h, cell->diameter(*mapping));
-    return h;
+      if (computes(cell))
+        h = std::min(h, cell->diameter(*mapping));
+    return mesh_distributed ?
+             Utilities::MPI::min(h, triangulation->get_communicator()) :
+             h;
+  }
+
+  template <int dim>
+  std::pair<double, double>
+  ElasticBody<dim>::extent_along(const Tensor<1, dim> &direction) const
+  {
+    double lo = std::numeric_limits<double>::max(), hi = -lo;
+    for (const auto &cell : triangulation->active_cell_iterators())
+      if (computes(cell))
+        for (const unsigned int v : cell->vertex_indices())
+        {
+          lo = std::min(lo, cell->vertex(v) * direction);
+          hi = std::max(hi, cell->vertex(v) * direction);
+        }
+    if (mesh_distributed)
+    {
+      lo = Utilities::MPI::min(lo, triangulation->get_communicator());
+      hi = Utilities::MPI::max(hi, triangulation->get_communicator());
+    }
+    return {lo, hi};
   }
 
   template class ElasticBody<2>;

@@ -193,18 +193,9 @@ namespace ddcontact
           const auto &m = body.get_material();
           return H * (1 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;
         };
-        // Body 2's thickness measured like body 1's, along -n.
-        Tensor<1, 2> n;
-        for (const auto &pt : pair.points())
-          n += pt.normal;
-        n /= std::max(n.norm(), 1e-300);
-        double lo = std::numeric_limits<double>::max(), hi = -lo;
-        for (const auto &v : b2.get_triangulation().get_vertices())
-        {
-          lo = std::min(lo, v * n);
-          hi = std::max(hi, v * n);
-        }
-        const double c_w = compliance(b1, H1) + compliance(b2, hi - lo);
+        // Body 2's thickness measured like body 1's.
+        const double c_w =
+          compliance(b1, H1) + compliance(b2, pair.thickness_of_body_2());
 
         std::vector<double> u_1n, u_2n;
         pair.normal_displacements(

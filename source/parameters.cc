@@ -746,6 +746,34 @@ namespace ddcontact
       "(a process or a range of processes). A body on several processes has "
       "its mesh partitioned between them and is solved by a distributed "
       "solver (Trilinos: Amesos MUMPS, or CG with ML AMG).");
+    prm.declare_entry(
+      "Mesh",
+      "auto",
+      Patterns::Selection("auto|shared|distributed"),
+      "How the mesh of a body solved by several processes is split. "
+      "'distributed': parallel::distributed::Triangulation (p4est), each "
+      "process keeps only its cells and a ghost layer; for quadrilateral "
+      "bodies solved by every process (Body owners = all) and not adapted. "
+      "'shared': parallel::shared::Triangulation, every process keeps the "
+      "whole mesh and assembles its part. 'auto': distributed where "
+      "possible, shared elsewhere.");
+  }
+
+  bool
+  ParallelParameters::distributed_mesh(const BodyParameters       &body,
+                                       const AdaptationParameters &adaptation,
+                                       const unsigned int n_processes) const
+  {
+    if (n_processes <= 1 || mesh == "shared")
+      return false;
+    const bool on_every_process =
+      mode == "all" ||
+      (mode == "list" && body_groups.at(body.name).size() == n_processes);
+    const bool adapted =
+      adaptation.enabled() &&
+      std::find(adaptation.bodies.begin(), adaptation.bodies.end(), body.name) !=
+        adaptation.bodies.end();
+    return on_every_process && body.cell_type == "quadrilateral" && !adapted;
   }
 
   bool
@@ -769,6 +797,7 @@ namespace ddcontact
                             const std::vector<std::string> &body_names)
   {
     body_groups.clear();
+    mesh                   = prm.get("Mesh");
     const std::string text = prm.get("Body owners");
     if (text == "auto" || text == "all")
     {
@@ -930,6 +959,17 @@ namespace ddcontact
     prm.enter_subsection("Parallel");
     parallel.parse(prm, body_names);
     prm.leave_subsection();
+    // An explicit request for p4est meshes that a quadrilateral body cannot
+    // have is an error, not a silent fallback (triangles are always shared).
+    if (parallel.mesh == "distributed" && n_world_processes() > 1)
+      for (const auto &body : bodies)
+        if (body.cell_type == "quadrilateral" &&
+            !parallel.distributed_mesh(body, adaptation, n_world_processes()))
+          throw InputError(
+            "Parallel/Mesh: distributed, but body '" + body.name +
+            "' is adapted or not solved by every process (distributed "
+            "meshes need Body owners = all and no adaptation); use Mesh = "
+            "auto or shared");
     if (dd.solver == "monolithic" && n_world_processes() > 1)
       throw InputError("Domain decomposition/Solver: monolithic runs on one "
                        "process; use Solver = dd under mpirun");

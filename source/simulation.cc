@@ -74,10 +74,15 @@ namespace ddcontact
       parameters.bodies.size());
     for (const auto &body_parameters : parameters.bodies)
     {
+      // A p4est mesh where the body allows it (Parallel/Mesh).
       bodies.push_back(std::make_unique<ElasticBody<2>>(
         body_parameters,
         parameters.constants,
-        partitioned ? MPI_COMM_WORLD : MPI_COMM_SELF));
+        partitioned ? MPI_COMM_WORLD : MPI_COMM_SELF,
+        partitioned && parameters.parallel.distributed_mesh(
+                         body_parameters,
+                         parameters.adaptation,
+                         Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD))));
       // Assembled and factorized only where it is solved, below.
       bodies.back()->set_solved_here(false);
       bodies.back()->make_mesh(parameters.output_directory);
@@ -98,9 +103,10 @@ namespace ddcontact
     for (const auto &body : bodies)
       pcout << "  body " << std::setw(10) << std::left << body->name()
             << std::right << std::setw(9)
-            << body->get_triangulation().n_active_cells() << " cells "
-            << std::setw(9) << body->n_dofs() << " dofs  ("
-            << (body->is_simplex() ? "triangles" : "quadrilaterals") << ", "
+            << body->n_active_cells() << " cells " << std::setw(9)
+            << body->n_dofs() << " dofs  ("
+            << (body->is_simplex() ? "triangles" : "quadrilaterals")
+            << (body->is_mesh_distributed() ? ", p4est" : "") << ", "
             << body->get_fe().get_name() << ")" << std::endl;
   }
 
@@ -328,8 +334,7 @@ namespace ddcontact
     out << std::setprecision(10) << n_adaptation_steps << ','
         << (dd_solver ? dd_solver->history().size() : 0);
     for (const auto &body : bodies)
-      out << ',' << body->get_triangulation().n_active_cells() << ','
-          << body->n_dofs();
+      out << ',' << body->n_active_cells() << ',' << body->n_dofs();
     unsigned int bem_unknowns = 0;
     double       eta_max = 0, eta_sum = 0, error2 = 0, norm2 = 0;
     for (const auto &a : adaptations)
@@ -531,7 +536,8 @@ namespace ddcontact
     {
       Json b = Json::object();
       b.set("name", body->name());
-      b.set("cells", body->get_triangulation().n_active_cells());
+      b.set("cells", body->n_active_cells());
+      b.set("distributed_mesh", body->is_mesh_distributed());
       b.set("dofs", static_cast<unsigned long>(body->n_dofs()));
       b.set("min_cell_diameter", body->min_cell_diameter());
       b.set("strain_energy", body->strain_energy(body->get_solution()));

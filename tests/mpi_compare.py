@@ -9,13 +9,16 @@ relative to the list's largest entry, so that a zero force component
 compares at the scale of the force). Also checks that the N-process run
 really solved the bodies on all N processes, and, with
 --expect-repartition, that it moved a body to another process after
-refinement.
+refinement. With --expect-distributed-mesh it checks that every
+quadrilateral body of the N-process run had a p4est mesh
+(Parallel/Mesh), and with --expect-shared-mesh that none had.
 
 With an iterative body solver, --tolerance T replaces 1e-10 by the
 solver's accuracy.
 
 usage: mpi_compare.py MPIRUN EXE SCENE OUTDIR [--np N] [--tolerance T]
-                      [--expect-repartition]
+                      [--expect-repartition] [--expect-distributed-mesh]
+                      [--expect-shared-mesh]
                       [--set Section/Entry=value ...]
                       [--parallel-set Section/Entry=value ...]
 (--parallel-set applies to the N-process run only.)
@@ -27,7 +30,8 @@ import sys
 
 TOLERANCE = 1e-10
 # Not results: where the bodies were solved, and how long it took.
-IGNORED = {"mpi_processes", "body_owners", "wall_time_s", "timings"}
+IGNORED = {"mpi_processes", "body_owners", "wall_time_s", "timings",
+           "distributed_mesh"}
 # Changes of the iterate divided by its norm: already relative to the
 # solution, so compared to 1e-10 absolutely (a different direct solver's
 # round-off, 1e-16 of |u|, is 1e-10 of a residual of 1e-6).
@@ -113,6 +117,12 @@ def main():
                         f"({two['body_owners']})")
     if expect_repartition and "bodies now solved on processes" not in log:
         failures.append("no body moved to another process after refinement")
+    meshes = {b["name"]: b.get("distributed_mesh") for b in two["bodies"]}
+    print(f"  p4est meshes: {meshes}")
+    if "--expect-distributed-mesh" in rest and not all(meshes.values()):
+        failures.append(f"not every body had a distributed mesh: {meshes}")
+    if "--expect-shared-mesh" in rest and any(meshes.values()):
+        failures.append(f"a body had a distributed mesh: {meshes}")
     for f in failures:
         print("  FAIL " + f)
     print("PASSED" if not failures else "FAILED")

@@ -28,6 +28,13 @@ namespace ddcontact
    * shape function there: u_1n(x) = sum_i a_i u_1[dofs_1[i]] and
    * u_2n(P(x)) = sum_i b_i u_2[dofs_2[i]], with n_2 = -n_1 (small-gap
    * assumption of section 1 of the paper README).
+   *
+   * The load of the point, the same coefficients with the body's
+   * constraints resolved (hanging and Dirichlet dofs replaced by their
+   * masters, as AffineConstraints::distribute_local_to_global() would),
+   * is kept too (load_dofs_1, load_1 and the same for body 2): then adding
+   * the contact load needs no constraints, which a process of a
+   * distributed mesh knows only for its own cells.
    */
   struct ContactPoint
   {
@@ -38,6 +45,8 @@ namespace ddcontact
     double                               gap = 0;
     std::vector<types::global_dof_index> dofs_1, dofs_2;
     std::vector<double>                  a, b;
+    std::vector<types::global_dof_index> load_dofs_1, load_dofs_2;
+    std::vector<double>                  load_1, load_2;
   };
 
   /**
@@ -51,6 +60,12 @@ namespace ddcontact
    * integral of (20) is exact up to the kink of min(0, .) at the edge of
    * the contact area; a rule on the faces of S_1 alone would integrate
    * across the kinks of u_2n and lose accuracy at the peak pressure.
+   *
+   * A body on a distributed mesh (p4est) holds only its own cells: its
+   * zone faces are gathered from all processes, the points are found in
+   * the owned cells by Utilities::MPI::RemotePointEvaluation, and their
+   * owners send the dofs, shape values and constraints of each point to
+   * every process. setup() is then collective; the iterations are not.
    */
   class ContactPair
   {
@@ -60,7 +75,8 @@ namespace ddcontact
                 const ElasticBody<2>        &body_2,
                 const Constants             &constants);
 
-    /** Build the contact points; call again after either mesh changed. */
+    /** Build the contact points; call again after either mesh changed
+     * (refined or repartitioned). */
     void
     setup();
 
@@ -129,9 +145,19 @@ namespace ddcontact
       return theta;
     }
 
-    /** Thickness of body 1 across the contact zone (for theta = c H/E_1). */
+    /** Thickness of body 1 across the contact zone (for theta = c H/E_1),
+     * and of body 2 along the same direction. */
     double
-    thickness_of_body_1() const;
+    thickness_of_body_1() const
+    {
+      return thickness_1;
+    }
+
+    double
+    thickness_of_body_2() const
+    {
+      return thickness_2;
+    }
 
   private:
     const ContactPairParameters  parameters;
@@ -139,7 +165,8 @@ namespace ddcontact
     const ElasticBody<2>        &body_2;
     std::shared_ptr<Function<2>> gap_function;
     std::vector<ContactPoint>    contact_points;
-    double                       theta = 0;
+    double                       theta       = 0;
+    double                       thickness_1 = 0, thickness_2 = 0;
   };
 } // namespace ddcontact
 

@@ -66,6 +66,16 @@ namespace ddcontact
    * over the group and solve it together (Amesos MUMPS or CG with AMG).
    * The partition follows every refinement (repartitioning in the
    * post-refinement signal).
+   *
+   * A quadrilateral body solved by every process may instead have a
+   * parallel::distributed::Triangulation (p4est; "Parallel/Mesh"): each
+   * process then keeps only its own cells and a ghost layer, its
+   * constraints hold the locally relevant dofs, and whatever is computed
+   * cell by cell (energy, stresses, point values) is computed on the
+   * owned cells and summed over the processes. The iterate stays whole on
+   * every process, so that the DD loop (20)-(21) is the same for every
+   * kind of mesh; the contact pairs find their points in the owned cells
+   * with RemotePointEvaluation (ContactPair::setup()).
    */
   template <int dim>
   class ElasticBody
@@ -75,7 +85,8 @@ namespace ddcontact
      * MPI_COMM_WORLD for a mesh partitioned over process groups. */
     ElasticBody(const BodyParameters &parameters,
                 const Constants      &constants,
-                const MPI_Comm        mesh_communicator = MPI_COMM_SELF);
+                const MPI_Comm        mesh_communicator = MPI_COMM_SELF,
+                const bool            distributed_mesh  = false);
 
     ~ElasticBody();
 
@@ -146,6 +157,36 @@ namespace ddcontact
     void
     set_process_group(const std::vector<unsigned int> &ranks,
                       const MPI_Comm                   group_communicator);
+
+    /** Whether the mesh is a p4est forest: this process holds only its
+     * own cells and a ghost layer (see the class documentation). */
+    bool
+    is_mesh_distributed() const
+    {
+      return mesh_distributed;
+    }
+
+    /** Whether this process computes the cell's contributions to cell
+     * sums and per-cell fields: every cell on a serial or shared mesh, the
+     * owned cells on a distributed one. */
+    template <typename CellIterator>
+    bool
+    computes(const CellIterator &cell) const
+    {
+      return !mesh_distributed || cell->is_locally_owned();
+    }
+
+    /** The number of active cells of the whole mesh. */
+    unsigned int
+    n_active_cells() const
+    {
+      return triangulation->n_global_active_cells();
+    }
+
+    /** The smallest and largest value of x . @p direction over the
+     * vertices of the mesh (all processes' cells). */
+    std::pair<double, double>
+    extent_along(const Tensor<1, dim> &direction) const;
 
     /** Whether this process solves the body together with others. */
     bool
@@ -385,6 +426,7 @@ namespace ddcontact
     TrilinosWrappers::PreconditionAMG amg_preconditioner;
     bool                              is_factorized = false;
     bool                              solved_here   = true;
+    bool                              mesh_distributed = false;
 
     // Process groups: the world ranks solving this body, their
     // communicator, and the matrix, load and direct solver distributed over

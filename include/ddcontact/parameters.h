@@ -192,6 +192,9 @@ namespace ddcontact
     /** With mode "list": the processes (world ranks, ascending) that solve
      * every body. */
     std::map<std::string, std::vector<unsigned int>> body_groups;
+    /** "auto", "shared" or "distributed": how the mesh of a body that
+     * several processes solve is split (see distributed_mesh()). */
+    std::string mesh = "auto";
 
     /**
      * Whether the bodies' meshes are partitioned over process groups
@@ -203,6 +206,20 @@ namespace ddcontact
      */
     bool
     process_groups(unsigned int n_processes, unsigned int n_bodies) const;
+
+    /**
+     * Whether @p body gets a parallel::distributed::Triangulation (p4est):
+     * each process then keeps only its own cells and a ghost layer, so
+     * the mesh memory shrinks with the processes. That needs a body of
+     * quadrilaterals solved by every process ("all", or a list giving it
+     * every process: the p4est forest lives on MPI_COMM_WORLD) and not
+     * refined adaptively (the FEM-BEM estimator and the transfer read the
+     * whole mesh). "auto" takes it wherever it is possible, "shared" never.
+     */
+    bool
+    distributed_mesh(const BodyParameters       &body,
+                     const AdaptationParameters &adaptation,
+                     unsigned int                n_processes) const;
 
     static void
     declare(ParameterHandler &prm);
