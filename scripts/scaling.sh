@@ -7,7 +7,10 @@
 # processes with one thread each (each body on its own process), and two
 # processes with every body partitioned between both (Body owners = all:
 # MUMPS over the two processes, the bodies one after the other). Writes
-# doc/scaling.csv; doc/scaling.md discusses it. Usage:
+# doc/scaling.csv. Then the memory of the mesh layouts, with both bodies
+# of quadrilaterals so that both can be distributed: one process, two
+# processes with shared meshes, two with distributed (p4est) meshes;
+# writes doc/scaling-memory.csv. doc/scaling.md discusses both. Usage:
 #   scripts/scaling.sh [REFINEMENT]     (default 6; 5 gives 2.6e5 unknowns)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -51,6 +54,38 @@ with open(csv, "w") as f:
         row = [name, n, t, dofs, s["dd_iterations"], f"{s['wall_time_s']:.3f}"]
         row += [f"{tm.get(p, 0.0):.3f}" for p in phases]
         row += [f"{tm['contact solve'] / s['dd_iterations']:.4f}"]
+        f.write(",".join(str(x) for x in row) + "\n")
+print(open(csv).read())
+PY
+
+# Memory: the same scene with omega1 of quadrilaterals (2 x 526850 dofs
+# at r = 6), every body on both processes.
+quads=(--set "Body omega1/Element/Cell type=quadrilateral")
+run quads_np1 1 1 "${quads[@]}"
+run quads_np2_shared 2 1 "${quads[@]}" --set "Parallel/Body owners=all" \
+  --set "Parallel/Mesh=shared"
+run quads_np2_distributed 2 1 "${quads[@]}" --set "Parallel/Body owners=all" \
+  --set "Parallel/Mesh=distributed"
+python3 - "$out" doc/scaling-memory.csv <<'PY'
+import json, sys
+out, csv = sys.argv[1], sys.argv[2]
+phases = ["setup", "contact setup", "contact solve", "body solves"]
+with open(csv, "w") as f:
+    f.write("run,processes,mesh,dofs,dd_iterations,force,wall_s,"
+            + ",".join(p.replace(" ", "_") + "_s" for p in phases)
+            + ",peak_memory_largest_process_mb,peak_memory_all_processes_mb\n")
+    for name, n, mesh in [("quads_np1", 1, "serial"),
+                          ("quads_np2_shared", 2, "shared"),
+                          ("quads_np2_distributed", 2, "distributed")]:
+        s = json.load(open(f"{out}/{name}/summary.json"))
+        tm = s["timings"]
+        row = [name, n, mesh, sum(b["dofs"] for b in s["bodies"]),
+               s["dd_iterations"],
+               f"{abs(s['contact'][0]['force'][0][1]):.6f}",
+               f"{s['wall_time_s']:.3f}"]
+        row += [f"{tm.get(p, 0.0):.3f}" for p in phases]
+        row += [f"{s['peak_memory']['largest_process_mb']:.1f}",
+                f"{s['peak_memory']['all_processes_mb']:.1f}"]
         f.write(",".join(str(x) for x in row) + "\n")
 print(open(csv).read())
 PY

@@ -1,5 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/distributed/tria.h>
 #include <deal.II/distributed/tria_base.h>
 
 #include <deal.II/grid/grid_refinement.h>
@@ -91,8 +93,23 @@ namespace ddcontact
     {
       fem_bem_estimator->estimate(u_fem, contact);
       eta = fem_bem_estimator->indicators();
-      return;
     }
+    else
+      estimate_kelly(u_fem);
+    // A distributed mesh holds eta on its own cells (zero elsewhere).
+    eta_maximum = eta.linfty_norm();
+    eta_total   = eta.l1_norm();
+    if (body.is_mesh_distributed())
+    {
+      const MPI_Comm comm = body.get_triangulation().get_communicator();
+      eta_maximum         = Utilities::MPI::max(eta_maximum, comm);
+      eta_total           = Utilities::MPI::sum(eta_total, comm);
+    }
+  }
+
+  void
+  AdaptiveRefinement::estimate_kelly(const Vector<double> &u_fem)
+  {
     Vector<float> kelly(body.get_triangulation().n_active_cells());
     KellyErrorEstimator<2>::estimate(body.get_mapping(),
                                      body.get_dof_handler(),
@@ -101,11 +118,17 @@ namespace ddcontact
                                      u_fem,
                                      kelly);
     // On a partitioned mesh every process estimates only its own cells;
-    // each cell has one owner, so the sum is the whole estimate.
+    // each cell has one owner, so on a shared mesh the sum is the whole
+    // estimate. A distributed one keeps the owned cells' values.
     if (const auto *tria = dynamic_cast<const parallel::TriangulationBase<2> *>(
-          &body.get_triangulation()))
+          &body.get_triangulation());
+        tria && !body.is_mesh_distributed())
       Utilities::MPI::sum(kelly, tria->get_communicator(), kelly);
     eta = kelly;
+    if (body.is_mesh_distributed())
+      for (const auto &cell : body.get_triangulation().active_cell_iterators())
+        if (!cell->is_locally_owned())
+          eta(cell->active_cell_index()) = 0.;
   }
 
   unsigned int
@@ -119,14 +142,26 @@ namespace ddcontact
     if (parameters.marking == "threshold")
     {
       for (const auto &cell : tria.active_cell_iterators())
-        if (eta(cell->active_cell_index()) > parameters.delta)
+        if (body.computes(cell) &&
+            eta(cell->active_cell_index()) > parameters.delta)
           cell->set_refine_flag();
     }
     else if (parameters.marking == "fraction")
-      GridRefinement::refine_and_coarsen_fixed_number(tria,
-                                                      eta,
-                                                      parameters.fraction,
-                                                      0.);
+    {
+      if (body.is_mesh_distributed())
+        // The fraction of all processes' cells (a parallel search for the
+        // threshold).
+        parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+          dynamic_cast<parallel::distributed::Triangulation<2> &>(tria),
+          eta,
+          parameters.fraction,
+          0.);
+      else
+        GridRefinement::refine_and_coarsen_fixed_number(tria,
+                                                        eta,
+                                                        parameters.fraction,
+                                                        0.);
+    }
     else
     {
       // Doerfler (bulk) marking on eta^2: the error is the l2 sum of the
@@ -134,16 +169,24 @@ namespace ddcontact
       Vector<double> eta2(eta.size());
       for (unsigned int c = 0; c < eta.size(); ++c)
         eta2(c) = eta(c) * eta(c);
-      GridRefinement::refine_and_coarsen_fixed_fraction(tria,
-                                                        eta2,
-                                                        parameters.fraction,
-                                                        0.);
+      if (body.is_mesh_distributed())
+        parallel::distributed::GridRefinement::
+          refine_and_coarsen_fixed_fraction(
+            dynamic_cast<parallel::distributed::Triangulation<2> &>(tria),
+            eta2,
+            parameters.fraction,
+            0.);
+      else
+        GridRefinement::refine_and_coarsen_fixed_fraction(tria,
+                                                          eta2,
+                                                          parameters.fraction,
+                                                          0.);
     }
 
     unsigned int marked = 0;
     capped              = 0;
     for (const auto &cell : tria.active_cell_iterators())
-      if (cell->refine_flag_set())
+      if (body.computes(cell) && cell->refine_flag_set())
       {
         if (static_cast<unsigned int>(cell->level()) >= parameters.max_level)
         {
@@ -153,9 +196,14 @@ namespace ddcontact
         else
           ++marked;
       }
+    if (body.is_mesh_distributed())
+    {
+      marked = Utilities::MPI::sum(marked, tria.get_communicator());
+      capped = Utilities::MPI::sum(capped, tria.get_communicator());
+    }
     // Each refined quadrilateral becomes four cells (the one-irregularity
     // closure adds a few more, not counted here).
-    if (tria.n_active_cells() + 3 * marked > parameters.max_cells)
+    if (body.n_active_cells() + 3 * marked > parameters.max_cells)
     {
       for (const auto &cell : tria.active_cell_iterators())
         cell->clear_refine_flag();
@@ -170,9 +218,10 @@ namespace ddcontact
   {
     auto &tria = body.get_triangulation();
     for (const auto &cell : tria.active_cell_iterators())
-      cell->set_refine_flag();
+      if (body.computes(cell))
+        cell->set_refine_flag();
     capped = 0;
-    return tria.n_active_cells();
+    return body.n_active_cells();
   }
 
   void

@@ -2,6 +2,8 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/thread_management.h>
 
+#include <deal.II/distributed/tria_base.h>
+
 #include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -278,19 +280,45 @@ namespace ddcontact
     timing_data.factorization = seconds_since(lu_start);
   }
 
+  namespace
+  {
+    /** A boundary face (25) with the global dofs of its two vertices,
+     * and whether the body lies on the left of x[1] -> x[0] (deal.II does
+     * not orient faces), as sent between the processes of a distributed
+     * mesh. */
+    struct BoundaryFace
+    {
+      std::array<Point<2>, 2>                               x;
+      std::array<std::array<types::global_dof_index, 2>, 2> dofs;
+      types::boundary_id                                    boundary_id;
+      bool                                                  reversed;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &x &dofs &boundary_id &reversed;
+      }
+    };
+  } // namespace
+
   void
   BoundaryElementSolver::build_boundary_mesh(const DoFHandler<2> &dof_handler,
                                              const Mapping<2>    &mapping)
   {
     nodes.clear();
     elements.clear();
-    std::map<unsigned int, unsigned int> vertex_to_node;
 
-    // One element per active boundary face (25), oriented so that the body
-    // lies on its left: deal.II does not order face vertices that way.
+    std::vector<BoundaryFace> faces;
+
+    // A distributed mesh (p4est) knows its own cells only: each process
+    // takes the faces of its cells and every process gets all of them.
+    const auto *distributed =
+      dynamic_cast<const parallel::DistributedTriangulationBase<2> *>(
+        &dof_handler.get_triangulation());
     for (const auto &cell : dof_handler.active_cell_iterators())
     {
-      if (!cell->at_boundary())
+      if (!cell->at_boundary() || (distributed && !cell->is_locally_owned()))
         continue;
       const auto cell_vertices = mapping.get_vertices(cell);
       Point<2>   centroid;
@@ -302,8 +330,8 @@ namespace ddcontact
         const auto face = cell->face(f);
         if (!face->at_boundary())
           continue;
-        std::array<unsigned int, 2> node_of_vertex;
-        std::array<Point<2>, 2>     x;
+        BoundaryFace boundary_face;
+        boundary_face.boundary_id = face->boundary_id();
         for (unsigned int v = 0; v < 2; ++v)
         {
           unsigned int cell_vertex = numbers::invalid_unsigned_int;
@@ -312,40 +340,57 @@ namespace ddcontact
               cell_vertex = cv;
           Assert(cell_vertex != numbers::invalid_unsigned_int,
                  ExcInternalError());
-          x[v] = cell_vertices[cell_vertex];
-
-          const auto [it, is_new] =
-            vertex_to_node.emplace(face->vertex_index(v), nodes.size());
-          if (is_new)
+          boundary_face.x[v] = cell_vertices[cell_vertex];
+          for (unsigned int c = 0; c < 2; ++c)
           {
-            Node node;
-            node.x_physical = x[v];
-            for (unsigned int c = 0; c < 2; ++c)
-            {
-              // Vertex dofs of FESystem(Q1 or P1, 2) are ordered by
-              // component.
-              Assert(dof_handler.get_fe()
-                         .face_system_to_component_index(2 * v + c)
-                         .first == c,
-                     ExcInternalError());
-              node.dofs[c] = face->vertex_dof_index(v, c);
-            }
-            nodes.push_back(node);
+            // Vertex dofs of FESystem(Q1 or P1, 2) are ordered by
+            // component.
+            Assert(dof_handler.get_fe()
+                       .face_system_to_component_index(2 * v + c)
+                       .first == c,
+                   ExcInternalError());
+            boundary_face.dofs[v][c] = face->vertex_dof_index(v, c);
           }
-          node_of_vertex[v] = it->second;
         }
-
-        const Tensor<1, 2> tangent = x[1] - x[0];
+        const Tensor<1, 2> tangent = boundary_face.x[1] - boundary_face.x[0];
         const Tensor<1, 2> normal{{tangent[1], -tangent[0]}};
-        const Point<2>     midpoint = 0.5 * (x[0] + x[1]);
-        if (normal * (midpoint - centroid) < 0)
-          std::swap(node_of_vertex[0], node_of_vertex[1]);
-
-        Element element;
-        element.nodes       = node_of_vertex;
-        element.boundary_id = face->boundary_id();
-        elements.push_back(element);
+        const Point<2> midpoint = 0.5 * (boundary_face.x[0] + boundary_face.x[1]);
+        boundary_face.reversed = normal * (midpoint - centroid) < 0;
+        faces.push_back(boundary_face);
       }
+    }
+    if (distributed)
+    {
+      std::vector<BoundaryFace> all;
+      for (const auto &from_process : Utilities::MPI::all_gather(
+             distributed->get_communicator(), faces))
+        all.insert(all.end(), from_process.begin(), from_process.end());
+      faces = std::move(all);
+    }
+
+    // The nodes are the vertices, told apart by their dofs (the vertex
+    // numbers of a distributed mesh differ between the processes).
+    std::map<types::global_dof_index, unsigned int> dof_to_node;
+    for (const auto &face : faces)
+    {
+      Element element;
+      for (unsigned int v = 0; v < 2; ++v)
+      {
+        const auto [it, is_new] =
+          dof_to_node.emplace(face.dofs[v][0], nodes.size());
+        if (is_new)
+        {
+          Node node;
+          node.x_physical = face.x[v];
+          node.dofs       = face.dofs[v];
+          nodes.push_back(node);
+        }
+        element.nodes[v] = it->second;
+      }
+      if (face.reversed)
+        std::swap(element.nodes[0], element.nodes[1]);
+      element.boundary_id = face.boundary_id;
+      elements.push_back(element);
     }
     if (elements.empty())
       throw InputError("BoundaryElementSolver: the mesh has no boundary faces");
@@ -1133,9 +1178,34 @@ namespace ddcontact
     const Quadrature<2> &quadrature,
     const MPI_Comm       communicator) const
   {
-    // This process's share: cells [first, last) in active cell order.
     const unsigned int n_cells =
       dof_handler.get_triangulation().n_active_cells();
+    // A distributed mesh (p4est): this process evaluates its own cells,
+    // and the other cells' entries stay zero (no process needs them).
+    if (dynamic_cast<const parallel::DistributedTriangulationBase<2> *>(
+          &dof_handler.get_triangulation()))
+    {
+      FEValues<2> fe_values(
+        mapping, dof_handler.get_fe(), quadrature, update_quadrature_points);
+      std::vector<Point<2>> points;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          const auto &q_points = fe_values.get_quadrature_points();
+          points.insert(points.end(), q_points.begin(), q_points.end());
+        }
+      const auto stress = stress_at_points(points);
+      std::vector<std::vector<SymmetricTensor<2, 2>>> result(n_cells);
+      std::size_t                                     p = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            result[cell->active_cell_index()].push_back(stress[p++]);
+      return result;
+    }
+
+    // This process's share: cells [first, last) in active cell order.
     // (Programs that never initialized MPI, e.g. the BEM tests, are one
     // process.)
     const bool         mpi = Utilities::MPI::job_supports_mpi();

@@ -147,11 +147,20 @@ namespace ddcontact
                         const std::vector<Point<2>> &points,
                         const std::string           &section)
     {
-      // One cell per point (a point on a cell edge would otherwise be
-      // loaded twice); the tolerance is in unit coordinates.
+      // Process 0 asks and sends the answer to all: a point on an edge
+      // between two processes' cells has two equally valid answers that
+      // differ in round-off, and the DD, replicated on every process, must
+      // see the same numbers everywhere. One cell per point, else a point
+      // on an edge would be loaded twice; the tolerance is in unit
+      // coordinates.
+      const MPI_Comm comm = body.get_triangulation().get_communicator();
+      const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
       Utilities::MPI::RemotePointEvaluation<2> remote(1e-6, true);
-      remote.reinit(points, body.get_triangulation(), body.get_mapping());
-      if (!remote.all_points_found())
+      remote.reinit(root ? points : std::vector<Point<2>>(),
+                    body.get_triangulation(),
+                    body.get_mapping());
+      if (Utilities::MPI::broadcast(comm, remote.all_points_found(), 0) ==
+          false)
         throw InputError(section + ": a contact point lies in no cell of "
                                    "body '" +
                          body.name() + "'");
@@ -179,6 +188,7 @@ namespace ddcontact
             std::copy(in_cell.begin(), in_cell.end(), values.begin() + begin);
           }
         });
+      shapes = Utilities::MPI::broadcast(comm, shapes, 0);
       AssertDimension(shapes.size(), points.size());
       return shapes;
     }

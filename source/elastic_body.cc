@@ -2,6 +2,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -358,6 +359,63 @@ namespace ddcontact
     AssertThrowMPI(ierr);
   }
 
+  namespace
+  {
+    /** One constraint u_i = sum_k w_k u_{m_k} + b_i, as sent between
+     * processes. */
+    struct ConstraintLine
+    {
+      types::global_dof_index              index;
+      std::vector<types::global_dof_index> masters;
+      std::vector<double>                  weights;
+      double                               inhomogeneity;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &index &masters &weights &inhomogeneity;
+      }
+    };
+  } // namespace
+
+  template <int dim>
+  void
+  ElasticBody<dim>::complete_constraints()
+  {
+    // Every dof's constraint as the process owning the dof computed it,
+    // on every process, in one closed object: the DD keeps the whole
+    // iterate on every process and distributes the constraints in it
+    // (relaxation (21), the transfer after refinement), which must give
+    // the same numbers everywhere. These are the Dirichlet dofs of (5)
+    // and the hanging nodes: few next to the iterate.
+    std::vector<ConstraintLine> owned_lines;
+    const IndexSet             &owned = dof_handler.locally_owned_dofs();
+    for (const auto &line : constraints.get_lines())
+      if (owned.is_element(line.index))
+      {
+        ConstraintLine l{line.index, {}, {}, line.inhomogeneity};
+        for (const auto &[master, weight] : line.entries)
+        {
+          l.masters.push_back(master);
+          l.weights.push_back(weight);
+        }
+        owned_lines.push_back(l);
+      }
+    // (reinit() also drops the restriction to the locally relevant dofs.)
+    constraints.reinit();
+    for (const auto &from_process : Utilities::MPI::all_gather(
+           triangulation->get_communicator(), owned_lines))
+      for (const auto &l : from_process)
+      {
+        constraints.add_line(l.index);
+        for (unsigned int k = 0; k < l.masters.size(); ++k)
+          constraints.add_entry(l.index, l.masters[k], l.weights[k]);
+        constraints.set_inhomogeneity(l.index, l.inhomogeneity);
+      }
+    constraints.close();
+  }
+
   template <int dim>
   void
   ElasticBody<dim>::setup_system()
@@ -367,8 +425,8 @@ namespace ddcontact
 
     // Hanging nodes first, then the Dirichlet data (5); merged in one
     // object so that a Dirichlet node that is also hanging is handled. A
-    // distributed mesh knows the constraints of its locally relevant dofs
-    // only.
+    // distributed mesh computes the constraints of its locally relevant
+    // dofs (below, they are completed).
     constraints.clear();
     if (mesh_distributed)
     {
@@ -381,6 +439,8 @@ namespace ddcontact
       VectorTools::interpolate_boundary_values(
         *mapping, dof_handler, id, *d.displacement, constraints, d.mask);
     constraints.close();
+    if (mesh_distributed)
+      complete_constraints();
 
     load_vector.reinit(dof_handler.n_dofs());
     solution.reinit(dof_handler.n_dofs());
@@ -693,6 +753,42 @@ namespace ddcontact
   void
   ElasticBody<dim>::refine_and_transfer()
   {
+    if (mesh_distributed)
+    {
+      // p4est refines the owned cells, repartitions, and moves the
+      // transferred values with the cells; the interpolation needs the
+      // ghost values of the old mesh.
+      AssertThrow(is_solved_distributed(), ExcInternalError());
+      const MPI_Comm comm = triangulation->get_communicator();
+      IndexSet       relevant;
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+      TrilinosWrappers::MPI::Vector owned(dof_handler.locally_owned_dofs(),
+                                          comm),
+        ghosted(dof_handler.locally_owned_dofs(), relevant, comm);
+      for (const auto i : dof_handler.locally_owned_dofs())
+        owned(i) = solution(i);
+      owned.compress(VectorOperation::insert);
+      ghosted = owned;
+      parallel::distributed::SolutionTransfer<dim,
+                                              TrilinosWrappers::MPI::Vector>
+        transfer(dof_handler);
+      triangulation->prepare_coarsening_and_refinement();
+      transfer.prepare_for_coarsening_and_refinement(ghosted);
+      triangulation->execute_coarsening_and_refinement();
+
+      setup_system();
+      TrilinosWrappers::MPI::Vector moved(dof_handler.locally_owned_dofs(),
+                                          comm);
+      transfer.interpolate(moved);
+      gather_in_group(moved, solution);
+      // New hanging nodes and the Dirichlet data (5) on new boundary
+      // vertices.
+      constraints.distribute(solution);
+      assemble_system();
+      factorize();
+      return;
+    }
+
     SolutionTransfer<dim, Vector<double>> transfer(dof_handler);
     const Vector<double>                  old_solution = solution;
     triangulation->prepare_coarsening_and_refinement();
@@ -783,10 +879,6 @@ namespace ddcontact
         distributed_direct->solve(x, rhs);
       else
         solve_cg(distributed_matrix, x, rhs);
-      // On a distributed mesh no process knows every constraint: each
-      // resolves those of its own dofs before the gather.
-      if (mesh_distributed)
-        constraints.distribute(x);
       gather_in_group(x, u);
     }
     else
@@ -800,8 +892,7 @@ namespace ddcontact
       else
         solve_cg(trilinos_matrix, u, rhs);
     }
-    if (!mesh_distributed)
-      constraints.distribute(u);
+    constraints.distribute(u);
     for (const double v : u)
       if (!std::isfinite(v))
         throw InputError(parameters.section() +

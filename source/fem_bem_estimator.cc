@@ -67,6 +67,8 @@ namespace ddcontact
                           update_JxW_values);
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
     {
+      if (!body.computes(cell))
+        continue;
       fe_values.reinit(cell);
       const unsigned int c  = cell->active_cell_index();
       double             e2 = 0;
@@ -82,6 +84,14 @@ namespace ddcontact
       error2 += e2;
       total_area += area(c);
     }
+    if (body.is_mesh_distributed())
+    {
+      // Each process summed its own cells.
+      const MPI_Comm comm = body.get_triangulation().get_communicator();
+      error2              = Utilities::MPI::sum(error2, comm);
+      bem_norm2           = Utilities::MPI::sum(bem_norm2, comm);
+      total_area          = Utilities::MPI::sum(total_area, comm);
+    }
     error_norm      = std::sqrt(error2);
     bem_stress_norm = std::sqrt(bem_norm2);
 
@@ -90,7 +100,8 @@ namespace ddcontact
       bem_stress_norm / (scaled ? std::sqrt(total_area) : total_area);
     for (unsigned int c = 0; c < eta.size(); ++c)
       eta(c) =
-        (reference > 0)
+        // (Cells of other processes of a distributed mesh have no area.)
+        (reference > 0 && area(c) > 0)
           ? local_error(c) / (scaled ? std::sqrt(area(c)) : area(c)) / reference
           : 0.;
     time.compare += timer.wall_time();

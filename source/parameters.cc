@@ -753,27 +753,22 @@ namespace ddcontact
       "How the mesh of a body solved by several processes is split. "
       "'distributed': parallel::distributed::Triangulation (p4est), each "
       "process keeps only its cells and a ghost layer; for quadrilateral "
-      "bodies solved by every process (Body owners = all) and not adapted. "
+      "bodies solved by every process (Body owners = all). "
       "'shared': parallel::shared::Triangulation, every process keeps the "
       "whole mesh and assembles its part. 'auto': distributed where "
       "possible, shared elsewhere.");
   }
 
   bool
-  ParallelParameters::distributed_mesh(const BodyParameters       &body,
-                                       const AdaptationParameters &adaptation,
-                                       const unsigned int n_processes) const
+  ParallelParameters::distributed_mesh(const BodyParameters &body,
+                                       const unsigned int    n_processes) const
   {
     if (n_processes <= 1 || mesh == "shared")
       return false;
     const bool on_every_process =
       mode == "all" ||
       (mode == "list" && body_groups.at(body.name).size() == n_processes);
-    const bool adapted =
-      adaptation.enabled() &&
-      std::find(adaptation.bodies.begin(), adaptation.bodies.end(), body.name) !=
-        adaptation.bodies.end();
-    return on_every_process && body.cell_type == "quadrilateral" && !adapted;
+    return on_every_process && body.cell_type == "quadrilateral";
   }
 
   bool
@@ -964,12 +959,12 @@ namespace ddcontact
     if (parallel.mesh == "distributed" && n_world_processes() > 1)
       for (const auto &body : bodies)
         if (body.cell_type == "quadrilateral" &&
-            !parallel.distributed_mesh(body, adaptation, n_world_processes()))
+            !parallel.distributed_mesh(body, n_world_processes()))
           throw InputError(
             "Parallel/Mesh: distributed, but body '" + body.name +
-            "' is adapted or not solved by every process (distributed "
-            "meshes need Body owners = all and no adaptation); use Mesh = "
-            "auto or shared");
+            "' is not solved by every process (distributed meshes need "
+            "Body owners = all, or a list that gives the body every "
+            "process); use Mesh = auto or shared");
     if (dd.solver == "monolithic" && n_world_processes() > 1)
       throw InputError("Domain decomposition/Solver: monolithic runs on one "
                        "process; use Solver = dd under mpirun");

@@ -81,7 +81,6 @@ namespace ddcontact
         partitioned ? MPI_COMM_WORLD : MPI_COMM_SELF,
         partitioned && parameters.parallel.distributed_mesh(
                          body_parameters,
-                         parameters.adaptation,
                          Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD))));
       // Assembled and factorized only where it is solved, below.
       bodies.back()->set_solved_here(false);
@@ -274,22 +273,16 @@ namespace ddcontact
   Simulation::output_adaptation_step()
   {
     output_results(n_output_steps);
-    if (!writes_files)
-    {
-      ++n_output_steps;
-      return;
-    }
     // The adapted meshes with the von Mises stress and eta per cell, for
-    // plots without ParaView (the paper's Figs. 4 and 7).
+    // plots without ParaView (the paper's Figs. 4 and 7). The rows of a
+    // distributed mesh come from all processes, in their order.
     for (const auto &a : adaptations)
     {
-      const auto        &body = a->get_body();
-      std::ostringstream name;
-      name << parameters.output_directory << "/cells_" << body.name() << '-'
-           << std::setw(4) << std::setfill('0') << n_output_steps << ".csv";
-      std::ofstream out(name.str());
-      out << "x0,y0,x1,y1,x2,y2,x3,y3,level,von_mises,eta\n"
-          << std::setprecision(8);
+      const auto &body = a->get_body();
+      if (!writes_files && !body.is_mesh_distributed())
+        continue;
+      std::ostringstream rows;
+      rows << std::setprecision(8);
       const Quadrature<2> centre = body.is_simplex()
                                      ? Quadrature<2>(QGaussSimplex<2>(1))
                                      : Quadrature<2>(QGauss<2>(1));
@@ -301,6 +294,8 @@ namespace ddcontact
       const auto dilatation = body.reduced_dilatation(body.get_solution());
       for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       {
+        if (!body.computes(cell))
+          continue;
         fe_values.reinit(cell);
         fe_values[displacement].get_function_symmetric_gradients(
           body.get_solution(), strain);
@@ -310,16 +305,33 @@ namespace ddcontact
           (cell->n_vertices() == 3) ? std::array<unsigned int, 4>{{0, 1, 2, 2}}
                                     : std::array<unsigned int, 4>{{0, 1, 3, 2}};
         for (const unsigned int v : corners)
-          out << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ',';
+          rows << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ',';
         const unsigned int c = cell->active_cell_index();
-        out << cell->level() << ','
-            << body.get_material().von_mises(
-                 body.stress_from_strain(strain[0], dilatation, c))
-            << ','
-            << (eta.size() == body.get_triangulation().n_active_cells() ? eta(c)
-                                                                        : 0.)
-            << '\n';
+        rows << cell->level() << ','
+             << body.get_material().von_mises(
+                  body.stress_from_strain(strain[0], dilatation, c))
+             << ','
+             << (eta.size() == body.get_triangulation().n_active_cells() ?
+                   eta(c) :
+                   0.)
+             << '\n';
       }
+      std::string text = rows.str();
+      if (body.is_mesh_distributed())
+      {
+        const auto pieces = Utilities::MPI::gather(
+          body.get_triangulation().get_communicator(), text, 0);
+        text.clear();
+        for (const auto &piece : pieces)
+          text += piece;
+      }
+      if (!writes_files)
+        continue;
+      std::ostringstream name;
+      name << parameters.output_directory << "/cells_" << body.name() << '-'
+           << std::setw(4) << std::setfill('0') << n_output_steps << ".csv";
+      std::ofstream out(name.str());
+      out << "x0,y0,x1,y1,x2,y2,x3,y3,level,von_mises,eta\n" << text;
     }
     ++n_output_steps;
   }
@@ -345,12 +357,8 @@ namespace ddcontact
         error2 += std::pow(a->fem_bem()->global_error(), 2);
         norm2 += std::pow(a->fem_bem()->stress_norm(), 2);
       }
-      const auto &eta = a->indicators();
-      if (eta.size() > 0)
-      {
-        eta_max = std::max(eta_max, eta.linfty_norm());
-        eta_sum += eta.l1_norm();
-      }
+      eta_max = std::max(eta_max, a->eta_max());
+      eta_sum += a->eta_sum();
     }
     unsigned int capped = 0;
     for (const auto &a : adaptations)
@@ -619,9 +627,8 @@ namespace ddcontact
       {
         Json e = Json::object();
         e.set("body", a->get_body().name());
-        const auto &eta = a->indicators();
-        e.set("eta_max", eta.size() ? eta.linfty_norm() : 0.);
-        e.set("eta_sum", eta.size() ? eta.l1_norm() : 0.);
+        e.set("eta_max", a->eta_max());
+        e.set("eta_sum", a->eta_sum());
         e.set("capped_cells", a->n_capped());
         if (const auto *fb = a->fem_bem())
         {
@@ -658,6 +665,16 @@ namespace ddcontact
       timings.set("exchange between processes",
                   distribution->exchange_seconds());
     json.set("timings", timings);
+
+    // Peak resident memory (VmHWM) of the processes: what a distributed
+    // mesh saves.
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    const double peak_mb = memory.VmHWM / 1024.;
+    Json         peak    = Json::object();
+    peak.set("largest_process_mb", Utilities::MPI::max(peak_mb, MPI_COMM_WORLD));
+    peak.set("all_processes_mb", Utilities::MPI::sum(peak_mb, MPI_COMM_WORLD));
+    json.set("peak_memory", peak);
 
     summary_json = json;
     if (writes_files)

@@ -5,8 +5,11 @@
 // equal the whole evaluation, and the result equals the one with both
 // bodies on one process to 1e-10; then with every body partitioned between
 // both processes (Body owners = all): the adapted mesh is repartitioned
-// into two equal halves, and the result equals the serial one
+// into two equal halves, and the result equals the serial one, both with a
+// shared mesh (every process holds all cells) and with a distributed one
+// (p4est: each process holds its half and a ghost layer)
 #include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/tria.h>
 
 #include <ddcontact/simulation.h>
 
@@ -21,7 +24,9 @@ using namespace ddcontact::testing;
 namespace
 {
   std::unique_ptr<Simulation>
-  run(const std::string &source_dir, const std::string &owners)
+  run(const std::string &source_dir,
+      const std::string &owners,
+      const std::string &mesh = "shared")
   {
     return run_scene(source_dir + "/prm/paper_two_bodies.prm",
                      {"Output directory=mpi_adaptive_output",
@@ -33,7 +38,8 @@ namespace
                       "Adaptation/Estimator=fem-bem-scaled",
                       "Adaptation/Delta=0.1",
                       "Adaptation/Max level=4"},
-                     {"Parallel/Body owners=" + owners});
+                     {"Parallel/Body owners=" + owners,
+                      "Parallel/Mesh=" + mesh});
   }
 
   /** A number that differs between processes iff the meshes do. */
@@ -154,6 +160,42 @@ main(int argc, char **argv)
           "partitioned: the same number of DD iterations");
     check(std::abs(f_all - f_b) <= 1e-10 * f_b,
           "partitioned: the same contact force to 1e-10");
+  }
+
+  // The same on a distributed mesh: p4est refines each process's cells,
+  // balances the forest to one irregular hanging node per face and
+  // repartitions; the estimator's BEM gathers the boundary from both
+  // processes and evaluates each one's own cells.
+  {
+    const auto  distributed = run(source_dir, "all", "distributed");
+    const auto &tria =
+      dynamic_cast<const parallel::distributed::Triangulation<2> &>(
+        distributed->get_bodies()[1]->get_triangulation());
+    const auto owned =
+      Utilities::MPI::all_gather(world, tria.n_locally_owned_active_cells());
+    std::cout << "distributed: " << tria.n_global_active_cells()
+              << " cells in Omega_2, " << owned[0] << " on process 0 and "
+              << owned[1] << " on process 1" << std::endl;
+    check(Utilities::MPI::min(one_irregular(tria) ? 1 : 0, world) == 1,
+          "the distributed adapted mesh is one-irregular");
+    check(tria.n_global_active_cells() ==
+            balanced->get_bodies()[1]->get_triangulation().n_active_cells(),
+          "the distributed run refines to the same mesh");
+    check(owned[0] + owned[1] == tria.n_global_active_cells() &&
+            std::max(owned[0], owned[1]) - std::min(owned[0], owned[1]) <= 4,
+          "after refinement each process owns half of Omega_2's cells");
+    // Owned, ghost and (coarser) artificial cells.
+    check(Utilities::MPI::max(tria.n_active_cells(), world) <
+            tria.n_global_active_cells(),
+          "every process holds fewer cells than the whole mesh");
+    const auto f_d = distributed->get_dd_solver().contact_state(0).force_1.norm();
+    std::cout << "force " << f_d << " (distributed); DD iterations "
+              << distributed->get_dd_solver().history().size() << std::endl;
+    check(distributed->get_dd_solver().history().size() ==
+            one->get_dd_solver().history().size(),
+          "distributed: the same number of DD iterations");
+    check(std::abs(f_d - f_b) <= 1e-10 * f_b,
+          "distributed: the same contact force to 1e-10");
   }
 
   const int failed = Utilities::MPI::max(failures, world);

@@ -37,9 +37,13 @@ namespace ddcontact
     inline bool
     one_irregular(const Triangulation<2> &tria)
     {
+      // (On a distributed mesh: the cells this process knows, its own and
+      // its ghosts; every process checks its part.)
       for (const auto &cell : tria.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
         {
+          if (cell->is_artificial())
+            break;
           const auto face = cell->face(f);
           if (face->has_children())
           {

@@ -86,6 +86,20 @@ namespace ddcontact
       return eta;
     }
 
+    /** The largest eta and the sum of eta over all cells of the last
+     * estimate (all processes' cells of a distributed mesh). */
+    double
+    eta_max() const
+    {
+      return eta_maximum;
+    }
+
+    double
+    eta_sum() const
+    {
+      return eta_total;
+    }
+
     /** Cells that eta marked but Max level or Max cells kept unrefined in
      * the last mark(). */
     unsigned int
@@ -107,11 +121,16 @@ namespace ddcontact
     cell_data() const;
 
   private:
+    /** Kelly's indicator of @p u_fem into eta (the baseline estimator). */
+    void
+    estimate_kelly(const Vector<double> &u_fem);
+
     ElasticBody<2>                  &body;
     const AdaptationParameters       parameters;
     std::unique_ptr<FemBemEstimator> fem_bem_estimator;
     Vector<double>                   eta;
-    unsigned int                     capped = 0;
+    double                           eta_maximum = 0, eta_total = 0;
+    unsigned int                     capped      = 0;
   };
 } // namespace ddcontact
 

@@ -76,7 +76,8 @@ namespace ddcontact
      * [active_cell_index][q], ready for the estimator (27). With a
      * communicator of several processes (each holding the same body and
      * boundary solution) every process evaluates a contiguous share of the
-     * cells and all receive all values. */
+     * cells and all receive all values. On a distributed mesh (p4est) each
+     * process evaluates its own cells only. */
     std::vector<std::vector<SymmetricTensor<2, 2>>>
     stress_at_quadrature_points(
       const DoFHandler<2> &dof_handler,

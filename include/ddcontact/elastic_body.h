@@ -69,8 +69,8 @@ namespace ddcontact
    *
    * A quadrilateral body solved by every process may instead have a
    * parallel::distributed::Triangulation (p4est; "Parallel/Mesh"): each
-   * process then keeps only its own cells and a ghost layer, its
-   * constraints hold the locally relevant dofs, and whatever is computed
+   * process then keeps only its own cells and a ghost layer (but all
+   * constraints, which are few: complete_constraints()), and whatever is computed
    * cell by cell (energy, stresses, point values) is computed on the
    * owned cells and summed over the processes. The iterate stays whole on
    * every process, so that the DD loop (20)-(21) is the same for every
@@ -387,6 +387,11 @@ namespace ddcontact
      * process group), where the body is solved. */
     void
     setup_matrix();
+
+    /** On a distributed mesh: replace the constraints of the locally
+     * relevant dofs by those of all dofs, each from its owner. */
+    void
+    complete_constraints();
 
     /** Subdomain ids of the cells: the process group's ranks, the cells
      * split in z-order (quadrilaterals) or in the order of the active

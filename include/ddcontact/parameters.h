@@ -212,14 +212,12 @@ namespace ddcontact
      * each process then keeps only its own cells and a ghost layer, so
      * the mesh memory shrinks with the processes. That needs a body of
      * quadrilaterals solved by every process ("all", or a list giving it
-     * every process: the p4est forest lives on MPI_COMM_WORLD) and not
-     * refined adaptively (the FEM-BEM estimator and the transfer read the
-     * whole mesh). "auto" takes it wherever it is possible, "shared" never.
+     * every process: the p4est forest lives on MPI_COMM_WORLD). "auto"
+     * takes it wherever it is possible, "shared" never.
      */
     bool
-    distributed_mesh(const BodyParameters       &body,
-                     const AdaptationParameters &adaptation,
-                     unsigned int                n_processes) const;
+    distributed_mesh(const BodyParameters &body,
+                     unsigned int          n_processes) const;
 
     static void
     declare(ParameterHandler &prm);
