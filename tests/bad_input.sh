@@ -47,5 +47,27 @@ case_ "body without owner" "'upper' is not listed" "$base" --set "Parallel/Body 
 case_ "body owner range backwards" "is not a process or a range" "$base" --set "Parallel/Body owners=lower: 0, upper: 0-0-0"
 case_ "body owner range beyond the run" "does not exist" "$base" --set "Parallel/Body owners=lower: 0-1, upper: 0"
 
-echo "$((19 - failures)) passed, $failures failed"
+# Under mpirun (2 processes): one line from ddcontact (mpirun adds its own
+# report of the exit code), and no crash on either process.
+mpi_case_() {
+  local name="$1" expect="$2"; shift 2
+  OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+    OMPI_MCA_rmaps_base_oversubscribe=1 DEAL_II_NUM_THREADS=1 \
+    mpirun -np 2 "$exe" --output "$work/out" "$@" >"$work/stdout" 2>"$work/stderr"
+  local code=$? lines
+  lines=$(grep -c "^ddcontact: error" "$work/stderr")
+  if [ $code -eq 0 ] || [ "$lines" -ne 1 ] ||
+     grep -q -E "Stacktrace|Aborted|Signal|Segmentation" "$work/stderr" ||
+     ! grep -q -F -- "$expect" "$work/stderr"; then
+    echo "FAIL $name: exit $code, $lines error line(s) on stderr, expected '$expect':"
+    sed 's/^/    /' "$work/stderr" | head -5
+    failures=$((failures + 1))
+  else
+    echo "ok   $name: $(grep "^ddcontact: error" "$work/stderr")"
+  fi
+}
+mpi_case_ "distributed mesh for a body on one process" "Parallel/Mesh" "$base" --set "Parallel/Mesh=distributed"
+
+total=$(grep -c -E '^(mpi_)?case_ ' "$0")
+echo "$((total - failures)) passed, $failures failed"
 [ $failures -eq 0 ]
