@@ -9,15 +9,15 @@ relative to the list's largest entry, so that a zero force component
 compares at the scale of the force). Also checks that the N-process run
 really solved the bodies on all N processes, and, with
 --expect-repartition, that it moved a body to another process after
-refinement. With --expect-distributed-mesh it checks that every
-quadrilateral body of the N-process run had a p4est mesh
-(Parallel/Mesh), and with --expect-shared-mesh that none had.
+refinement. With --expect-distributed-mesh A,B it checks that exactly the
+bodies A and B of the N-process run had p4est meshes (Parallel/Mesh),
+and with --expect-shared-mesh that none had.
 
 With an iterative body solver, --tolerance T replaces 1e-10 by the
 solver's accuracy.
 
 usage: mpi_compare.py MPIRUN EXE SCENE OUTDIR [--np N] [--tolerance T]
-                      [--expect-repartition] [--expect-distributed-mesh]
+                      [--expect-repartition] [--expect-distributed-mesh A,B]
                       [--expect-shared-mesh]
                       [--set Section/Entry=value ...]
                       [--parallel-set Section/Entry=value ...]
@@ -119,8 +119,11 @@ def main():
         failures.append("no body moved to another process after refinement")
     meshes = {b["name"]: b.get("distributed_mesh") for b in two["bodies"]}
     print(f"  p4est meshes: {meshes}")
-    if "--expect-distributed-mesh" in rest and not all(meshes.values()):
-        failures.append(f"not every body had a distributed mesh: {meshes}")
+    if "--expect-distributed-mesh" in rest:
+        names = rest[rest.index("--expect-distributed-mesh") + 1].split(",")
+        if sorted(n for n, d in meshes.items() if d) != sorted(names):
+            failures.append(f"distributed meshes {meshes}, expected on "
+                            f"{names}")
     if "--expect-shared-mesh" in rest and any(meshes.values()):
         failures.append(f"a body had a distributed mesh: {meshes}")
     for f in failures:
