@@ -11,16 +11,18 @@
 # of quadrilaterals so that both can be distributed: one process, two
 # processes with shared meshes, two with distributed (p4est) meshes;
 # writes doc/scaling-memory.csv. doc/scaling.md discusses both. Usage:
-#   scripts/scaling.sh [REFINEMENT]     (default 6; 5 gives 2.6e5 unknowns)
+#   scripts/scaling.sh [REFINEMENT [PART]]   (REFINEMENT 6 by default, 5
+#   gives 2.6e5 unknowns; PART all (default), time or memory)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install_deps.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 ninja -C build ddcontact
 r=${1:-6}
+part=${2:-all}
 exe=build/ddcontact
 out=doc/scaling-runs
-rm -rf "$out"; mkdir -p "$out"
+mkdir -p "$out"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 common=(prm/paper_two_bodies.prm
         --set "Adaptation/Mode=none" --set "Output/Write vtu=false"
@@ -33,6 +35,7 @@ run() { # name, processes, threads, further --set options
     "${@:4}" --output "$out/$1" > "$out/$1.log"
   grep -E "contact S:|wall time" "$out/$1.log" | sed 's/^/   /'
 }
+if [ "$part" != memory ]; then
 run np1_threads1 1 1
 run np1_threads2 1 2
 run np2_threads1 2 1
@@ -57,6 +60,8 @@ with open(csv, "w") as f:
         f.write(",".join(str(x) for x in row) + "\n")
 print(open(csv).read())
 PY
+fi
+[ "$part" = time ] && exit 0
 
 # Memory: the same scene with omega1 of quadrilaterals (2 x 526850 dofs
 # at r = 6), every body on both processes.
@@ -73,7 +78,8 @@ phases = ["setup", "contact setup", "contact solve", "body solves"]
 with open(csv, "w") as f:
     f.write("run,processes,mesh,dofs,dd_iterations,force,wall_s,"
             + ",".join(p.replace(" ", "_") + "_s" for p in phases)
-            + ",peak_memory_largest_process_mb,peak_memory_all_processes_mb\n")
+            + ",peak_memory_largest_process_mb,peak_memory_all_processes_mb"
+            + ",mesh_memory_largest_process_mb\n")
     for name, n, mesh in [("quads_np1", 1, "serial"),
                           ("quads_np2_shared", 2, "shared"),
                           ("quads_np2_distributed", 2, "distributed")]:
@@ -85,7 +91,8 @@ with open(csv, "w") as f:
                f"{s['wall_time_s']:.3f}"]
         row += [f"{tm.get(p, 0.0):.3f}" for p in phases]
         row += [f"{s['peak_memory']['largest_process_mb']:.1f}",
-                f"{s['peak_memory']['all_processes_mb']:.1f}"]
+                f"{s['peak_memory']['all_processes_mb']:.1f}",
+                f"{sum(b['mesh_memory_mb'] for b in s['bodies']):.1f}"]
         f.write(",".join(str(x) for x in row) + "\n")
 print(open(csv).read())
 PY

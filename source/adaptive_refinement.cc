@@ -31,6 +31,40 @@ namespace ddcontact
       // R = ab bc ca / (4 area), r = area / s with s the half perimeter.
       return {ab * bc * ca / (2. * area), 4. * area / (ab + bc + ca)};
     }
+    /**
+     * Flag the cells with the largest @p criteria: a fixed fraction of the
+     * cells (@p by_number) or of the sum of the criteria. On a distributed
+     * mesh over all processes' cells (deal.II searches the threshold in
+     * parallel).
+     */
+    void
+    refine_fixed(Triangulation<2>     &tria,
+                 const Vector<double> &criteria,
+                 const double          fraction,
+                 const bool            by_number)
+    {
+      namespace distributed = parallel::distributed::GridRefinement;
+      if (auto *forest =
+            dynamic_cast<parallel::distributed::Triangulation<2> *>(&tria))
+      {
+        if (by_number)
+          distributed::refine_and_coarsen_fixed_number(
+            *forest, criteria, fraction, 0.);
+        else
+          distributed::refine_and_coarsen_fixed_fraction(
+            *forest, criteria, fraction, 0.);
+      }
+      else if (by_number)
+        GridRefinement::refine_and_coarsen_fixed_number(tria,
+                                                        criteria,
+                                                        fraction,
+                                                        0.);
+      else
+        GridRefinement::refine_and_coarsen_fixed_fraction(tria,
+                                                          criteria,
+                                                          fraction,
+                                                          0.);
+    }
   } // namespace
 
   ElementDiameters
@@ -147,21 +181,7 @@ namespace ddcontact
           cell->set_refine_flag();
     }
     else if (parameters.marking == "fraction")
-    {
-      if (body.is_mesh_distributed())
-        // The fraction of all processes' cells (a parallel search for the
-        // threshold).
-        parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-          dynamic_cast<parallel::distributed::Triangulation<2> &>(tria),
-          eta,
-          parameters.fraction,
-          0.);
-      else
-        GridRefinement::refine_and_coarsen_fixed_number(tria,
-                                                        eta,
-                                                        parameters.fraction,
-                                                        0.);
-    }
+      refine_fixed(tria, eta, parameters.fraction, true);
     else
     {
       // Doerfler (bulk) marking on eta^2: the error is the l2 sum of the
@@ -169,18 +189,7 @@ namespace ddcontact
       Vector<double> eta2(eta.size());
       for (unsigned int c = 0; c < eta.size(); ++c)
         eta2(c) = eta(c) * eta(c);
-      if (body.is_mesh_distributed())
-        parallel::distributed::GridRefinement::
-          refine_and_coarsen_fixed_fraction(
-            dynamic_cast<parallel::distributed::Triangulation<2> &>(tria),
-            eta2,
-            parameters.fraction,
-            0.);
-      else
-        GridRefinement::refine_and_coarsen_fixed_fraction(tria,
-                                                          eta2,
-                                                          parameters.fraction,
-                                                          0.);
+      refine_fixed(tria, eta2, parameters.fraction, false);
     }
 
     unsigned int marked = 0;

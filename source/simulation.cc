@@ -546,6 +546,14 @@ namespace ddcontact
       b.set("name", body->name());
       b.set("cells", body->n_active_cells());
       b.set("distributed_mesh", body->is_mesh_distributed());
+      // What the mesh, its dofs and constraints take on the process that
+      // holds the most of them (a distributed mesh: its share).
+      const double mesh_mb =
+        (body->get_triangulation().memory_consumption() +
+         body->get_dof_handler().memory_consumption() +
+         body->get_constraints().memory_consumption()) /
+        1048576.;
+      b.set("mesh_memory_mb", Utilities::MPI::max(mesh_mb, MPI_COMM_WORLD));
       b.set("dofs", static_cast<unsigned long>(body->n_dofs()));
       b.set("min_cell_diameter", body->min_cell_diameter());
       b.set("strain_energy", body->strain_energy(body->get_solution()));

@@ -31,7 +31,7 @@ import sys
 TOLERANCE = 1e-10
 # Not results: where the bodies were solved, and how long it took.
 IGNORED = {"mpi_processes", "body_owners", "wall_time_s", "timings",
-           "distributed_mesh", "peak_memory"}
+           "distributed_mesh", "peak_memory", "mesh_memory_mb"}
 # Changes of the iterate divided by its norm: already relative to the
 # solution, so compared to 1e-10 absolutely (a different direct solver's
 # round-off, 1e-16 of |u|, is 1e-10 of a residual of 1e-6).
