@@ -1181,7 +1181,7 @@ namespace ddcontact
     const unsigned int n_cells =
       dof_handler.get_triangulation().n_active_cells();
     // A distributed mesh (p4est): this process evaluates its own cells,
-    // and the other cells' entries stay zero (no process needs them).
+    // and the other cells' entries stay empty (no process needs them).
     if (dynamic_cast<const parallel::DistributedTriangulationBase<2> *>(
           &dof_handler.get_triangulation()))
     {

@@ -753,6 +753,7 @@ namespace ddcontact
   void
   ElasticBody<dim>::refine_and_transfer()
   {
+    triangulation->prepare_coarsening_and_refinement();
     if (mesh_distributed)
     {
       // p4est refines the owned cells, repartitions, and moves the
@@ -772,7 +773,6 @@ namespace ddcontact
       parallel::distributed::SolutionTransfer<dim,
                                               TrilinosWrappers::MPI::Vector>
         transfer(dof_handler);
-      triangulation->prepare_coarsening_and_refinement();
       transfer.prepare_for_coarsening_and_refinement(ghosted);
       triangulation->execute_coarsening_and_refinement();
 
@@ -781,22 +781,17 @@ namespace ddcontact
                                           comm);
       transfer.interpolate(moved);
       gather_in_group(moved, solution);
-      // New hanging nodes and the Dirichlet data (5) on new boundary
-      // vertices.
-      constraints.distribute(solution);
-      assemble_system();
-      factorize();
-      return;
     }
+    else
+    {
+      SolutionTransfer<dim, Vector<double>> transfer(dof_handler);
+      const Vector<double>                  old_solution = solution;
+      transfer.prepare_for_coarsening_and_refinement(old_solution);
+      triangulation->execute_coarsening_and_refinement();
 
-    SolutionTransfer<dim, Vector<double>> transfer(dof_handler);
-    const Vector<double>                  old_solution = solution;
-    triangulation->prepare_coarsening_and_refinement();
-    transfer.prepare_for_coarsening_and_refinement(old_solution);
-    triangulation->execute_coarsening_and_refinement();
-
-    setup_system();
-    transfer.interpolate(old_solution, solution);
+      setup_system();
+      transfer.interpolate(old_solution, solution);
+    }
     // New hanging nodes and the Dirichlet data (5) on new boundary vertices.
     constraints.distribute(solution);
     if (solved_here)
