@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <map>
 
 namespace ddcontact
 {
@@ -36,7 +38,7 @@ namespace ddcontact
             if (cell->face(f)->at_boundary() &&
                 cell->face(f)->boundary_id() == id)
             {
-              ZoneFace z{cell,
+              ZoneFace           z{cell,
                          cell->face(f)->vertex(0),
                          cell->face(f)->vertex(1),
                          Tensor<1, 2>()};
@@ -53,8 +55,8 @@ namespace ddcontact
 
       std::vector<std::array<double, 6>> mine;
       for (const auto &z : faces)
-        mine.push_back({{z.a[0], z.a[1], z.b[0], z.b[1], z.normal[0],
-                         z.normal[1]}});
+        mine.push_back(
+          {{z.a[0], z.a[1], z.b[0], z.b[1], z.normal[0], z.normal[1]}});
       faces.clear();
       for (const auto &from_process : Utilities::MPI::all_gather(
              body.get_triangulation().get_communicator(), mine))
@@ -64,6 +66,56 @@ namespace ddcontact
                            Point<2>(g[2], g[3]),
                            Tensor<1, 2>({g[4], g[5]})});
       return faces;
+    }
+
+    /** An end of a zone that is not closed: a vertex of only one of its
+     * faces, with the direction that leaves the zone there (along that
+     * face, away from its other vertex). */
+    struct ZoneEnd
+    {
+      Point<2>     vertex;
+      Tensor<1, 2> outward;
+    };
+
+    /** The ends of the zone made of @p faces: vertices shared by two faces
+     * are the same doubles (one vertex of the mesh, or gathered exactly
+     * from another process), so they are matched exactly. */
+    std::vector<ZoneEnd>
+    zone_ends(const std::vector<ZoneFace> &faces)
+    {
+      std::map<std::pair<double, double>, std::vector<unsigned int>> faces_at;
+      for (unsigned int i = 0; i < faces.size(); ++i)
+      {
+        faces_at[{faces[i].a[0], faces[i].a[1]}].push_back(i);
+        faces_at[{faces[i].b[0], faces[i].b[1]}].push_back(i);
+      }
+      std::vector<ZoneEnd> ends;
+      for (const auto &[vertex, at] : faces_at)
+        if (at.size() == 1)
+        {
+          const auto    &f = faces[at[0]];
+          const Point<2> v(vertex.first, vertex.second);
+          const Point<2> other = (v == f.a) ? f.b : f.a;
+          ends.push_back({v, (v - other) / (v - other).norm()});
+        }
+      return ends;
+    }
+
+    /** Whether @p x, whose closest point on the zone is @p projection,
+     * lies beyond one of the zone's ends (then the closest point is that
+     * end, and x is on the far side of the end's normal line). The
+     * tolerance is relative to the length @p h of the face of x. */
+    bool
+    beyond_zone_end(const Point<2>             &x,
+                    const Point<2>             &projection,
+                    const std::vector<ZoneEnd> &ends,
+                    const double                h)
+    {
+      for (const auto &end : ends)
+        if (projection.distance(end.vertex) <= 1e-12 * h &&
+            (x - end.vertex) * end.outward > 1e-10 * h)
+          return true;
+      return false;
     }
 
     /**
@@ -161,8 +213,9 @@ namespace ddcontact
                     body.get_mapping());
       if (Utilities::MPI::broadcast(comm, remote.all_points_found(), 0) ==
           false)
-        throw InputError(section + ": a contact point lies in no cell of "
-                                   "body '" +
+        throw InputError(section +
+                         ": a contact point lies in no cell of "
+                         "body '" +
                          body.name() + "'");
       std::vector<PointShape> shapes, buffer;
       remote.evaluate_and_process<PointShape>(
@@ -179,7 +232,7 @@ namespace ddcontact
               &body.get_dof_handler());
             const unsigned int begin = cell_data.reference_point_ptrs[c],
                                end   = cell_data.reference_point_ptrs[c + 1];
-            const auto         in_cell =
+            const auto in_cell =
               point_shapes(body,
                            cell,
                            std::vector<Point<2>>(
@@ -263,6 +316,7 @@ namespace ddcontact
       vertices_2.push_back(f.a);
       vertices_2.push_back(f.b);
     }
+    const auto ends_2 = zone_ends(faces_2);
 
     const QGauss<1> gauss(parameters.n_gauss);
     contact_points.clear();
@@ -278,6 +332,18 @@ namespace ddcontact
       for (const auto &v : vertices_2)
       {
         const double s = (v - face.a) * t / (length * length);
+        if (s > 1e-10 && s < 1. - 1e-10)
+          breaks.push_back(s);
+      }
+      // Where the normal line through an end of S_2 crosses the face: the
+      // points beyond it have no orthogonal projection on S_2 and drop out
+      // (below), so no piece straddles the edge of the zone.
+      for (const auto &end : ends_2)
+      {
+        const double along = t * end.outward;
+        if (std::abs(along) < 1e-12 * length)
+          continue;
+        const double s = (end.vertex - face.a) * end.outward / along;
         if (s > 1e-10 && s < 1. - 1e-10)
           breaks.push_back(s);
       }
@@ -318,18 +384,39 @@ namespace ddcontact
               p.projection = candidate;
             }
           }
+          // A point beyond an end of S_2 has no partner on S_2 and cannot
+          // touch it: the closest point would be that end, and the point
+          // would be pressed against the end's displacement (a zone S_1
+          // longer than S_2 would be loaded where nothing touches it).
+          if (beyond_zone_end(p.x, p.projection, ends_2, length))
+            continue;
           p.gap = gap_function ? gap_function->value(p.x)
                                : (p.projection - p.x) * p.normal;
+          if (!std::isfinite(p.gap))
+            throw InputError(section + "Gap: the gap is " +
+                             std::to_string(p.gap) + " at x = (" +
+                             std::to_string(p.x[0]) + ", " +
+                             std::to_string(p.x[1]) +
+                             ") of S_1; give an expression that is finite "
+                             "on the whole zone");
           if (!body_2.is_mesh_distributed())
             shapes_2.push_back(
               point_shapes_at(body_2, owner->cell, {p.projection})[0]);
           xs.push_back(p.x);
           contact_points.push_back(p);
         }
-      if (!body_1.is_mesh_distributed())
+      if (!body_1.is_mesh_distributed() && !xs.empty())
         for (const auto &shape : point_shapes_at(body_1, face.cell, xs))
           shapes_1.push_back(shape);
     }
+
+    if (contact_points.empty())
+      throw InputError(
+        section + "Boundary id 1: no point of the zone of '" + body_1.name() +
+        "' (boundary id " + std::to_string(parameters.boundary_id_1) +
+        ") lies within the zone of '" + body_2.name() + "' (boundary id " +
+        std::to_string(parameters.boundary_id_2) +
+        "): the normal lines of S_2 do not meet S_1");
 
     if (body_1.is_mesh_distributed() || body_2.is_mesh_distributed())
     {
@@ -348,11 +435,21 @@ namespace ddcontact
     for (unsigned int q = 0; q < contact_points.size(); ++q)
     {
       auto &p = contact_points[q];
-      couple(
-        shapes_1[q], body_1.get_fe(), p.normal, p.dofs_1, p.a, p.load_dofs_1, p.load_1);
+      couple(shapes_1[q],
+             body_1.get_fe(),
+             p.normal,
+             p.dofs_1,
+             p.a,
+             p.load_dofs_1,
+             p.load_1);
       // n_2 = -n_1 (small-gap assumption).
-      couple(
-        shapes_2[q], body_2.get_fe(), -p.normal, p.dofs_2, p.b, p.load_dofs_2, p.load_2);
+      couple(shapes_2[q],
+             body_2.get_fe(),
+             -p.normal,
+             p.dofs_2,
+             p.b,
+             p.load_dofs_2,
+             p.load_2);
     }
 
     // Thickness of both bodies along the mean normal of S_1 (the x axis
@@ -363,9 +460,8 @@ namespace ddcontact
     mean = (mean.norm() > 0) ? mean / mean.norm() : Tensor<1, 2>({1., 0.});
     const auto extent_1 = body_1.extent_along(mean);
     const auto extent_2 = body_2.extent_along(mean);
-    thickness_1         = parameters.thickness > 0 ?
-                            parameters.thickness :
-                            extent_1.second - extent_1.first;
+    thickness_1         = parameters.thickness > 0 ? parameters.thickness
+                                                   : extent_1.second - extent_1.first;
     thickness_2         = extent_2.second - extent_2.first;
 
     // theta = c H / E_1 (paper, section 6), or given.
