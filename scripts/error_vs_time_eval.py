@@ -248,7 +248,8 @@ def hertz_errors(run_dir, q, prof):
     """Closed form (HERTZ.md) at the computed force P: a = sqrt(4PR/(pi E*)),
     p0 = sqrt(P E* / (pi R)). The computed half-width is the least-squares
     fit of p^2 = p0^2 (1 - x^2/a^2) over the points in contact (as in
-    doc/contact-dd.md); the peak pressure is max_pressure; the profile error
+    doc/contact-dd.md), or the largest |x| in contact where fewer than two
+    distinct |x| are; the peak pressure is max_pressure; the profile error
     is the L2 distance to p0 sqrt(1 - x^2/a^2)."""
     e_star, R = hertz_constants(run_dir)
     P = q["force"]
@@ -259,8 +260,11 @@ def hertz_errors(run_dir, q, prof):
     sx = sum(t for t, _ in pts); sy = sum(v for _, v in pts)
     sxx = sum(t * t for t, _ in pts); sxy = sum(t * v for t, v in pts)
     den = n * sxx - sx * sx
-    a_fit = float("nan")
-    if n >= 2 and den != 0:
+    # Fewer than two distinct |x| in contact (a coarse mesh with exact
+    # contact: one point each side) cannot fit a line; the half-width is
+    # then the active set's, known only to the point spacing.
+    a_fit = max((math.sqrt(t) for t, _ in pts), default=float("nan"))
+    if len({round(t, 12) for t, _ in pts}) >= 2 and den != 0:
         B = (n * sxy - sx * sy) / den
         A = (sy - B * sx) / n
         if B < 0 and A > 0:

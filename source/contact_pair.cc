@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <sstream>
 
 namespace ddcontact
 {
@@ -469,6 +470,26 @@ namespace ddcontact
               ? parameters.penalty * thickness_1 /
                   body_1.get_material().youngs_modulus
               : parameters.penalty;
+    // The penalty relative to the body, c = theta E_1 / H_1: below 1e-12 the
+    // penetration theta p is below round-off of the displacements and the
+    // pressure g/theta is round-off amplified by 1e12 (no solver can tell
+    // contact from separation).
+    const double extent = extent_1.second - extent_1.first;
+    const double c      = theta * body_1.get_material().youngs_modulus / extent;
+    if (!(c >= 1e-12) || !std::isfinite(theta))
+    {
+      std::ostringstream s;
+      s << section
+        << (parameters.penalty_type == "relative" && parameters.thickness > 0
+              ? "Thickness"
+              : "Penalty")
+        << ": theta = " << theta << " is " << c << " times H/E_1 of body '"
+        << body_1.name() << "' (H = " << extent
+        << "); a penalty below 1e-12 H/E_1 is lost in round-off: raise it, "
+           "or use Domain decomposition/Augmented Lagrangian = true with a "
+           "larger penalty";
+      throw InputError(s.str());
+    }
   }
 
   void

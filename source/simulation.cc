@@ -747,7 +747,12 @@ namespace ddcontact
       }
       if (!parameters.adaptation.enabled())
         output_results(0);
-      write_summary("converged");
+      // "converged" only if the augmented Lagrangian met its tolerance too.
+      const std::string shortfall =
+        dd_solver->augmented_lagrangian_shortfall();
+      write_summary(shortfall.empty() ? "converged" : "stalled");
+      if (!shortfall.empty())
+        throw DivergenceError(shortfall);
     }
 
     timer.print_summary();

@@ -118,7 +118,8 @@ namespace ddcontact
     /**
      * The augmented Lagrangian's outer step, after the iteration on the
      * current multipliers has converged: if the penetration is still above
-     * the tolerance and still shrinking, set lambda <- sigma_n (the
+     * the tolerance and not yet at the limit of non-matching meshes (no
+     * longer shrinking, after falling tenfold), set lambda <- sigma_n (the
      * converged pressure) and start a new phase of the DD (returns true);
      * otherwise leave lambda as it is, so that the iterate and the
      * reported pressure stay consistent (returns false). Always false
@@ -127,6 +128,14 @@ namespace ddcontact
      */
     bool
     start_uzawa_phase();
+
+    /** Empty when the augmented Lagrangian is off, met its tolerance on
+     * the current iterate, or stopped at the limit of non-matching meshes
+     * (see start_uzawa_phase()); otherwise the one-line message that says how
+     * far it is off and what to change (the run must not say
+     * "converged"). */
+    std::string
+    augmented_lagrangian_shortfall() const;
 
     /** The Uzawa multipliers lambda of every pair, at its contact points
      * (zero without the augmented Lagrangian). */
@@ -176,6 +185,29 @@ namespace ddcontact
     /** Penalty pressure of pair p from the displacements u. */
     std::vector<double>
     pressure(unsigned int p, const std::vector<Vector<double>> &u) const;
+
+    /** The bodies' current solutions u^k. */
+    std::vector<Vector<double>>
+    current_iterate() const;
+
+    /** The largest penetration u_1n + u_2n - f_n over all pairs, and its
+     * ratio to the largest approach |u_1n| + |u_2n| (the measure of the
+     * AL tolerance). */
+    std::pair<double, double>
+    penetration() const;
+
+    /** Throw, naming the cause, if the pressure last_sigma_n[p] computed
+     * from @p u is not finite: a DivergenceError if @p u is not finite, an
+     * InputError naming the penalty if g/theta overflowed. */
+    void
+    check_finite_pressure(unsigned int                       p,
+                          const std::vector<Vector<double>> &u,
+                          unsigned int                       iteration) const;
+
+    /** The smallest residual of the current Uzawa phase and its
+     * iteration. */
+    std::pair<double, unsigned int>
+    best_of_phase() const;
 
     /** Solve every body b with the extra load loads[b] (empty: none), each
      * on its process, concurrently; every process receives all u[b]. */
@@ -227,6 +259,8 @@ namespace ddcontact
     unsigned int                     uzawa_updates      = 0; // whole run
     unsigned int                     mesh_uzawa_updates = 0; // this mesh
     double                           last_penetration   = 0;
+    double first_penetration = 0; // at the first Uzawa check of this mesh
+    bool   mesh_limited = false;  // the last check stopped at the mesh limit
     unsigned int phase_start = 0; // first record of this Uzawa phase
     double       gamma       = 0;
     Timer        timer;
