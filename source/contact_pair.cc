@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <sstream>
 
@@ -67,6 +68,16 @@ namespace ddcontact
                            Point<2>(g[2], g[3]),
                            Tensor<1, 2>({g[4], g[5]})});
       return faces;
+    }
+
+    /** "the gap is f at x = (x1, x2)", for messages. */
+    std::string
+    gap_at(const ContactPoint &p)
+    {
+      std::ostringstream s;
+      s << std::setprecision(6) << "the gap is " << p.gap << " at x = ("
+        << p.x[0] << ", " << p.x[1] << ")";
+      return s.str();
     }
 
     /** An end of a zone that is not closed: a vertex of only one of its
@@ -394,11 +405,8 @@ namespace ddcontact
           p.gap = gap_function ? gap_function->value(p.x)
                                : (p.projection - p.x) * p.normal;
           if (!std::isfinite(p.gap))
-            throw InputError(section + "Gap: the gap is " +
-                             std::to_string(p.gap) + " at x = (" +
-                             std::to_string(p.x[0]) + ", " +
-                             std::to_string(p.x[1]) +
-                             ") of S_1; give an expression that is finite "
+            throw InputError(section + "Gap: " + gap_at(p) +
+                             " of S_1; give an expression that is finite "
                              "on the whole zone");
           if (!body_2.is_mesh_distributed())
             shapes_2.push_back(
@@ -464,6 +472,14 @@ namespace ddcontact
     thickness_1         = parameters.thickness > 0 ? parameters.thickness
                                                    : extent_1.second - extent_1.first;
     thickness_2         = extent_2.second - extent_2.first;
+
+    // An initial overlap deeper than both bodies together is no small-strain
+    // contact problem (a gap given in other units, or a sign error).
+    for (const auto &p : contact_points)
+      if (p.gap < -(extent_1.second - extent_1.first + thickness_2))
+        throw InputError(section + "Gap: " + gap_at(p) +
+                         ", an overlap deeper than both bodies together; "
+                         "check its sign and units");
 
     // theta = c H / E_1 (paper, section 6), or given.
     theta = (parameters.penalty_type == "relative")

@@ -77,6 +77,23 @@ namespace ddcontact
   NeumannDDSolver::solve_all(const std::vector<Vector<double>> &loads,
                              std::vector<Vector<double>>       &u) const
   {
+    // A contact load beyond the floating-point range would come back as a
+    // non-finite displacement blamed on the body; name the pairs instead.
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (loads[b].size() > 0 && !std::isfinite(loads[b].linfty_norm()))
+      {
+        std::string entries;
+        for (const auto *pair : pairs)
+          if (&pair->get_body_1() == bodies[b] ||
+              &pair->get_body_2() == bodies[b])
+            entries += (entries.empty() ? "" : ", ") +
+                       ("Contact pair " + pair->name() + "/Gap");
+        throw InputError(entries + ": the contact load on body '" +
+                         bodies[b]->name() +
+                         "' is beyond the floating-point range (gap / theta "
+                         "overflows); check the gap's magnitude and the "
+                         "Penalty");
+      }
     // The body problems of (20) are independent: solve them concurrently,
     // each on the process that owns it.
     u.resize(bodies.size());
