@@ -1,50 +1,36 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_direct.h>
 
+#include <ddcontact/errors.h>
 #include <ddcontact/monolithic_solver.h>
-#include <ddcontact/neumann_dd_solver.h>
 
 namespace ddcontact
 {
   MonolithicContactSolver::MonolithicContactSolver(
-    const std::vector<ElasticBody<2> *> &bodies,
-    const std::vector<ContactPair *>    &pairs,
-    const unsigned int                   max_iterations,
-    ConditionalOStream                  &pcout)
-    : bodies(bodies)
-    , pairs(pairs)
+    const ContactProblem &problem,
+    const unsigned int    max_iterations,
+    ConditionalOStream   &pcout)
+    : problem(problem)
     , max_iterations(max_iterations)
     , pcout(pcout)
   {
   }
 
   unsigned int
-  MonolithicContactSolver::run(
-    const std::vector<std::vector<double>> &multipliers)
+  MonolithicContactSolver::run()
   {
+    const auto &bodies = problem.get_bodies();
+    const auto &pairs  = problem.get_pairs();
     // lambda + g/theta = (f_n + theta lambda - u_1n - u_2n)/theta: the
     // multipliers shift the gap of every contact point.
     const auto gap = [&](const unsigned int p, const unsigned int q)
-    {
-      const auto &pt = pairs[p]->points()[q];
-      return multipliers.empty()
-               ? pt.gap
-               : pt.gap + pairs[p]->penalty() * multipliers[p][q];
-    };
+    { return problem.law(p).shifted_gap(q); };
 
     // One global numbering: the bodies' dofs one after another.
     std::vector<types::global_dof_index> offset(bodies.size() + 1, 0);
     for (unsigned int b = 0; b < bodies.size(); ++b)
       offset[b + 1] = offset[b] + bodies[b]->n_dofs();
-    const auto n     = offset.back();
-    const auto index = [&](const ElasticBody<2> &body)
-    {
-      for (unsigned int b = 0; b < bodies.size(); ++b)
-        if (bodies[b] == &body)
-          return b;
-      AssertThrow(false, ExcInternalError());
-      return 0u;
-    };
+    const auto n = offset.back();
 
     // The bodies' constraints (hanging nodes, Dirichlet data), shifted.
     AffineConstraints<double> constraints;
@@ -65,9 +51,9 @@ namespace ddcontact
     {
       std::vector<types::global_dof_index> dofs;
       for (const auto i : p.dofs_1)
-        dofs.push_back(i + offset[index(pair.get_body_1())]);
+        dofs.push_back(i + offset[problem.body_index(pair.get_body_1())]);
       for (const auto i : p.dofs_2)
-        dofs.push_back(i + offset[index(pair.get_body_2())]);
+        dofs.push_back(i + offset[problem.body_index(pair.get_body_2())]);
       return dofs;
     };
 
@@ -141,7 +127,7 @@ namespace ddcontact
       Vector<double> rhs(base_rhs);
       for (unsigned int p = 0; p < pairs.size(); ++p)
       {
-        const double theta = pairs[p]->penalty();
+        const double theta = problem.law(p).theta();
         const auto  &pts   = pairs[p]->points();
         for (unsigned int q = 0; q < pts.size(); ++q)
           if (active[p][q])

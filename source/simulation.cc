@@ -175,12 +175,11 @@ namespace ddcontact
 
     // Semismooth Newton on the penalised problem, inside the same Uzawa
     // loop as the DD when the augmented Lagrangian is on.
-    MonolithicContactSolver newton(raw_pointers(bodies),
-                                   raw_pointers(contact_pairs),
+    MonolithicContactSolver newton(dd_solver->get_problem(),
                                    parameters.dd.n_newton,
                                    pcout);
     do
-      n_newton_iterations += newton.run(dd_solver->get_multipliers());
+      n_newton_iterations += newton.run();
     while (dd_solver->start_uzawa_phase());
     dd_solver->adopt_current_iterate();
     return 0;

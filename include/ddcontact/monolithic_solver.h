@@ -3,9 +3,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
-#include <ddcontact/contact_pair.h>
-#include <ddcontact/elastic_body.h>
-#include <ddcontact/parameters.h>
+#include <ddcontact/contact_problem.h>
 
 #include <vector>
 
@@ -27,24 +25,22 @@ namespace ddcontact
   class MonolithicContactSolver
   {
   public:
-    MonolithicContactSolver(const std::vector<ElasticBody<2> *> &bodies,
-                            const std::vector<ContactPair *>    &pairs,
-                            unsigned int                         max_iterations,
-                            ConditionalOStream                  &pcout);
+    MonolithicContactSolver(const ContactProblem &problem,
+                            unsigned int          max_iterations,
+                            ConditionalOStream   &pcout);
 
     /** Solve from the bodies' current solutions (the initial active set);
-     * writes the result into them and returns the Newton iterations. With
-     * the augmented Lagrangian's multipliers lambda (one vector per pair,
-     * empty for none) the pressure is min(0, lambda + g/theta), i.e. the
-     * penalty problem with the gap shifted to f_n + theta lambda. */
+     * writes the result into them and returns the Newton iterations. The
+     * law of each pair gives the gap shifted by its multipliers,
+     * f_n + theta lambda (the augmented Lagrangian's pressure
+     * min(0, lambda + g/theta) is the penalty pressure of that gap). */
     unsigned int
-    run(const std::vector<std::vector<double>> &multipliers = {});
+    run();
 
   private:
-    std::vector<ElasticBody<2> *> bodies;
-    std::vector<ContactPair *>    pairs;
-    const unsigned int            max_iterations;
-    ConditionalOStream           &pcout;
+    const ContactProblem &problem;
+    const unsigned int    max_iterations;
+    ConditionalOStream   &pcout;
   };
 } // namespace ddcontact
 

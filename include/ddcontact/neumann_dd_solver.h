@@ -7,26 +7,20 @@
 #include <deal.II/lac/vector.h>
 
 #include <ddcontact/body_distribution.h>
-#include <ddcontact/contact_pair.h>
-#include <ddcontact/elastic_body.h>
+#include <ddcontact/contact_problem.h>
+#include <ddcontact/errors.h>
 #include <ddcontact/parameters.h>
+#include <ddcontact/relaxation.h>
+#include <ddcontact/uzawa_loop.h>
 
-#include <deque>
 #include <functional>
-#include <stdexcept>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace ddcontact
 {
   using namespace dealii;
-
-  /** The iteration diverged; the message says what to change. */
-  class DivergenceError : public std::runtime_error
-  {
-  public:
-    using std::runtime_error::runtime_error;
-  };
 
   /** What one DD iteration measured (one row of history.csv). */
   struct IterationRecord
@@ -41,17 +35,6 @@ namespace ddcontact
     double       time            = 0;
   };
 
-  /** Contact results of one pair, from the current iterate. */
-  struct ContactState
-  {
-    std::vector<double> u_1n, u_2n, sigma_n; // at every contact point
-    Tensor<1, 2>        force_1, force_2;
-    double              max_pressure   = 0;
-    double              contact_length = 0;
-    double half_width      = 0; // half the extent of the active set along S
-    double max_penetration = 0;
-  };
-
   /**
    * The parallel Neumann domain decomposition (20)-(21): every iteration
    * loads each body by the penalty pressure of the previous iterate,
@@ -59,9 +42,12 @@ namespace ddcontact
    * solves all body problems at once (one task per body, each reusing its
    * factorization), and relaxes, u^{k+1} = gamma u~^{k+1} + (1-gamma) u^k
    * (21), or with a dynamic gamma (Aitken) or Anderson acceleration.
-   * Optionally an outer augmented-Lagrangian (Uzawa) loop adds a multiplier
-   * lambda to the pressure, sigma_n = min(0, lambda + g/theta), so that the
-   * penetration goes to zero without shrinking theta.
+   *
+   * The physics (bodies, pairs, the law (20) with its multipliers) is the
+   * ContactProblem's; the relaxation strategy is a Relaxation; the
+   * augmented Lagrangian's outer loop is a UzawaLoop. This class owns all
+   * three and does the iterating: initial guess, steps, stopping and
+   * divergence tests.
    */
   class NeumannDDSolver
   {
@@ -74,8 +60,8 @@ namespace ddcontact
                     const BodyDistribution              &distribution,
                     ConditionalOStream                  &pcout);
 
-    /** Initial guess (zero or Winkler); resets the history. Call after the
-     * bodies and pairs have been set up. */
+    /** Initial guess (zero or Winkler); resets the history and the
+     * multipliers. Call after the bodies and pairs have been set up. */
     void
     initialize();
 
@@ -85,14 +71,22 @@ namespace ddcontact
     step();
 
     /** Iterate until converged (with Uzawa updates if requested); returns
-     * the number of DD iterations. Throws DivergenceError, or a
-     * std::runtime_error when the maximum is reached. */
+     * the number of DD iterations. Throws DivergenceError. */
     unsigned int
     run();
 
     /** Contact state of pair @p p for the current iterate. */
     ContactState
     contact_state(unsigned int p) const;
+
+    /** The contact problem (bodies, pairs, laws) the solver iterates on;
+     * other solvers of the same problem (the monolithic Newton solver)
+     * share its laws and multipliers. */
+    ContactProblem &
+    get_problem()
+    {
+      return problem;
+    }
 
     /** Called after every iteration with its number (e.g. to write the
      * contact profiles of every iterate, the paper's Fig. 9). */
@@ -112,37 +106,23 @@ namespace ddcontact
     unsigned int
     n_uzawa_updates() const
     {
-      return uzawa_updates;
+      return uzawa.n_updates();
     }
 
     /**
-     * The augmented Lagrangian's outer step, after the iteration on the
-     * current multipliers has converged: if the penetration is still above
-     * the tolerance and not yet at the limit of non-matching meshes (no
-     * longer shrinking, after falling tenfold), set lambda <- sigma_n (the
-     * converged pressure) and start a new phase of the DD (returns true);
-     * otherwise leave lambda as it is, so that the iterate and the
-     * reported pressure stay consistent (returns false). Always false
-     * without "Augmented Lagrangian". Also drives the monolithic solver's
-     * Uzawa loop.
+     * The augmented Lagrangian's outer step (UzawaLoop::update()) after
+     * the iteration on the current multipliers has converged; on an update
+     * a new phase of the DD starts (relaxation history and divergence
+     * judgement afresh). Also drives the monolithic solver's Uzawa loop.
      */
     bool
     start_uzawa_phase();
 
-    /** Empty when the augmented Lagrangian is off, met its tolerance on
-     * the current iterate, or stopped at the limit of non-matching meshes
-     * (see start_uzawa_phase()); otherwise the one-line message that says how
-     * far it is off and what to change (the run must not say
-     * "converged"). */
+    /** See UzawaLoop::shortfall(). */
     std::string
-    augmented_lagrangian_shortfall() const;
-
-    /** The Uzawa multipliers lambda of every pair, at its contact points
-     * (zero without the augmented Lagrangian). */
-    const std::vector<std::vector<double>> &
-    get_multipliers() const
+    augmented_lagrangian_shortfall() const
     {
-      return multipliers;
+      return uzawa.shortfall(problem);
     }
 
     /**
@@ -182,56 +162,32 @@ namespace ddcontact
     reinit_after_refinement();
 
   private:
-    /** Penalty pressure of pair p from the displacements u. */
-    std::vector<double>
-    pressure(unsigned int p, const std::vector<Vector<double>> &u) const;
-
-    /** The bodies' current solutions u^k. */
-    std::vector<Vector<double>>
-    current_iterate() const;
-
-    /** The largest penetration u_1n + u_2n - f_n over all pairs, and its
-     * ratio to the largest approach |u_1n| + |u_2n| (the measure of the
-     * AL tolerance). */
-    std::pair<double, double>
-    penetration() const;
+    /** The elastic-layer initial guess (Winkler), or zero where it would
+     * start worse than zero. */
+    ContactProblem::Iterate
+    elastic_layer_guess() const;
 
     /** Throw, naming the cause, if the pressure last_sigma_n[p] computed
      * from @p u is not finite: a DivergenceError if @p u is not finite, an
      * InputError naming the penalty if g/theta overflowed. */
     void
-    check_finite_pressure(unsigned int                       p,
-                          const std::vector<Vector<double>> &u,
-                          unsigned int                       iteration) const;
+    check_finite_pressure(unsigned int                   p,
+                          const ContactProblem::Iterate &u,
+                          unsigned int                   iteration) const;
 
-    /** The smallest residual of the current Uzawa phase and its
-     * iteration. */
+    /** u^{k+1} from u~^{k+1} and the current u^k by the relaxation (21),
+     * stored in the bodies with their constraints. */
+    void
+    relax(const ContactProblem::Iterate &u_tilde);
+
+    /** A new phase of the iteration: the relaxation's history is dropped
+     * and divergence is judged from here on. */
+    void
+    start_phase();
+
+    /** The smallest residual of the current phase and its iteration. */
     std::pair<double, unsigned int>
     best_of_phase() const;
-
-    /** Solve every body b with the extra load loads[b] (empty: none), each
-     * on its process, concurrently; every process receives all u[b]. */
-    void
-    solve_all(const std::vector<Vector<double>> &loads,
-              std::vector<Vector<double>>       &u) const;
-
-    /** Solve all bodies with the contact loads of the normal stresses
-     * sigma_n (one vector per pair). */
-    void
-    solve_bodies(const std::vector<std::vector<double>> &sigma_n,
-                 std::vector<Vector<double>>            &u_tilde) const;
-
-    /** Normal displacements on S of all pairs, both sides, body by body. */
-    std::vector<std::vector<double>>
-    normal_displacements_by_body(const std::vector<Vector<double>> &u) const;
-
-    void
-    relax(const std::vector<Vector<double>> &u_tilde);
-
-    /** The current contact points of every pair, to transfer the
-     * multipliers after refinement. */
-    void
-    record_multiplier_points();
 
     /** The message of a DivergenceError: what diverged, and which
      * parameter to change (Gamma, the penalty c, or eps_residual), judged
@@ -241,35 +197,18 @@ namespace ddcontact
                        double                 best,
                        unsigned int           best_k) const;
 
-    unsigned int
-    body_index(const ElasticBody<2> &body) const;
-
-    const DDParameters            parameters;
-    std::vector<ElasticBody<2> *> bodies;
-    std::vector<ContactPair *>    pairs;
-    const BodyDistribution       &distribution;
-    ConditionalOStream           &pcout;
-
-    std::vector<std::vector<double>>   multipliers; // Uzawa lambda per pair
-    std::vector<std::vector<Point<2>>> multiplier_points; // where they live
-    std::vector<IterationRecord>       records;
+    const DDParameters           parameters;
+    ContactProblem               problem;
+    std::unique_ptr<Relaxation>  relaxation;
+    UzawaLoop                    uzawa;
+    ConditionalOStream          &pcout;
+    std::vector<IterationRecord> records;
     // The last step's loads sigma_n^k (per pair) and solutions u~^{k+1}.
-    std::vector<std::vector<double>> last_sigma_n;
-    std::vector<Vector<double>>      last_u_tilde;
-    unsigned int                     uzawa_updates      = 0; // whole run
-    unsigned int                     mesh_uzawa_updates = 0; // this mesh
-    double                           last_penetration   = 0;
-    double first_penetration = 0; // at the first Uzawa check of this mesh
-    bool   mesh_limited = false;  // the last check stopped at the mesh limit
-    unsigned int phase_start = 0; // first record of this Uzawa phase
-    double       gamma       = 0;
-    Timer        timer;
+    std::vector<std::vector<double>>  last_sigma_n;
+    ContactProblem::Iterate           last_u_tilde;
+    unsigned int                      phase_start = 0; // first record
+    Timer                             timer;
     std::function<void(unsigned int)> iteration_callback;
-
-    // Aitken: the previous residual; Anderson: histories of residual and
-    // map-value differences.
-    Vector<double>             previous_residual, previous_g;
-    std::deque<Vector<double>> delta_f, delta_g;
   };
 } // namespace ddcontact
 

@@ -1,0 +1,111 @@
+#ifndef ddcontact_relaxation_h
+#define ddcontact_relaxation_h
+
+#include <deal.II/lac/vector.h>
+
+#include <ddcontact/parameters.h>
+
+#include <deque>
+#include <memory>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * The relaxation step of the DD (21): from the iterate x = u^k and the
+   * map value g = u~^{k+1} (the body solutions loaded by the pressure of
+   * u^k), the next iterate u^{k+1}. Each strategy keeps its own history;
+   * reset() forgets it (a new Uzawa phase or a new mesh changes the map).
+   */
+  class Relaxation
+  {
+  public:
+    explicit Relaxation(const double gamma)
+      : gamma(gamma)
+    {
+    }
+
+    virtual ~Relaxation() = default;
+
+    /** Forget the history. */
+    virtual void
+    reset()
+    {
+    }
+
+    /** u^{k+1} from x = u^k and g = u~^{k+1}. */
+    virtual Vector<double>
+    update(const Vector<double> &x, const Vector<double> &g) = 0;
+
+    /** The current relaxation parameter gamma (dynamic for Aitken). */
+    double
+    get_gamma() const
+    {
+      return gamma;
+    }
+
+    void
+    set_gamma(const double new_gamma)
+    {
+      gamma = new_gamma;
+    }
+
+  protected:
+    double gamma;
+  };
+
+  /** The paper's fixed relaxation (21): u^{k+1} = u^k + gamma (g - u^k). */
+  class FixedRelaxation : public Relaxation
+  {
+  public:
+    using Relaxation::Relaxation;
+
+    Vector<double>
+    update(const Vector<double> &x, const Vector<double> &g) override;
+  };
+
+  /** Aitken's dynamic relaxation: gamma from the secant of the last two
+   * residuals f = g - x. */
+  class AitkenRelaxation : public Relaxation
+  {
+  public:
+    using Relaxation::Relaxation;
+
+    void
+    reset() override;
+
+    Vector<double>
+    update(const Vector<double> &x, const Vector<double> &g) override;
+
+  private:
+    Vector<double> previous_residual;
+  };
+
+  /** Anderson acceleration (type II) of depth m: the combination of the
+   * last m map values whose linearised residual is smallest (GMRES on a
+   * linear fixed-point map), by a filtered QR of the residual differences. */
+  class AndersonRelaxation : public Relaxation
+  {
+  public:
+    AndersonRelaxation(double gamma, unsigned int depth);
+
+    void
+    reset() override;
+
+    Vector<double>
+    update(const Vector<double> &x, const Vector<double> &g) override;
+
+  private:
+    const unsigned int         depth;
+    Vector<double>             previous_residual, previous_g;
+    std::deque<Vector<double>> delta_f, delta_g;
+  };
+
+  /** The strategy of Domain decomposition/Relaxation ("auto" is the fixed
+   * relaxation, its gamma set by the solver from an estimate). */
+  std::unique_ptr<Relaxation>
+  make_relaxation(const DDParameters &parameters);
+} // namespace ddcontact
+
+#endif
