@@ -28,6 +28,19 @@ namespace ddcontact
       return std::sqrt(s);
     }
 
+    /** Whether iteration @p k gets a line on the screen: the first five,
+     * then every 10 up to 100, every 100 up to 1000, and so on -- about
+     * ten lines per decade, so a run of thousands of iterations shows
+     * tens of lines (history.csv keeps every iteration). */
+    bool
+    shown_on_screen(const unsigned int k)
+    {
+      unsigned int step = 1;
+      while (step * 10 <= k)
+        step *= 10;
+      return k <= 5 || k % step == 0;
+    }
+
     /** Concatenate the bodies' vectors into one, and back. */
     Vector<double>
     flatten(const std::vector<Vector<double>> &u)
@@ -354,17 +367,13 @@ namespace ddcontact
     if (iteration_callback)
       iteration_callback(record.iteration);
 
-    const bool print = record.iteration <= 5 || record.iteration % 50 == 0 ||
-                       record.residual <= parameters.eps_residual ||
-                       record.increment <= parameters.eps_u;
-    if (print)
-      pcout << "  DD " << std::setw(5) << record.iteration << std::scientific
-            << std::setprecision(3) << "  residual " << record.residual
-            << "  increment " << record.increment << "  gamma " << record.gamma
-            << "  force " << record.force << "  active " << record.active_length
-            << "  penetration " << record.max_penetration << std::defaultfloat
-            << std::fixed << std::setprecision(2) << "  t " << record.time
-            << "s" << std::defaultfloat << std::endl;
+    // The stopping test of Domain decomposition/Stopping test.
+    const bool residual_test = record.residual <= parameters.eps_residual;
+    const bool paper_test    = record.increment <= parameters.eps_u;
+    const bool converged = (parameters.stopping == "residual") ? residual_test
+                           : (parameters.stopping == "paper")
+                             ? paper_test
+                             : residual_test || paper_test;
 
     // Divergence: a non-finite residual, growth far above the best residual
     // so far, or no progress at all for many iterations (a 2-cycle between
@@ -375,16 +384,19 @@ namespace ddcontact
     const bool         grew    = record.residual > 1e3 * best && k_phase > 3;
     const bool         stuck =
       record.iteration - best_k > std::max<unsigned int>(50, k_phase / 2);
-    if (!finite || grew || stuck)
-      throw DivergenceError(divergence_message(record, best, best_k));
+    const bool diverged = !finite || grew || stuck;
 
-    const bool residual_test = record.residual <= parameters.eps_residual;
-    const bool paper_test    = record.increment <= parameters.eps_u;
-    if (parameters.stopping == "residual")
-      return residual_test;
-    if (parameters.stopping == "paper")
-      return paper_test;
-    return residual_test || paper_test;
+    if (shown_on_screen(record.iteration) || converged || diverged)
+      pcout << "  DD " << std::setw(5) << record.iteration << std::scientific
+            << std::setprecision(3) << "  residual " << record.residual
+            << "  increment " << record.increment << "  gamma " << record.gamma
+            << "  force " << record.force << "  active " << record.active_length
+            << "  penetration " << record.max_penetration << std::defaultfloat
+            << std::fixed << std::setprecision(2) << "  t " << record.time
+            << "s" << std::defaultfloat << std::endl;
+    if (diverged)
+      throw DivergenceError(divergence_message(record, best, best_k));
+    return converged;
   }
 
   std::string
