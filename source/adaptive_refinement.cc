@@ -23,9 +23,8 @@ namespace ddcontact
     triangle_diameters(const Point<2> &a, const Point<2> &b, const Point<2> &c)
     {
       const double ab = a.distance(b), bc = b.distance(c), ca = c.distance(a);
-      const double area =
-        0.5 * std::abs((b[0] - a[0]) * (c[1] - a[1]) -
-                       (c[0] - a[0]) * (b[1] - a[1]));
+      const double area = 0.5 * std::abs((b[0] - a[0]) * (c[1] - a[1]) -
+                                         (c[0] - a[0]) * (b[1] - a[1]));
       if (area == 0.)
         return {std::numeric_limits<double>::infinity(), 0.};
       // R = ab bc ca / (4 area), r = area / s with s the half perimeter.
@@ -55,15 +54,11 @@ namespace ddcontact
             *forest, criteria, fraction, 0.);
       }
       else if (by_number)
-        GridRefinement::refine_and_coarsen_fixed_number(tria,
-                                                        criteria,
-                                                        fraction,
-                                                        0.);
+        GridRefinement::refine_and_coarsen_fixed_number(
+          tria, criteria, fraction, 0.);
       else
-        GridRefinement::refine_and_coarsen_fixed_fraction(tria,
-                                                          criteria,
-                                                          fraction,
-                                                          0.);
+        GridRefinement::refine_and_coarsen_fixed_fraction(
+          tria, criteria, fraction, 0.);
     }
   } // namespace
 
@@ -77,7 +72,7 @@ namespace ddcontact
     result.K.reinit(n);
     for (const auto &cell : triangulation.active_cell_iterators())
     {
-      double D = 0, d = std::numeric_limits<double>::max();
+      double             D = 0, d = std::numeric_limits<double>::max();
       const unsigned int nv = cell->n_vertices();
       // A triangle is its own (only) triangle; a quadrilateral gives the
       // four triangles of three of its vertices (Definition 1).
@@ -192,6 +187,13 @@ namespace ddcontact
       refine_fixed(tria, eta2, parameters.fraction, false);
     }
 
+    return apply_caps();
+  }
+
+  unsigned int
+  AdaptiveRefinement::apply_caps()
+  {
+    auto        &tria   = body.get_triangulation();
     unsigned int marked = 0;
     capped              = 0;
     for (const auto &cell : tria.active_cell_iterators())
@@ -229,8 +231,9 @@ namespace ddcontact
     for (const auto &cell : tria.active_cell_iterators())
       if (body.computes(cell))
         cell->set_refine_flag();
-    capped = 0;
-    return body.n_active_cells();
+    // Uniform refinement obeys Max level and Max cells like the other
+    // modes (it quadrupled the mesh every cycle until memory ran out).
+    return apply_caps();
   }
 
   void
@@ -242,7 +245,7 @@ namespace ddcontact
   OutputWriter::CellData
   AdaptiveRefinement::cell_data() const
   {
-    const auto             diameters = element_diameters(body.get_triangulation());
+    const auto diameters = element_diameters(body.get_triangulation());
     OutputWriter::CellData data;
     data["D_e"] = diameters.D;
     data["d_e"] = diameters.d;

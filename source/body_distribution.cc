@@ -1,4 +1,5 @@
 #include <ddcontact/body_distribution.h>
+#include <ddcontact/tasks.h>
 
 #include <deal.II/base/thread_management.h>
 #include <deal.II/base/timer.h>
@@ -78,10 +79,8 @@ namespace ddcontact
       for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         MPI_Comm  group;
-        const int ierr = MPI_Comm_split(communicator,
-                                        owns(b) ? 0 : MPI_UNDEFINED,
-                                        this_process,
-                                        &group);
+        const int ierr = MPI_Comm_split(
+          communicator, owns(b) ? 0 : MPI_UNDEFINED, this_process, &group);
         AssertThrowMPI(ierr);
         bodies[b]->set_process_group(groups[b], group);
       }
@@ -132,22 +131,17 @@ namespace ddcontact
         errors[b] = e.what();
       }
     };
-    if (process_groups)
-    {
-      // The work may be collective over a body's group or the world:
-      // every process takes the bodies in the same order, one at a time.
-      for (unsigned int b = 0; b < bodies.size(); ++b)
+    // With process groups the work may be collective over a body's group
+    // or the world: every process takes the bodies in the same order, one
+    // at a time.
+    run_tasks(
+      bodies.size(),
+      [&](const unsigned int b)
+      {
         if (!owned_only || owns(b))
           run(b);
-    }
-    else
-    {
-      Threads::TaskGroup<void> tasks;
-      for (unsigned int b = 0; b < bodies.size(); ++b)
-        if (!owned_only || owns(b))
-          tasks += Threads::new_task([&, b]() { run(b); });
-      tasks.join_all();
-    }
+      },
+      process_groups);
     std::string first_error;
     for (const auto &e : errors)
       if (first_error.empty())
@@ -167,8 +161,8 @@ namespace ddcontact
     // Collective: every process calls this once at the same point (after
     // every set of body solves). The messages are gathered only when some
     // process failed: the usual case costs one integer reduction.
-    if (Utilities::MPI::max(static_cast<int>(!message.empty()),
-                            communicator) == 0)
+    if (Utilities::MPI::max(static_cast<int>(!message.empty()), communicator) ==
+        0)
       return;
     for (const auto &m : Utilities::MPI::all_gather(communicator, message))
       if (!m.empty())

@@ -45,12 +45,12 @@ namespace ddcontact
             strain,
             dilatation,
             inputs.template get_cell<dim>()->active_cell_index());
-          auto      &out = computed_quantities[q];
-          out(0)         = s[0][0];
-          out(1)         = s[1][1];
-          out(2)         = s[0][1];
-          out(3)         = material.out_of_plane_stress(s);
-          out(4)         = material.von_mises(s);
+          auto &out = computed_quantities[q];
+          out(0)    = s[0][0];
+          out(1)    = s[1][1];
+          out(2)    = s[0][1];
+          out(3)    = material.out_of_plane_stress(s);
+          out(4)    = material.von_mises(s);
         }
       }
 
@@ -143,9 +143,9 @@ namespace ddcontact
         level(cell->active_cell_index())   = cell->level();
         // The process that assembles the cell (0 on a serial mesh).
         process(cell->active_cell_index()) =
-          cell->subdomain_id() == numbers::invalid_subdomain_id ?
-            0. :
-            cell->subdomain_id();
+          cell->subdomain_id() == numbers::invalid_subdomain_id
+            ? 0.
+            : cell->subdomain_id();
       }
       data_out.add_data_vector(body_id, "body_id", DataOut<2>::type_cell_data);
       data_out.add_data_vector(level, "level", DataOut<2>::type_cell_data);

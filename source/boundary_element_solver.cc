@@ -354,7 +354,8 @@ namespace ddcontact
         }
         const Tensor<1, 2> tangent = boundary_face.x[1] - boundary_face.x[0];
         const Tensor<1, 2> normal{{tangent[1], -tangent[0]}};
-        const Point<2> midpoint = 0.5 * (boundary_face.x[0] + boundary_face.x[1]);
+        const Point<2>     midpoint =
+          0.5 * (boundary_face.x[0] + boundary_face.x[1]);
         boundary_face.reversed = normal * (midpoint - centroid) < 0;
         faces.push_back(boundary_face);
       }
@@ -362,8 +363,8 @@ namespace ddcontact
     if (distributed)
     {
       std::vector<BoundaryFace> all;
-      for (const auto &from_process : Utilities::MPI::all_gather(
-             distributed->get_communicator(), faces))
+      for (const auto &from_process :
+           Utilities::MPI::all_gather(distributed->get_communicator(), faces))
         all.insert(all.end(), from_process.begin(), from_process.end());
       faces = std::move(all);
     }

@@ -32,8 +32,18 @@
 
 #include <ddcontact/elastic_body.h>
 
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
+#include <thread>
 #include <type_traits>
 
 namespace ddcontact
@@ -74,8 +84,8 @@ namespace ddcontact
         false,
         parallel::shared::Triangulation<dim>::partition_custom_signal);
       shared->signals.create.connect([this]() { partition_between_group(); });
-      shared->signals.post_refinement.connect(
-        [this]() { partition_between_group(); });
+      shared->signals.post_refinement.connect([this]()
+                                              { partition_between_group(); });
       triangulation = std::move(shared);
     }
     else
@@ -98,6 +108,218 @@ namespace ddcontact
         volumetric_quadrature = std::make_unique<QGauss<dim>>(p);
     }
     face_quadrature = std::make_unique<QGauss<dim - 1>>(p + 1);
+  }
+
+  namespace
+  {
+    /** Whether every entry of @p v is finite (Vector::l2_norm() asserts
+     * that in Debug builds instead of answering). */
+    bool
+    finite(const Vector<double> &v)
+    {
+      return std::all_of(
+        v.begin(), v.end(), [](const double x) { return std::isfinite(x); });
+    }
+
+    /** Seconds gmsh may take for one .geo: DDCONTACT_GMSH_TIMEOUT, or 120. */
+    double
+    gmsh_time_limit()
+    {
+      const char *value = std::getenv("DDCONTACT_GMSH_TIMEOUT");
+      if (value == nullptr)
+        return 120.;
+      char        *end     = nullptr;
+      const double seconds = std::strtod(value, &end);
+      if (end == value || *end != '\0' || !(seconds > 0) ||
+          !std::isfinite(seconds))
+        throw InputError(std::string("DDCONTACT_GMSH_TIMEOUT: '") + value +
+                         "' is not a positive number of seconds");
+      return seconds;
+    }
+
+    /**
+     * Run @p arguments (the program first, found on PATH) with its output
+     * and errors in @p log, without a shell, so that no character of a
+     * file name is ever interpreted. Returns the exit status, -1 if the
+     * program could not be started or ended by a signal, -2 if it ran
+     * longer than @p seconds (then it is killed).
+     */
+    int
+    run_without_shell(const std::vector<std::string> &arguments,
+                      const std::string              &log,
+                      const double                    seconds)
+    {
+      std::vector<char *> argv;
+      for (const auto &a : arguments)
+        argv.push_back(const_cast<char *>(a.c_str()));
+      argv.push_back(nullptr);
+
+      posix_spawn_file_actions_t actions;
+      posix_spawn_file_actions_init(&actions);
+      posix_spawn_file_actions_addopen(
+        &actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      posix_spawn_file_actions_adddup2(&actions, 1, 2);
+      pid_t     pid = 0;
+      const int failed =
+        posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+      posix_spawn_file_actions_destroy(&actions);
+      if (failed != 0)
+        return -1;
+
+      const auto start  = std::chrono::steady_clock::now();
+      int        status = 0;
+      while (waitpid(pid, &status, WNOHANG) == 0)
+      {
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                          start)
+              .count() > seconds)
+        {
+          kill(pid, SIGKILL);
+          waitpid(pid, &status, 0);
+          return -2;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+      return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+
+    /** MemAvailable of /proc/meminfo in bytes (what can be allocated
+     * without swapping), or 0 if it cannot be read. */
+    double
+    available_memory()
+    {
+      std::ifstream meminfo("/proc/meminfo");
+      std::string   key;
+      double        kb = 0;
+      while (meminfo >> key >> kb)
+      {
+        if (key == "MemAvailable:")
+          return kb * 1024.;
+        meminfo.ignore(256, '\n');
+      }
+      return 0;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ElasticBody<dim>::check_dirichlet_values() const
+  {
+    // The prescribed displacements at the vertices and midpoints of the
+    // Dirichlet faces (where interpolation evaluates them for degree 1
+    // and 2): a NaN would enter the constraints and every solution.
+    Vector<double> value(dim);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+          {
+            const auto it =
+              boundary_conditions.dirichlet.find(cell->face(f)->boundary_id());
+            if (it == boundary_conditions.dirichlet.end())
+              continue;
+            for (const auto &x : {cell->face(f)->vertex(0),
+                                  cell->face(f)->vertex(1),
+                                  cell->face(f)->center()})
+            {
+              it->second.displacement->vector_value(x, value);
+              if (!finite(value))
+              {
+                std::ostringstream s;
+                s << parameters.section()
+                  << "/Boundary conditions/Dirichlet: the displacement on "
+                     "boundary id "
+                  << it->first << " is not finite at (" << x[0] << ", " << x[1]
+                  << "); give expressions finite on the whole "
+                  << "boundary";
+                throw InputError(s.str());
+              }
+            }
+          }
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::throw_non_finite_load() const
+  {
+    // Which expression, and where: the body force at the cells'
+    // quadrature points, then the tractions on their Neumann faces.
+    const auto where = [](const Point<dim> &x)
+    {
+      std::ostringstream s;
+      s << std::setprecision(6) << " at (" << x[0] << ", " << x[1] << ")";
+      return s.str();
+    };
+    const std::string section = parameters.section() + "/Boundary conditions/";
+    Vector<double>    value(dim);
+    FEValues<dim>     fe_values(
+      *mapping, *fe, *cell_quadrature, update_quadrature_points);
+    FEFaceValues<dim> fe_face(
+      *mapping, *fe, *face_quadrature, update_quadrature_points);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+    {
+      if (!computes(cell))
+        continue;
+      if (boundary_conditions.body_force)
+      {
+        fe_values.reinit(cell);
+        for (const auto &x : fe_values.get_quadrature_points())
+        {
+          boundary_conditions.body_force->vector_value(x, value);
+          if (!finite(value))
+            throw InputError(section + "Body force: not finite" + where(x) +
+                             "; give expressions finite in the whole body");
+        }
+      }
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+        {
+          const auto it =
+            boundary_conditions.neumann.find(cell->face(f)->boundary_id());
+          if (it == boundary_conditions.neumann.end())
+            continue;
+          fe_face.reinit(cell, f);
+          for (const auto &x : fe_face.get_quadrature_points())
+          {
+            it->second->vector_value(x, value);
+            if (!finite(value))
+              throw InputError(section +
+                               "Neumann: the traction on boundary "
+                               "id " +
+                               std::to_string(it->first) + " is not finite" +
+                               where(x) +
+                               "; give expressions finite on the whole "
+                               "boundary");
+          }
+        }
+    }
+    throw InputError(section + "the load vector is not finite");
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::check_mesh_size(const double       n_cells,
+                                    const std::string &entry) const
+  {
+    // Unknowns per cell: 2 components times p^2 nodes per quadrilateral,
+    // about half that per triangle. A body needs about 4 kB per unknown
+    // with the direct solver (measured in Release: 556 MB at 1.3e5 and
+    // 1780 MB at 5.3e5 unknowns, the factorization growing faster than
+    // the unknowns).
+    const double p       = parameters.degree;
+    const double n_dofs  = n_cells * (is_simplex() ? 1. : 2.) * p * p;
+    const double bytes   = 4096. * n_dofs;
+    const double memory  = available_memory();
+    const bool   too_big = n_cells > 1e9 || (memory > 0 && bytes > memory);
+    if (!too_big)
+      return;
+    std::ostringstream s;
+    s << std::setprecision(3) << parameters.section() << "/" << entry
+      << ": the mesh would have about " << n_cells << " cells and " << n_dofs
+      << " unknowns, needing about " << bytes / 1e9
+      << " GB (4 kB per unknown), but " << memory / 1e9
+      << " GB are available; lower it";
+    throw InputError(s.str());
   }
 
   template <int dim>
@@ -133,9 +355,18 @@ namespace ddcontact
         work_directory + "/" + parameters.name + rank + ".msh";
       const std::string log =
         work_directory + "/" + parameters.name + rank + ".gmsh.log";
-      const std::string command = "gmsh -2 -format msh22 -v 2 -o '" + msh +
-                                  "' '" + file + "' > '" + log + "' 2>&1";
-      if (std::system(command.c_str()) != 0)
+      read_bounded_file(file, 16u << 20, what); // size and kind only
+      const double timeout = gmsh_time_limit();
+      const int    status  = run_without_shell(
+        {"gmsh", "-2", "-format", "msh22", "-v", "2", "-o", msh, file},
+        log,
+        timeout);
+      if (status == -2)
+        throw InputError(what + ": gmsh did not finish meshing '" + file +
+                         "' within " + Utilities::to_string(timeout) +
+                         " s (an endless loop in the .geo?); stopped it "
+                         "(the limit is DDCONTACT_GMSH_TIMEOUT)");
+      if (status != 0)
         throw InputError(what + ": gmsh could not mesh '" + file + "' (see " +
                          log + ")");
       file = msh;
@@ -144,9 +375,11 @@ namespace ddcontact
       throw InputError(what + ": '" + file +
                        "' is neither a Gmsh .msh nor a .geo file");
 
-    GridIn<dim> grid_in;
+    // A mesh of 512 MiB has millions of cells: beyond what a body here
+    // can factorize; refuse before reading it (and anything not a file).
+    std::istringstream in(read_bounded_file(file, 512u << 20, what));
+    GridIn<dim>        grid_in;
     grid_in.attach_triangulation(*triangulation);
-    std::ifstream in(file);
     try
     {
       grid_in.read_msh(in);
@@ -164,6 +397,9 @@ namespace ddcontact
     triangulation->clear();
     if (parameters.mesh_type == "rectangle")
     {
+      check_mesh_size(double(parameters.subdivisions[0]) *
+                        parameters.subdivisions[1],
+                      "Mesh/Subdivisions");
       if (is_simplex())
         GridGenerator::subdivided_hyper_rectangle_with_simplices(
           *triangulation,
@@ -209,6 +445,9 @@ namespace ddcontact
                        "' holds other cells (recombine it in Gmsh, or choose "
                        "triangle)");
 
+    check_mesh_size(triangulation->n_global_active_cells() *
+                      std::pow(4., parameters.initial_refinement),
+                    "Mesh/Initial refinement");
     triangulation->refine_global(parameters.initial_refinement);
 
     if (!parameters.refinement_box.empty() && parameters.box_refinement > 0)
@@ -218,11 +457,36 @@ namespace ddcontact
                          "/Mesh/Refinement box: local refinement needs "
                          "quadrilaterals (deal.II 9.4 refines triangles "
                          "only globally)");
-      const auto c = Utilities::split_string_list(parameters.refinement_box);
-      const Point<dim> lo(std::stod(c[0]), std::stod(c[1]));
-      const Point<dim> hi(std::stod(c[2]), std::stod(c[3]));
+      const auto      &c = parameters.refinement_box;
+      const Point<dim> lo(c[0], c[1]);
+      const Point<dim> hi(c[2], c[3]);
+      if (parameters.mesh_type == "rectangle")
+      {
+        // Before any cell is made: at step k the cells of size h_k that
+        // touch the box (clipped to the body) are refined, each into four.
+        double cells = triangulation->n_global_active_cells();
+        for (unsigned int k = 0; k < parameters.box_refinement; ++k)
+        {
+          double flagged = 1;
+          for (unsigned int d = 0; d < 2; ++d)
+          {
+            const double n_across =
+              parameters.subdivisions[d] *
+              std::pow(2., parameters.initial_refinement + k);
+            const double length =
+              parameters.corner_2[d] - parameters.corner_1[d];
+            const double width = std::min(hi[d], parameters.corner_2[d]) -
+                                 std::max(lo[d], parameters.corner_1[d]);
+            flagged *=
+              std::min(n_across, std::max(0., width) / length * n_across + 2);
+          }
+          cells += 3 * flagged;
+        }
+        check_mesh_size(cells, "Mesh/Box refinement");
+      }
       for (unsigned int k = 0; k < parameters.box_refinement; ++k)
       {
+        unsigned int n_flagged = 0;
         for (const auto &cell : triangulation->active_cell_iterators())
         {
           // p4est takes the flags of the owned cells.
@@ -233,8 +497,17 @@ namespace ddcontact
               box.get_boundary_points().second[0] >= lo[0] &&
               box.get_boundary_points().first[1] <= hi[1] &&
               box.get_boundary_points().second[1] >= lo[1])
+          {
             cell->set_refine_flag();
+            ++n_flagged;
+          }
         }
+        // Each flagged cell becomes four (the one-irregularity closure adds
+        // a few more, within the factor of the estimate).
+        check_mesh_size(triangulation->n_global_active_cells() +
+                          3. * Utilities::MPI::sum(
+                                 n_flagged, triangulation->get_communicator()),
+                        "Mesh/Box refinement");
         triangulation->execute_coarsening_and_refinement();
       }
     }
@@ -309,15 +582,15 @@ namespace ddcontact
   template <int dim>
   void
   ElasticBody<dim>::set_process_group(const std::vector<unsigned int> &ranks,
-                                      const MPI_Comm group)
+                                      const MPI_Comm                   group)
   {
     AssertThrow(!ranks.empty(), ExcInternalError());
     const bool partitioned =
       dynamic_cast<parallel::shared::Triangulation<dim> *>(
         triangulation.get()) != nullptr;
-    AssertThrow(ranks.size() == 1 || partitioned || mesh_distributed,
-                ExcMessage(
-                  "a body on several processes needs a partitioned mesh"));
+    AssertThrow(
+      ranks.size() == 1 || partitioned || mesh_distributed,
+      ExcMessage("a body on several processes needs a partitioned mesh"));
     // p4est splits the forest between all processes of the mesh's
     // communicator, which must be the group.
     AssertThrow(!mesh_distributed ||
@@ -435,6 +708,7 @@ namespace ddcontact
       constraints.reinit(relevant);
     }
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    check_dirichlet_values();
     for (const auto &[id, d] : boundary_conditions.dirichlet)
       VectorTools::interpolate_boundary_values(
         *mapping, dof_handler, id, *d.displacement, constraints, d.mask);
@@ -472,10 +746,8 @@ namespace ddcontact
         group_communicator, static_cast<int>(owned.n_elements()));
       IndexSet relevant;
       DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-      TrilinosWrappers::SparsityPattern sp(owned,
-                                           owned,
-                                           relevant,
-                                           group_communicator);
+      TrilinosWrappers::SparsityPattern sp(
+        owned, owned, relevant, group_communicator);
       DoFTools::make_sparsity_pattern(dof_handler, sp, constraints, false);
       sp.compress();
       distributed_matrix.reinit(sp);
@@ -584,8 +856,16 @@ namespace ddcontact
     };
 
     // On a partitioned mesh mesh_loop visits only this process's cells.
-    const auto copier = [&](const MeshWorker::CopyData<1, 1, 1> &copy)
+    // A load expression that is not finite somewhere (sqrt(x) at x < 0) is
+    // found here, in the serial part (a worker thread must not throw), and
+    // named after the loop.
+    bool       non_finite_load = false;
+    const auto copier          = [&](const MeshWorker::CopyData<1, 1, 1> &copy)
     {
+      for (const double v : copy.vectors[0])
+        non_finite_load = non_finite_load || !std::isfinite(v);
+      if (non_finite_load)
+        return;
       if (distributed)
         constraints.distribute_local_to_global(copy.matrices[0],
                                                copy.vectors[0],
@@ -618,6 +898,8 @@ namespace ddcontact
                             MeshWorker::assemble_boundary_faces,
                           boundary_worker);
 
+    if (non_finite_load)
+      throw_non_finite_load();
     if (reduced_volumetric_integration())
       assemble_reduced_volumetric_term(copier);
     if (distributed)
@@ -662,7 +944,7 @@ namespace ddcontact
               lambda * div[i] * div[j] * fe_values.JxW(q);
       }
     };
-    MeshWorker::ScratchData<dim> volumetric_scratch(*mapping,
+    MeshWorker::ScratchData<dim>  volumetric_scratch(*mapping,
                                                     *fe,
                                                     *volumetric_quadrature,
                                                     update_gradients |
@@ -837,19 +1119,19 @@ namespace ddcontact
     {
       SolverControl control(parameters.solver_max_iterations,
                             parameters.solver_tolerance * rhs.l2_norm());
-      SolverCG<std::remove_const_t<std::remove_reference_t<decltype(rhs)>>>
-        cg(control);
+      SolverCG<std::remove_const_t<std::remove_reference_t<decltype(rhs)>>> cg(
+        control);
       try
       {
         cg.solve(matrix, x, rhs, amg_preconditioner);
       }
       catch (const SolverControl::NoConvergence &e)
       {
-        throw InputError(parameters.section() +
-                         "/Solver: cg-amg did not converge in " +
-                         std::to_string(e.last_step) + " iterations (residual " +
-                         std::to_string(e.last_residual) +
-                         "); raise Max iterations or use Type = direct");
+        throw InputError(
+          parameters.section() + "/Solver: cg-amg did not converge in " +
+          std::to_string(e.last_step) + " iterations (residual " +
+          std::to_string(e.last_residual) +
+          "); raise Max iterations or use Type = direct");
       }
     };
     if (is_solved_distributed())
@@ -967,9 +1249,9 @@ namespace ddcontact
           energy += 0.5 * material.lambda() * d * d * fe_reduced.JxW(q);
       }
     }
-    return mesh_distributed ?
-             Utilities::MPI::sum(energy, triangulation->get_communicator()) :
-             energy;
+    return mesh_distributed
+             ? Utilities::MPI::sum(energy, triangulation->get_communicator())
+             : energy;
   }
 
   template <int dim>
@@ -1086,9 +1368,9 @@ namespace ddcontact
     for (const auto &cell : triangulation->active_cell_iterators())
       if (computes(cell))
         h = std::min(h, cell->diameter(*mapping));
-    return mesh_distributed ?
-             Utilities::MPI::min(h, triangulation->get_communicator()) :
-             h;
+    return mesh_distributed
+             ? Utilities::MPI::min(h, triangulation->get_communicator())
+             : h;
   }
 
   template <int dim>

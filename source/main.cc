@@ -45,7 +45,7 @@ main(int argc, char **argv)
 
     std::string              parameter_file, output_directory;
     std::vector<std::string> overrides;
-    bool                     print_parameters = false;
+    bool                     print_parameters = false, output_given = false;
     for (int i = 1; i < argc; ++i)
     {
       const std::string arg = argv[i];
@@ -61,8 +61,13 @@ main(int argc, char **argv)
       {
         if (i + 1 == argc)
           throw InputError(arg + " needs a value");
-        (arg == "--output" ? output_directory = argv[++i]
-                           : (overrides.emplace_back(argv[++i]), ""));
+        if (arg == "--output")
+        {
+          output_directory = argv[++i];
+          output_given     = true;
+        }
+        else
+          overrides.emplace_back(argv[++i]);
       }
       else if (arg.rfind("--", 0) == 0)
         throw InputError("unknown option '" + arg + "' (see --help)");
@@ -86,7 +91,7 @@ main(int argc, char **argv)
       return 2;
     }
 
-    if (!output_directory.empty())
+    if (output_given)
       overrides.push_back("Output directory=" + output_directory);
     const ParameterReader reader(parameter_file, overrides);
     if (print_parameters)
@@ -99,7 +104,12 @@ main(int argc, char **argv)
     const auto &scene = reader.scene();
     if (scene.n_threads > 0)
       MultithreadInfo::set_thread_limit(scene.n_threads);
-    std::filesystem::create_directories(scene.output_directory);
+    // One line naming the directory, not the library's text with errno.
+    std::error_code error;
+    std::filesystem::create_directories(scene.output_directory, error);
+    if (error || !std::filesystem::is_directory(scene.output_directory))
+      throw InputError("Output directory: cannot create '" +
+                       scene.output_directory + "' (" + error.message() + ")");
     if (root)
       reader.write_used(scene.output_directory + "/parameters.prm");
 

@@ -7,10 +7,13 @@
 #include <ddcontact/parameters.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <tuple>
 
 namespace ddcontact
 {
@@ -91,14 +94,130 @@ namespace ddcontact
         std::size_t  pos   = 0;
         const auto   t     = Utilities::trim(text);
         const double value = std::stod(t, &pos);
-        if (pos != t.size())
+        if (pos != t.size() || !std::isfinite(value))
           throw InputError("");
         return value;
       }
       catch (...)
       {
-        throw InputError(what + ": '" + text + "' is not a number");
+        throw InputError(what + ": '" + text + "' is not a finite number");
       }
+    }
+  } // namespace
+
+  void
+  check_name(const std::string &name, const std::string &what)
+  {
+    // Names become file names (<body>-NNNN.vtu, contact_<pair>.csv) and
+    // subsection names: a '/' or '..' would write elsewhere, and very long
+    // names exceed the file system's limit.
+    const bool safe =
+      !name.empty() && name.size() <= 64 && name[0] != '.' &&
+      std::all_of(name.begin(),
+                  name.end(),
+                  [](const char c)
+                  {
+                    return std::isalnum(static_cast<unsigned char>(c)) ||
+                           c == '_' || c == '-' || c == '.';
+                  });
+    if (!safe)
+      throw InputError(what + ": '" + name.substr(0, 80) +
+                       (name.size() > 80 ? "...'" : "'") +
+                       " is not a usable name (1 to 64 letters, digits, '_', "
+                       "'-' or '.', not starting with '.')");
+  }
+
+  std::string
+  read_bounded_file(const std::string &filename,
+                    const std::size_t  max_bytes,
+                    const std::string &what)
+  {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    // Devices, pipes and directories have no size to check in advance
+    // (/dev/zero never ends): only regular files are read.
+    if (!fs::is_regular_file(filename, error))
+      throw InputError(what + " '" + filename + "' " +
+                       (fs::exists(filename, error)
+                          ? "is not a regular file"
+                          : "does not exist or cannot be read"));
+    const auto size = fs::file_size(filename, error);
+    if (error || size > max_bytes)
+      throw InputError(what + " '" + filename + "' has " +
+                       std::to_string(size) + " bytes, more than the " +
+                       std::to_string(max_bytes) + " bytes allowed");
+    std::ifstream in(filename, std::ios::binary);
+    if (!in)
+      throw InputError(what + " '" + filename + "' cannot be read");
+    std::string text(size, '\0');
+    in.read(text.data(), static_cast<std::streamsize>(size));
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    return text;
+  }
+
+  namespace
+  {
+    /** A parameter file with its `include` lines replaced by the included
+     * files (found next to the including file, else from the working
+     * directory), so that deal.II parses one bounded text. Cycles and
+     * depths beyond 16 are refused, and the whole text is capped at 16 MiB:
+     * a file that includes itself overflowed the stack, and `include
+     * /dev/zero` read until memory ran out. */
+    std::string
+    expand_includes(const std::string        &filename,
+                    std::vector<std::string> &chain,
+                    std::size_t              &total)
+    {
+      constexpr std::size_t max_bytes = 16u << 20;
+      const std::string     canonical =
+        std::filesystem::weakly_canonical(filename).string();
+      if (std::find(chain.begin(), chain.end(), canonical) != chain.end())
+        throw InputError("parameter file '" + filename +
+                         "' includes itself (through '" + chain.back() + "')");
+      if (chain.size() >= 16)
+        throw InputError("parameter file '" + filename +
+                         "': includes nested deeper than 16 files");
+      const std::string text =
+        read_bounded_file(filename,
+                          max_bytes,
+                          chain.empty() ? "parameter file" : "included file");
+      total += text.size();
+      if (total > max_bytes)
+        throw InputError("parameter file '" + filename +
+                         "': with its includes more than 16 MiB");
+      chain.push_back(canonical);
+
+      const auto        slash = filename.find_last_of('/');
+      const std::string directory =
+        (slash == std::string::npos) ? "" : filename.substr(0, slash + 1);
+      std::istringstream lines(text);
+      std::string        line, expanded;
+      while (std::getline(lines, line))
+      {
+        const std::string trimmed = Utilities::trim(line);
+        if (trimmed.rfind("include", 0) == 0 && trimmed.size() > 7 &&
+            std::isspace(static_cast<unsigned char>(trimmed[7])))
+        {
+          std::string included = Utilities::trim(trimmed.substr(7));
+          if (!included.empty() && included[0] != '/' &&
+              std::filesystem::exists(directory + included))
+            included = directory + included;
+          expanded += expand_includes(included, chain, total);
+        }
+        else
+          expanded += line + "\n";
+      }
+      chain.pop_back();
+      return expanded;
+    }
+
+    /** The parameter text of @p filename with its includes. */
+    std::string
+    read_parameter_text(const std::string &filename)
+    {
+      std::vector<std::string> chain;
+      std::size_t              total = 0;
+      return expand_includes(filename, chain, total);
     }
   } // namespace
 
@@ -397,11 +516,16 @@ namespace ddcontact
                             static_cast<unsigned int>(n[1])};
       mesh_file          = prm.get("File");
       initial_refinement = prm.get_integer("Initial refinement");
-      refinement_box     = Utilities::trim(prm.get("Refinement box"));
       box_refinement     = prm.get_integer("Box refinement");
-      if (!refinement_box.empty() &&
-          Utilities::split_string_list(refinement_box).size() != 4)
-        throw InputError(section + "Mesh/Refinement box: '" + refinement_box +
+      // The cells these entries would make are checked against the
+      // machine's memory when the mesh is built (ElasticBody::make_mesh).
+      const std::string box = Utilities::trim(prm.get("Refinement box"));
+      refinement_box.clear();
+      for (const auto &c : Utilities::split_string_list(box))
+        refinement_box.push_back(
+          parse_double(c, section + "Mesh/Refinement box"));
+      if (!box.empty() && refinement_box.size() != 4)
+        throw InputError(section + "Mesh/Refinement box: '" + box +
                          "' is not 'x0, y0, x1, y1'");
       if (mesh_type == "rectangle" &&
           !(corner_1[0] < corner_2[0] && corner_1[1] < corner_2[1]))
@@ -802,7 +926,7 @@ namespace ddcontact
     mode                           = "list";
     const unsigned int n_processes = n_world_processes();
     const auto         rank        = [&](const std::string &entry,
-                             const std::string &what) -> unsigned int
+                          const std::string &what) -> unsigned int
     {
       const double r = parse_double(entry, what);
       if (r < 0 || r != std::floor(r) || r >= n_processes)
@@ -918,10 +1042,13 @@ namespace ddcontact
   SceneParameters::parse(ParameterHandler &prm)
   {
     scene_name       = prm.get("Scene name");
-    output_directory = prm.get("Output directory");
-    body_names       = split(prm.get("Bodies"), ',');
-    constants        = parse_constants(prm.get("Constants"), "Constants");
-    n_threads        = prm.get_integer("Threads");
+    output_directory = Utilities::trim(prm.get("Output directory"));
+    if (output_directory.empty())
+      throw InputError("Output directory: empty; name the directory for the "
+                       "results (or give --output DIR)");
+    body_names = split(prm.get("Bodies"), ',');
+    constants  = parse_constants(prm.get("Constants"), "Constants");
+    n_threads  = prm.get_integer("Threads");
     if (body_names.empty())
       throw InputError("Bodies: no body is listed");
 
@@ -935,8 +1062,19 @@ namespace ddcontact
       prm.enter_subsection("Body " + name);
       body.parse(prm);
       prm.leave_subsection();
+      // The boundary conditions are parsed here too, with the parser the
+      // body uses, so that a scene read without error is fully checked.
+      make_boundary_conditions(body, constants);
       bodies.push_back(body);
     }
+    const auto body_parameters =
+      [this](const std::string &name) -> const BodyParameters &
+    {
+      return *std::find_if(bodies.begin(),
+                           bodies.end(),
+                           [&](const BodyParameters &b)
+                           { return b.name == name; });
+    };
 
     prm.enter_subsection("Domain decomposition");
     dd.parse(prm);
@@ -975,6 +1113,14 @@ namespace ddcontact
       if (it == body_names.end())
         throw InputError("Adaptation/Bodies: '" + b +
                          "' is not one of the Bodies");
+      // The BEM's basis is the trace of the FEM basis (26): linear only.
+      if (adaptation.enabled() && adaptation.mode != "uniform" &&
+          adaptation.estimator != "kelly" && body_parameters(b).degree != 1)
+        throw InputError("Adaptation/Estimator: " + adaptation.estimator +
+                         " builds a BEM with linear elements, but body '" + b +
+                         "' has Element/Degree = " +
+                         std::to_string(body_parameters(b).degree) +
+                         "; use Estimator = kelly or Degree = 1");
     }
 
     contact_pairs.clear();
@@ -990,6 +1136,22 @@ namespace ddcontact
             body_names.end())
           throw InputError("Contact pair " + name + ": body '" + b +
                            "' is not one of the Bodies");
+      // A zone that is not among its body's Contact ids would get no
+      // contact load: the run would end with zero force and no word.
+      for (const auto &[entry, body_name, id] :
+           {std::make_tuple(
+              std::string("Boundary id 1"), pair.body_1, pair.boundary_id_1),
+            std::make_tuple(
+              std::string("Boundary id 2"), pair.body_2, pair.boundary_id_2)})
+      {
+        const auto &body = body_parameters(body_name);
+        if (!make_boundary_conditions(body, constants).contact.count(id))
+          throw InputError(
+            "Contact pair " + name + "/" + entry + ": " + std::to_string(id) +
+            " is not among the Contact "
+            "ids of body '" +
+            body_name + "' ('" + body.contact_ids + "'); add it there");
+      }
       contact_pairs.push_back(pair);
     }
 
@@ -1028,6 +1190,14 @@ namespace ddcontact
                          "': expected \"Section/Entry=value\"");
       const auto path =
         Utilities::split_string_list(assignment.substr(0, eq), '/');
+      const std::string entry = assignment.substr(0, eq);
+      if (path.empty() || entry.front() == '/' || entry.back() == '/' ||
+          std::any_of(path.begin(),
+                      path.end(),
+                      [](const std::string &p) { return p.empty(); }))
+        throw InputError("--set '" + assignment +
+                         "': the entry path has an empty part; expected "
+                         "\"Section/Entry=value\"");
       const auto value = Utilities::trim(assignment.substr(eq + 1));
       for (unsigned int i = 0; i + 1 < path.size(); ++i)
         prm.enter_subsection(path[i]);
@@ -1049,9 +1219,7 @@ namespace ddcontact
   ParameterReader::ParameterReader(const std::string              &filename,
                                    const std::vector<std::string> &overrides)
   {
-    if (!std::ifstream(filename))
-      throw InputError("parameter file '" + filename +
-                       "' does not exist or cannot be read");
+    const std::string text = read_parameter_text(filename);
 
     // First pass: only the list of bodies matters; everything else in the
     // file is skipped.
@@ -1062,7 +1230,7 @@ namespace ddcontact
       prescan.declare_entry("Contact pairs", "", Patterns::Anything());
       try
       {
-        prescan.parse_input(filename, "", true);
+        prescan.parse_input_from_string(text, "", true);
       }
       catch (const std::exception &e)
       {
@@ -1073,13 +1241,17 @@ namespace ddcontact
           apply_override(prescan, o);
       body_names = split(prescan.get("Bodies"), ',');
       pair_names = split(prescan.get("Contact pairs"), ',');
+      for (const auto &name : body_names)
+        check_name(name, "Bodies");
+      for (const auto &name : pair_names)
+        check_name(name, "Contact pairs");
     }
 
     // Second pass: strict.
     SceneParameters::declare(prm, body_names, pair_names);
     try
     {
-      prm.parse_input(filename, "", false);
+      prm.parse_input_from_string(text, "", false);
     }
     catch (const std::exception &e)
     {

@@ -6,13 +6,14 @@
 
 #include <ddcontact/monolithic_solver.h>
 #include <ddcontact/simulation.h>
+#include <ddcontact/tasks.h>
 #include <ddcontact/version.h>
 
 #include <array>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <functional>
+#include <iomanip>
 #include <sstream>
 
 namespace ddcontact
@@ -40,16 +41,10 @@ namespace ddcontact
                     const bool                             in_turn,
                     const std::function<void(T &)>        &work)
     {
-      if (in_turn)
-      {
-        for (const auto &o : objects)
-          work(*o);
-        return;
-      }
-      Threads::TaskGroup<void> tasks;
-      for (const auto &o : objects)
-        tasks += Threads::new_task([&work, &o]() { work(*o); });
-      tasks.join_all();
+      run_tasks(
+        objects.size(),
+        [&](const unsigned int i) { work(*objects[i]); },
+        in_turn);
     }
   } // namespace
 
@@ -79,17 +74,15 @@ namespace ddcontact
         body_parameters,
         parameters.constants,
         partitioned ? MPI_COMM_WORLD : MPI_COMM_SELF,
-        partitioned && parameters.parallel.distributed_mesh(
-                         body_parameters,
-                         Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD))));
+        partitioned &&
+          parameters.parallel.distributed_mesh(
+            body_parameters, Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD))));
       // Assembled and factorized only where it is solved, below.
       bodies.back()->set_solved_here(false);
       bodies.back()->make_mesh(parameters.output_directory);
     }
-    for_each_object<ElasticBody<2>>(bodies,
-                                    partitioned,
-                                    [](ElasticBody<2> &body)
-                                    { body.setup_system(); });
+    for_each_object<ElasticBody<2>>(
+      bodies, partitioned, [](ElasticBody<2> &body) { body.setup_system(); });
 
     distribution = std::make_unique<BodyDistribution>(
       raw_pointers(bodies), parameters.parallel, MPI_COMM_WORLD);
@@ -101,9 +94,8 @@ namespace ddcontact
 
     for (const auto &body : bodies)
       pcout << "  body " << std::setw(10) << std::left << body->name()
-            << std::right << std::setw(9)
-            << body->n_active_cells() << " cells " << std::setw(9)
-            << body->n_dofs() << " dofs  ("
+            << std::right << std::setw(9) << body->n_active_cells() << " cells "
+            << std::setw(9) << body->n_dofs() << " dofs  ("
             << (body->is_simplex() ? "triangles" : "quadrilaterals")
             << (body->is_mesh_distributed() ? ", p4est" : "") << ", "
             << body->get_fe().get_name() << ")" << std::endl;
@@ -175,9 +167,8 @@ namespace ddcontact
 
     // Semismooth Newton on the penalised problem, inside the same Uzawa
     // loop as the DD when the augmented Lagrangian is on.
-    MonolithicContactSolver newton(dd_solver->get_problem(),
-                                   parameters.dd.n_newton,
-                                   pcout);
+    MonolithicContactSolver newton(
+      dd_solver->get_problem(), parameters.dd.n_newton, pcout);
     do
       n_newton_iterations += newton.run();
     while (dd_solver->start_uzawa_phase());
@@ -310,9 +301,9 @@ namespace ddcontact
              << body.get_material().von_mises(
                   body.stress_from_strain(strain[0], dilatation, c))
              << ','
-             << (eta.size() == body.get_triangulation().n_active_cells() ?
-                   eta(c) :
-                   0.)
+             << (eta.size() == body.get_triangulation().n_active_cells()
+                   ? eta(c)
+                   : 0.)
              << '\n';
       }
       std::string text = rows.str();
@@ -547,11 +538,10 @@ namespace ddcontact
       b.set("distributed_mesh", body->is_mesh_distributed());
       // What the mesh, its dofs and constraints take on the process that
       // holds the most of them (a distributed mesh: its share).
-      const double mesh_mb =
-        (body->get_triangulation().memory_consumption() +
-         body->get_dof_handler().memory_consumption() +
-         body->get_constraints().memory_consumption()) /
-        1048576.;
+      const double mesh_mb = (body->get_triangulation().memory_consumption() +
+                              body->get_dof_handler().memory_consumption() +
+                              body->get_constraints().memory_consumption()) /
+                             1048576.;
       b.set("mesh_memory_mb", Utilities::MPI::max(mesh_mb, MPI_COMM_WORLD));
       b.set("dofs", static_cast<unsigned long>(body->n_dofs()));
       b.set("min_cell_diameter", body->min_cell_diameter());
@@ -679,7 +669,8 @@ namespace ddcontact
     Utilities::System::get_memory_stats(memory);
     const double peak_mb = memory.VmHWM / 1024.;
     Json         peak    = Json::object();
-    peak.set("largest_process_mb", Utilities::MPI::max(peak_mb, MPI_COMM_WORLD));
+    peak.set("largest_process_mb",
+             Utilities::MPI::max(peak_mb, MPI_COMM_WORLD));
     peak.set("all_processes_mb", Utilities::MPI::sum(peak_mb, MPI_COMM_WORLD));
     json.set("peak_memory", peak);
 
@@ -747,8 +738,7 @@ namespace ddcontact
       if (!parameters.adaptation.enabled())
         output_results(0);
       // "converged" only if the augmented Lagrangian met its tolerance too.
-      const std::string shortfall =
-        dd_solver->augmented_lagrangian_shortfall();
+      const std::string shortfall = dd_solver->augmented_lagrangian_shortfall();
       write_summary(shortfall.empty() ? "converged" : "stalled");
       if (!shortfall.empty())
         throw DivergenceError(shortfall);

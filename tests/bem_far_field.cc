@@ -30,7 +30,7 @@ main(int argc, char **argv)
     prm.corner_2                = Point<2>(2., 1.);
     prm.subdivisions            = {32, 8};
     prm.initial_refinement      = 1;
-    prm.refinement_box          = "0, 0.8, 0.6, 1";
+    prm.refinement_box          = {0, 0.8, 0.6, 1};
     prm.box_refinement          = local;
     prm.material.youngs_modulus = 2.1e5;
     prm.material.poisson_ratio  = 0.3;

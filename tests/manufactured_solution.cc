@@ -205,7 +205,7 @@ namespace
     {
       // A box at the bottom right: its hanging nodes lie in the interior,
       // on the Dirichlet side (bottom) and on the Neumann side (right).
-      p.refinement_box = "0.75, 0, 1, 0.25";
+      p.refinement_box = {0.75, 0, 1, 0.25};
       p.box_refinement = 2;
     }
 

@@ -112,7 +112,7 @@ main()
   {
     AitkenRelaxation relaxation(0.1);
     Vector<double>   x(1);
-    const auto scalar_map = [](const Vector<double> &y)
+    const auto       scalar_map = [](const Vector<double> &y)
     {
       Vector<double> g(1);
       g(0) = 6. - 5. * y(0); // fixed point 1

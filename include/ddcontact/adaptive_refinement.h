@@ -121,6 +121,12 @@ namespace ddcontact
     cell_data() const;
 
   private:
+    /** Clear the refine flags of cells at Max level, and all flags if the
+     * refinement would exceed Max cells; returns the cells still marked
+     * (over all processes) and counts the others in `capped`. */
+    unsigned int
+    apply_caps();
+
     /** Kelly's indicator of @p u_fem into eta (the baseline estimator). */
     void
     estimate_kelly(const Vector<double> &u_fem);
@@ -130,7 +136,7 @@ namespace ddcontact
     std::unique_ptr<FemBemEstimator> fem_bem_estimator;
     Vector<double>                   eta;
     double                           eta_maximum = 0, eta_total = 0;
-    unsigned int                     capped      = 0;
+    unsigned int                     capped = 0;
   };
 } // namespace ddcontact
 

@@ -146,15 +146,15 @@ namespace ddcontact
     describe() const;
 
   private:
-    std::vector<ElasticBody<2> *> bodies;
-    const ParallelParameters      parameters;
-    const MPI_Comm                communicator;
-    const unsigned int            this_process, n_procs;
-    const bool                    process_groups;
+    std::vector<ElasticBody<2> *>          bodies;
+    const ParallelParameters               parameters;
+    const MPI_Comm                         communicator;
+    const unsigned int                     this_process, n_procs;
+    const bool                             process_groups;
     std::vector<std::vector<unsigned int>> groups;
-    bool                                   groups_chosen = false;
-    mutable double                seconds_solving    = 0;
-    mutable double                seconds_exchanging = 0;
+    bool                                   groups_chosen      = false;
+    mutable double                         seconds_solving    = 0;
+    mutable double                         seconds_exchanging = 0;
   };
 } // namespace ddcontact
 

@@ -70,8 +70,8 @@ namespace ddcontact
    * A quadrilateral body solved by every process may instead have a
    * parallel::distributed::Triangulation (p4est; "Parallel/Mesh"): each
    * process then keeps only its own cells and a ghost layer (but all
-   * constraints, which are few: complete_constraints()), and whatever is computed
-   * cell by cell (energy, stresses, point values) is computed on the
+   * constraints, which are few: complete_constraints()), and whatever is
+   * computed cell by cell (energy, stresses, point values) is computed on the
    * owned cells and summed over the processes. The iterate stays whole on
    * every process, so that the DD loop (20)-(21) is the same for every
    * kind of mesh; the contact pairs find their points in the owned cells
@@ -373,6 +373,22 @@ namespace ddcontact
     void
     read_mesh_file(const std::string &work_directory);
 
+    /** Refuse, naming @p entry of the body's section, a mesh of
+     * @p n_cells cells whose unknowns would not fit into the memory this
+     * machine has available (checked before the cells are made). */
+    void
+    check_mesh_size(double n_cells, const std::string &entry) const;
+
+    /** Throw an InputError naming the load expression (Body force or
+     * Neumann) that is not finite, and where (after assembly found a
+     * non-finite load). */
+    [[noreturn]] void
+    throw_non_finite_load() const;
+
+    /** Refuse Dirichlet expressions that are not finite on their faces. */
+    void
+    check_dirichlet_values() const;
+
     void
     check_boundary_ids() const;
 
@@ -380,8 +396,7 @@ namespace ddcontact
      * (see reduced_volumetric_integration()), through @p copier. */
     void
     assemble_reduced_volumetric_term(
-      const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)>
-        &copier);
+      const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier);
 
     /** The sparsity pattern and matrix (serial, or distributed over the
      * process group), where the body is solved. */
@@ -429,18 +444,18 @@ namespace ddcontact
     // Iterative alternative: CG with algebraic multigrid.
     TrilinosWrappers::SparseMatrix    trilinos_matrix;
     TrilinosWrappers::PreconditionAMG amg_preconditioner;
-    bool                              is_factorized = false;
-    bool                              solved_here   = true;
+    bool                              is_factorized    = false;
+    bool                              solved_here      = true;
     bool                              mesh_distributed = false;
 
     // Process groups: the world ranks solving this body, their
     // communicator, and the matrix, load and direct solver distributed over
     // them.
-    std::vector<unsigned int>                              process_group{0};
-    MPI_Comm                                               group_communicator;
-    TrilinosWrappers::SparseMatrix                         distributed_matrix;
-    TrilinosWrappers::MPI::Vector                          distributed_load;
-    mutable SolverControl                                  direct_control;
+    std::vector<unsigned int>                               process_group{0};
+    MPI_Comm                                                group_communicator;
+    TrilinosWrappers::SparseMatrix                          distributed_matrix;
+    TrilinosWrappers::MPI::Vector                           distributed_load;
+    mutable SolverControl                                   direct_control;
     mutable std::unique_ptr<TrilinosWrappers::SolverDirect> distributed_direct;
     // First dof and number of dofs of every process of the group (its
     // ranges are contiguous), for gathering the solution.

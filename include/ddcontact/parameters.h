@@ -47,7 +47,7 @@ namespace ddcontact
     std::vector<unsigned int> subdivisions{1, 1};
     std::string               mesh_file;
     unsigned int              initial_refinement = 0;
-    std::string               refinement_box; // "x0, y0, x1, y1" or empty
+    std::vector<double>       refinement_box; // x0, y0, x1, y1, or empty
     unsigned int              box_refinement = 0;
 
     // Element
@@ -296,6 +296,19 @@ namespace ddcontact
     mutable ParameterHandler prm;
     SceneParameters          scene_parameters;
   };
+
+  /** Refuse a body, pair or scene name that is not safe as part of a file
+   * name; `what` names the entry. */
+  void
+  check_name(const std::string &name, const std::string &what);
+
+  /** The contents of a regular file of at most @p max_bytes, read without
+   * reading further (devices and pipes are refused); `what` names the
+   * file's role in errors ("parameter file", "Body a/Mesh/File"). */
+  std::string
+  read_bounded_file(const std::string &filename,
+                    std::size_t        max_bytes,
+                    const std::string &what);
 
   /** Parse "x1, x2" into a point; `what` names the entry in errors. */
   Point<2>

@@ -1,0 +1,41 @@
+#include <deal.II/base/thread_management.h>
+
+#include <ddcontact/tasks.h>
+
+#include <exception>
+#include <vector>
+
+namespace ddcontact
+{
+  void
+  run_tasks(const unsigned int                       n,
+            const std::function<void(unsigned int)> &work,
+            const bool                               in_turn)
+  {
+    std::vector<std::exception_ptr> errors(n);
+    const auto                      run = [&](const unsigned int i)
+    {
+      try
+      {
+        work(i);
+      }
+      catch (...)
+      {
+        errors[i] = std::current_exception();
+      }
+    };
+    if (in_turn)
+      for (unsigned int i = 0; i < n; ++i)
+        run(i);
+    else
+    {
+      dealii::Threads::TaskGroup<void> tasks;
+      for (unsigned int i = 0; i < n; ++i)
+        tasks += dealii::Threads::new_task([&run, i]() { run(i); });
+      tasks.join_all();
+    }
+    for (const auto &e : errors)
+      if (e)
+        std::rethrow_exception(e);
+  }
+} // namespace ddcontact
