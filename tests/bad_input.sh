@@ -71,8 +71,62 @@ case_ "body without owner" "'upper' is not listed" "$base" --set "Parallel/Body 
 case_ "body owner range backwards" "is not a process or a range" "$base" --set "Parallel/Body owners=lower: 0, upper: 0-0-0"
 case_ "body owner range beyond the run" "does not exist" "$base" --set "Parallel/Body owners=lower: 0-1, upper: 0"
 
+# Hostile and careless input: crashes, shells, runaway memory, silent
+# wrong answers (doc/reliability.md).
+paper="$src/prm/paper_two_bodies.prm"
+flat="--set Adaptation/Mode=none"
+case_ "--set with an empty entry path" "empty part" "$base" --set "=3"
+case_ "--set with a trailing slash" "empty part" "$base" --set "Body lower/=3"
+printf 'include %s\n' "$work/self.prm" >"$work/self.prm"
+case_ "parameter file includes itself" "includes itself" "$work/self.prm"
+printf 'include /dev/zero\n' >"$work/zero.prm"
+case_ "include of /dev/zero" "not a regular file" "$work/zero.prm"
+case_ "parameter file is /dev/zero" "not a regular file" /dev/zero
+case_ "body name with a slash" "Bodies: 'lo/wer'" "$base" --set "Bodies=lo/wer, upper"
+case_ "body name of 300 characters" "is not a usable name" "$base" --set "Bodies=$(printf 'a%.0s' $(seq 300)), upper"
+case_ "Subdivisions = 2e9, 2e9" "Mesh/Subdivisions: the mesh would have" "$base" --set "Body lower/Mesh/Subdivisions=2000000000, 2000000000"
+case_ "Initial refinement = 20" "Mesh/Initial refinement: the mesh would have" "$base" --set "Body lower/Mesh/Initial refinement=20"
+case_ "Box refinement = 20" "Mesh/Box refinement: the mesh would have" "$src/prm/hertz.prm" --set "Body lower/Mesh/Box refinement=20"
+case_ "Refinement box of letters" "Mesh/Refinement box: 'a'" "$base" --set "Body lower/Mesh/Refinement box=a, b, c, d" --set "Body lower/Mesh/Box refinement=1"
+case_ "Corner 1 = -inf, 0" "Mesh/Corner 1: '-inf'" "$base" --set "Body lower/Mesh/Corner 1=-inf, 0"
+case_ "empty Output directory" "Output directory: empty" "$base" --output ""
+case_ "contact zone not among the Contact ids" "Boundary id 2: 2 is not among" "$paper" --set "Contact pair S/Boundary id 2=2"
+case_ "FEM-BEM estimator with degree 2" "Adaptation/Estimator" "$paper" --set "Body omega2/Element/Degree=2"
+case_ "gap NaN on part of S" "Contact pair S/Gap" "$paper" $flat --set "Contact pair S/Gap=sqrt(x)"
+case_ "gap overlap deeper than the bodies" "Contact pair S/Gap" "$paper" $flat --set "Contact pair S/Gap=-1e308"
+case_ "Neumann load NaN on part of the boundary" "Body lower/Boundary conditions/Neumann" "$base" --set "Body lower/Boundary conditions/Neumann=3: 0; sqrt(x)"
+case_ "body force NaN" "Body upper/Boundary conditions/Body force" "$base" --set "Body upper/Boundary conditions/Body force=0; log(x)"
+case_ "Dirichlet value infinite" "Body lower/Boundary conditions/Dirichlet" "$base" --set "Body lower/Boundary conditions/Dirichlet=2: xy: 0; 1/(x-x)"
+case_ "tiny Thickness" "Contact pair S/Thickness" "$paper" $flat --set "Contact pair S/Thickness=1e-300"
+case_ "tiny absolute penalty" "Contact pair S/Penalty" "$paper" $flat --set "Contact pair S/Penalty type=absolute" --set "Contact pair S/Penalty=1e-290"
+case_ "stiff penalty with fixed gamma (c = 1e-7)" "raise Contact pair S/Penalty" "$paper" $flat --set "Contact pair S/Penalty=1e-7"
+case_ "augmented Lagrangian that stops short (c = 100)" "augmented Lagrangian stopped" "$paper" $flat --set "Contact pair S/Penalty=100" --set "Domain decomposition/Augmented Lagrangian=true" --set "Domain decomposition/AL max updates=3"
+mkdir -p "$work/inj"
+cp "$src/meshes/half_cylinder.geo" "$work/inj/x'; echo INJECTED; echo '.geo"
+"$exe" --output "$work/out" "$src/prm/hertz_cylinder.prm" --set "Output/Write vtu=false" \
+  --set "Body cylinder/Mesh/File=$work/inj/x'; echo INJECTED; echo '.geo" >"$work/stdout" 2>"$work/stderr"
+if grep -q INJECTED "$work/stdout" "$work/stderr" "$work/out"/*.log 2>/dev/null; then
+  echo "FAIL a shell ran on the mesh file name"; failures=$((failures + 1))
+else
+  echo "ok   no shell runs on a mesh file name"
+fi
+# Uniform refinement obeys Max cells (it quadrupled the mesh every cycle).
+"$exe" --output "$work/uniform" "$base" --set "Output/Write vtu=false" \
+  --set "Adaptation/Mode=uniform" --set "Adaptation/Bodies=lower" \
+  --set "Adaptation/Max cells=5000" >/dev/null 2>&1
+cells=$(python3 -c "import json,sys; print(max(b['cells'] for b in json.load(open(sys.argv[1]))['bodies']))" "$work/uniform/summary.json" 2>/dev/null)
+if [ -n "$cells" ] && [ "$cells" -le 5000 ]; then
+  echo "ok   uniform refinement stops at Max cells = 5000 ($cells cells)"
+else
+  echo "FAIL uniform refinement with Max cells = 5000 ended with '$cells' cells"; failures=$((failures + 1))
+fi
+printf 'For i In {1:1e15}\nEndFor\n' >"$work/inj/loop.geo"
+export DDCONTACT_GMSH_TIMEOUT=2
+case_ "gmsh in an endless loop" "within 2 s" "$src/prm/hertz_cylinder.prm" --set "Body cylinder/Mesh/File=$work/inj/loop.geo"
+unset DDCONTACT_GMSH_TIMEOUT
+
 mpi_case_ "distributed mesh for a body on one process" "Parallel/Mesh" "$base" --set "Parallel/Mesh=distributed"
 
-total=$(grep -c -E '^(mpi_)?case_ ' "$0")
+total=$(( $(grep -c -E '^(mpi_)?case_ ' "$0") + 2 ))  # and two checks of outputs
 echo "$((total - failures)) passed, $failures failed"
 [ $failures -eq 0 ]
