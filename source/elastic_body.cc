@@ -35,6 +35,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -183,21 +184,33 @@ namespace ddcontact
       return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     }
 
-    /** MemAvailable of /proc/meminfo in bytes (what can be allocated
-     * without swapping), or 0 if it cannot be read. */
+    /** What this process may allocate, in bytes: MemAvailable of
+     * /proc/meminfo (without swapping), or less under an address-space
+     * limit (ulimit -v; half of it, since the libraries reserve address
+     * space they never touch); 0 if neither can be read. */
     double
     available_memory()
     {
+      double        available = 0;
       std::ifstream meminfo("/proc/meminfo");
       std::string   key;
       double        kb = 0;
       while (meminfo >> key >> kb)
       {
         if (key == "MemAvailable:")
-          return kb * 1024.;
+        {
+          available = kb * 1024.;
+          break;
+        }
         meminfo.ignore(256, '\n');
       }
-      return 0;
+      rlimit limit;
+      if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+      {
+        const double allowed = 0.5 * static_cast<double>(limit.rlim_cur);
+        available = (available > 0) ? std::min(available, allowed) : allowed;
+      }
+      return available;
     }
   } // namespace
 
@@ -997,7 +1010,20 @@ namespace ddcontact
         distributed_direct->initialize(distributed_matrix);
       }
       else
-        direct_solver.initialize(stiffness_matrix);
+        try
+        {
+          direct_solver.initialize(stiffness_matrix);
+        }
+        catch (const std::exception &)
+        {
+          // UMFPACK reports a singular or overflowing matrix by an
+          // exception with a stack trace; the user needs the body.
+          throw InputError(parameters.section() +
+                           ": the stiffness matrix cannot be factorized "
+                           "(singular, or its entries overflow); check "
+                           "Material/Young's modulus and the Dirichlet "
+                           "conditions");
+        }
     }
     else
     {

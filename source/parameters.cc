@@ -50,6 +50,27 @@ namespace ddcontact
       return one_line(e.what());
     }
 
+    /** deal.II names the parsed text "<input string>"; the message names
+     * the file already, so "Line <n> of file <input string>" becomes
+     * "line n" (of the file with its includes expanded). */
+    std::string
+    without_input_string(std::string message)
+    {
+      const std::string tag  = " of file <input string>";
+      const auto        at   = message.find(tag);
+      const auto        line = message.find("Line <");
+      if (at != std::string::npos)
+        message.erase(at, tag.size());
+      if (line != std::string::npos)
+      {
+        message.replace(line, 6, "line ");
+        const auto close = message.find('>', line);
+        if (close != std::string::npos)
+          message.erase(close, 1);
+      }
+      return message;
+    }
+
     unsigned int
     n_world_processes()
     {
@@ -556,10 +577,13 @@ namespace ddcontact
     {
       material.youngs_modulus = prm.get_double("Young's modulus");
       material.poisson_ratio  = prm.get_double("Poisson's ratio");
-      if (!(material.youngs_modulus > 0.) ||
-          !std::isfinite(material.youngs_modulus))
+      // Stiffness entries are E times O(1) factors summed over cells: at
+      // 1e300 they overflow. Any unit system fits within 1e-30..1e30.
+      if (!(material.youngs_modulus >= 1e-30 &&
+            material.youngs_modulus <= 1e30))
         throw InputError(section + "Material/Young's modulus: E = " +
-                         prm.get("Young's modulus") + " must be positive");
+                         prm.get("Young's modulus") +
+                         " must be positive and within 1e-30 .. 1e30");
       if (!(material.poisson_ratio > -1. && material.poisson_ratio < 0.5))
         throw InputError(section + "Material/Poisson's ratio: nu = " +
                          prm.get("Poisson's ratio") + " must lie in (-1, 0.5)");
@@ -1234,7 +1258,8 @@ namespace ddcontact
       }
       catch (const std::exception &e)
       {
-        throw InputError("parameter file '" + filename + "': " + message_of(e));
+        throw InputError("parameter file '" + filename +
+                         "': " + without_input_string(message_of(e)));
       }
       for (const auto &o : overrides)
         if (o.rfind("Bodies", 0) == 0 || o.rfind("Contact pairs", 0) == 0)
@@ -1255,7 +1280,8 @@ namespace ddcontact
     }
     catch (const std::exception &e)
     {
-      throw InputError("parameter file '" + filename + "': " + message_of(e));
+      throw InputError("parameter file '" + filename +
+                       "': " + without_input_string(message_of(e)));
     }
     for (const auto &o : overrides)
       apply_override(prm, o);
