@@ -99,7 +99,7 @@ namespace ddcontact
     for (unsigned int b = 0; b < bodies.size(); ++b)
       bodies[b]->get_solution() = u[b];
 
-    if (parameters.relaxation == "auto")
+    if (parameters.relaxation == RelaxationType::automatic)
     {
       // The optimal fixed gamma for a spectrum in [1, 1 + lambda_max] is
       // 2 / (2 + lambda_max); gamma* = 2 / (1 + lambda_max).
@@ -118,7 +118,7 @@ namespace ddcontact
     const auto &pairs  = problem.get_pairs();
     auto        u      = problem.zero_iterate();
 
-    if (parameters.initial_guess == "winkler")
+    if (parameters.initial_guess == InitialGuess::elastic_layer)
     {
       // Elastic-layer model: each body acts on S like a bed of springs of
       // stiffness E'/H (E' = E/(1-nu^2), H its thickness across S), in
@@ -370,10 +370,11 @@ namespace ddcontact
     // The stopping test of Domain decomposition/Stopping test.
     const bool residual_test = record.residual <= parameters.eps_residual;
     const bool paper_test    = record.increment <= parameters.eps_u;
-    const bool converged = (parameters.stopping == "residual") ? residual_test
-                           : (parameters.stopping == "paper")
-                             ? paper_test
-                             : residual_test || paper_test;
+    const bool converged     = (parameters.stopping == StoppingTest::residual)
+                                 ? residual_test
+                               : (parameters.stopping == StoppingTest::paper)
+                                 ? paper_test
+                                 : residual_test || paper_test;
 
     // Divergence: a non-finite residual, growth far above the best residual
     // so far, or no progress at all for many iterations (a 2-cycle between
@@ -442,18 +443,19 @@ namespace ddcontact
         << "materials, making the softer body Body 1 does the same) and set "
         << "Domain decomposition/Augmented Lagrangian = true for an exact "
         << "contact, or use Domain decomposition/Solver = monolithic";
-    else if (parameters.relaxation == "fixed" && parameters.gamma > limit)
+    else if (parameters.relaxation == RelaxationType::fixed &&
+             parameters.gamma > limit)
       s << ": Domain decomposition/Gamma = " << parameters.gamma
         << " is above the estimated stable limit gamma*; use Gamma below "
         << limit << " (about " << 2 * limit / (2 + limit)
         << " is fastest) or Relaxation = anderson";
-    else if (parameters.relaxation == "fixed")
+    else if (parameters.relaxation == RelaxationType::fixed)
       s << ": Domain decomposition/Gamma = " << parameters.gamma
         << " is below the estimated gamma* of the linearised iteration, but "
         << "the active set oscillates; use a smaller Gamma or Relaxation = "
         << "anderson";
     else
-      s << " with Relaxation = " << parameters.relaxation
+      s << " with Relaxation = " << to_string(parameters.relaxation)
         << "; use Relaxation = fixed with Gamma = " << 2 * limit / (2 + limit)
         << " (below gamma*), or a larger " << penalty_entries;
     return s.str();
@@ -529,7 +531,7 @@ namespace ddcontact
     // A new phase of the DD with the new multipliers; Aitken's dynamic
     // gamma starts again from the given one.
     start_phase();
-    if (parameters.relaxation != "auto")
+    if (parameters.relaxation != RelaxationType::automatic)
       relaxation->set_gamma(parameters.gamma);
     return true;
   }

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <tuple>
 
@@ -71,6 +72,19 @@ namespace ddcontact
       return message;
     }
 
+    /** The enum value of an entry that a Patterns::Selection has
+     * checked already (so every value is in @p values). */
+    template <typename Enum>
+    Enum
+    parse_selection(const std::string                 &value,
+                    const std::map<std::string, Enum> &values)
+    {
+      const auto it = values.find(value);
+      AssertThrow(it != values.end(),
+                  ExcMessage("unexpected selection '" + value + "'"));
+      return it->second;
+    }
+
     unsigned int
     n_world_processes()
     {
@@ -125,6 +139,23 @@ namespace ddcontact
       }
     }
   } // namespace
+
+  std::string
+  to_string(const RelaxationType relaxation)
+  {
+    switch (relaxation)
+    {
+      case RelaxationType::fixed:
+        return "fixed";
+      case RelaxationType::automatic:
+        return "auto";
+      case RelaxationType::aitken:
+        return "aitken";
+      case RelaxationType::anderson:
+        return "anderson";
+    }
+    return "";
+  }
 
   void
   check_name(const std::string &name, const std::string &what)
@@ -778,15 +809,29 @@ namespace ddcontact
   void
   DDParameters::parse(ParameterHandler &prm)
   {
-    solver                = prm.get("Solver");
-    relaxation            = prm.get("Relaxation");
-    gamma                 = prm.get_double("Gamma");
-    anderson_depth        = prm.get_integer("Anderson depth");
-    stopping              = prm.get("Stopping test");
-    eps_u                 = prm.get_double("eps_u");
-    eps_residual          = prm.get_double("eps_residual");
-    max_iterations        = prm.get_integer("Max iterations");
-    initial_guess         = prm.get("Initial guess");
+    solver = parse_selection<ContactSolverType>(
+      prm.get("Solver"),
+      {{"dd", ContactSolverType::dd},
+       {"monolithic", ContactSolverType::monolithic}});
+    relaxation =
+      parse_selection<RelaxationType>(prm.get("Relaxation"),
+                                      {{"fixed", RelaxationType::fixed},
+                                       {"auto", RelaxationType::automatic},
+                                       {"aitken", RelaxationType::aitken},
+                                       {"anderson", RelaxationType::anderson}});
+    gamma          = prm.get_double("Gamma");
+    anderson_depth = prm.get_integer("Anderson depth");
+    stopping =
+      parse_selection<StoppingTest>(prm.get("Stopping test"),
+                                    {{"residual", StoppingTest::residual},
+                                     {"paper", StoppingTest::paper},
+                                     {"both", StoppingTest::both}});
+    eps_u          = prm.get_double("eps_u");
+    eps_residual   = prm.get_double("eps_residual");
+    max_iterations = prm.get_integer("Max iterations");
+    initial_guess  = parse_selection<InitialGuess>(
+      prm.get("Initial guess"),
+      {{"zero", InitialGuess::zero}, {"winkler", InitialGuess::elastic_layer}});
     augmented_lagrangian  = prm.get_bool("Augmented Lagrangian");
     al_tolerance          = prm.get_double("AL tolerance");
     al_max_updates        = prm.get_integer("AL max updates");
@@ -1109,7 +1154,8 @@ namespace ddcontact
     prm.leave_subsection();
     // The combined algorithm (Fig. 2) interleaves single DD steps with the
     // refinement; the monolithic solver has no such steps.
-    if (adaptation.mode == "combined" && dd.solver == "monolithic")
+    if (adaptation.mode == "combined" &&
+        dd.solver == ContactSolverType::monolithic)
       throw InputError("Adaptation/Mode: combined needs Domain "
                        "decomposition/Solver = dd; use Mode = nested with the "
                        "monolithic solver");
@@ -1127,7 +1173,7 @@ namespace ddcontact
             "' is not solved by every process (distributed meshes need "
             "Body owners = all, or a list that gives the body every "
             "process); use Mesh = auto or shared");
-    if (dd.solver == "monolithic" && n_world_processes() > 1)
+    if (dd.solver == ContactSolverType::monolithic && n_world_processes() > 1)
       throw InputError("Domain decomposition/Solver: monolithic runs on one "
                        "process; use Solver = dd under mpirun");
 

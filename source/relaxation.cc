@@ -142,9 +142,9 @@ namespace ddcontact
   std::unique_ptr<Relaxation>
   make_relaxation(const DDParameters &parameters)
   {
-    if (parameters.relaxation == "aitken")
+    if (parameters.relaxation == RelaxationType::aitken)
       return std::make_unique<AitkenRelaxation>(parameters.gamma);
-    if (parameters.relaxation == "anderson")
+    if (parameters.relaxation == RelaxationType::anderson)
       return std::make_unique<AndersonRelaxation>(parameters.gamma,
                                                   parameters.anderson_depth);
     return std::make_unique<FixedRelaxation>(parameters.gamma);

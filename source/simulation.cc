@@ -158,7 +158,7 @@ namespace ddcontact
   Simulation::solve_contact()
   {
     TimerOutput::Scope t(timer, "contact solve");
-    if (parameters.dd.solver == "dd")
+    if (parameters.dd.solver == ContactSolverType::dd)
     {
       const unsigned int before = dd_solver->history().size();
       dd_solver->run();
@@ -581,7 +581,7 @@ namespace ddcontact
     {
       json.set("dd_iterations", n_contact_iterations);
       json.set("gamma", parameters.dd.gamma);
-      json.set("relaxation", parameters.dd.relaxation);
+      json.set("relaxation", to_string(parameters.dd.relaxation));
       json.set("uzawa_updates", dd_solver->n_uzawa_updates());
       Json thetas  = Json::array();
       Json contact = Json::array();
