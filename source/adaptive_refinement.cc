@@ -100,18 +100,21 @@ namespace ddcontact
     : body(body)
     , parameters(parameters)
   {
-    if (parameters.mode != "uniform" && body.is_simplex())
+    if (parameters.mode != AdaptationMode::uniform && body.is_simplex())
       throw InputError("Adaptation/Bodies: body '" + body.name() +
                        "' has triangles, which deal.II 9.4 refines only "
                        "globally; use quadrilaterals or Mode = uniform");
-    if (parameters.mode != "uniform" && parameters.estimator == "kelly" &&
-        parameters.marking == "threshold")
+    if (parameters.mode != AdaptationMode::uniform &&
+        parameters.estimator == EstimatorType::kelly &&
+        parameters.marking == MarkingType::threshold)
       throw InputError("Adaptation/Marking: threshold compares eta with the "
                        "dimensionless delta of (27) and needs a fem-bem "
                        "estimator; use fraction or doerfler with kelly");
-    if (parameters.mode != "uniform" && parameters.estimator != "kelly")
+    if (parameters.mode != AdaptationMode::uniform &&
+        parameters.estimator != EstimatorType::kelly)
       fem_bem_estimator = std::make_unique<FemBemEstimator>(
-        body, parameters.estimator == "fem-bem" ? "printed" : "scaled");
+        body,
+        parameters.estimator == EstimatorType::fem_bem ? "printed" : "scaled");
   }
 
   void
@@ -168,14 +171,14 @@ namespace ddcontact
     for (const auto &cell : tria.active_cell_iterators())
       cell->clear_refine_flag();
 
-    if (parameters.marking == "threshold")
+    if (parameters.marking == MarkingType::threshold)
     {
       for (const auto &cell : tria.active_cell_iterators())
         if (body.computes(cell) &&
             eta(cell->active_cell_index()) > parameters.delta)
           cell->set_refine_flag();
     }
-    else if (parameters.marking == "fraction")
+    else if (parameters.marking == MarkingType::fraction)
       refine_fixed(tria, eta, parameters.fraction, true);
     else
     {

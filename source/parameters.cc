@@ -72,17 +72,72 @@ namespace ddcontact
       return message;
     }
 
-    /** The enum value of an entry that a Patterns::Selection has
-     * checked already (so every value is in @p values). */
+    /** The entry values of each option and their enum values: the one
+     * table that parsing and printing share. */
+    template <typename Enum>
+    const std::vector<std::pair<std::string, Enum>> &
+    selection_names();
+
+#define DDCONTACT_SELECTION(Enum, ...)                               \
+  template <>                                                        \
+  const std::vector<std::pair<std::string, Enum>> &selection_names() \
+  {                                                                  \
+    static const std::vector<std::pair<std::string, Enum>> names = { \
+      __VA_ARGS__};                                                  \
+    return names;                                                    \
+  }
+
+    DDCONTACT_SELECTION(ContactSolverType,
+                        {"dd", ContactSolverType::dd},
+                        {"monolithic", ContactSolverType::monolithic})
+    DDCONTACT_SELECTION(RelaxationType,
+                        {"fixed", RelaxationType::fixed},
+                        {"auto", RelaxationType::automatic},
+                        {"aitken", RelaxationType::aitken},
+                        {"anderson", RelaxationType::anderson})
+    DDCONTACT_SELECTION(StoppingTest,
+                        {"residual", StoppingTest::residual},
+                        {"paper", StoppingTest::paper},
+                        {"both", StoppingTest::both})
+    DDCONTACT_SELECTION(InitialGuess,
+                        {"zero", InitialGuess::zero},
+                        {"winkler", InitialGuess::elastic_layer})
+    DDCONTACT_SELECTION(AdaptationMode,
+                        {"none", AdaptationMode::none},
+                        {"combined", AdaptationMode::combined},
+                        {"nested", AdaptationMode::nested},
+                        {"uniform", AdaptationMode::uniform})
+    DDCONTACT_SELECTION(EstimatorType,
+                        {"fem-bem", EstimatorType::fem_bem},
+                        {"fem-bem-scaled", EstimatorType::fem_bem_scaled},
+                        {"kelly", EstimatorType::kelly})
+    DDCONTACT_SELECTION(MarkingType,
+                        {"threshold", MarkingType::threshold},
+                        {"fraction", MarkingType::fraction},
+                        {"doerfler", MarkingType::doerfler})
+#undef DDCONTACT_SELECTION
+
+    /** The enum value of an entry that a Patterns::Selection has checked
+     * already. */
     template <typename Enum>
     Enum
-    parse_selection(const std::string                 &value,
-                    const std::map<std::string, Enum> &values)
+    parse_selection(const std::string &value)
     {
-      const auto it = values.find(value);
-      AssertThrow(it != values.end(),
-                  ExcMessage("unexpected selection '" + value + "'"));
-      return it->second;
+      for (const auto &[name, e] : selection_names<Enum>())
+        if (name == value)
+          return e;
+      AssertThrow(false, ExcMessage("unexpected selection '" + value + "'"));
+      return Enum();
+    }
+
+    template <typename Enum>
+    std::string
+    selection_name(const Enum value)
+    {
+      for (const auto &[name, e] : selection_names<Enum>())
+        if (e == value)
+          return name;
+      return "";
     }
 
     unsigned int
@@ -141,20 +196,27 @@ namespace ddcontact
   } // namespace
 
   std::string
-  to_string(const RelaxationType relaxation)
+  to_string(const RelaxationType value)
   {
-    switch (relaxation)
-    {
-      case RelaxationType::fixed:
-        return "fixed";
-      case RelaxationType::automatic:
-        return "auto";
-      case RelaxationType::aitken:
-        return "aitken";
-      case RelaxationType::anderson:
-        return "anderson";
-    }
-    return "";
+    return selection_name(value);
+  }
+
+  std::string
+  to_string(const AdaptationMode value)
+  {
+    return selection_name(value);
+  }
+
+  std::string
+  to_string(const EstimatorType value)
+  {
+    return selection_name(value);
+  }
+
+  std::string
+  to_string(const MarkingType value)
+  {
+    return selection_name(value);
   }
 
   void
@@ -809,29 +871,15 @@ namespace ddcontact
   void
   DDParameters::parse(ParameterHandler &prm)
   {
-    solver = parse_selection<ContactSolverType>(
-      prm.get("Solver"),
-      {{"dd", ContactSolverType::dd},
-       {"monolithic", ContactSolverType::monolithic}});
-    relaxation =
-      parse_selection<RelaxationType>(prm.get("Relaxation"),
-                                      {{"fixed", RelaxationType::fixed},
-                                       {"auto", RelaxationType::automatic},
-                                       {"aitken", RelaxationType::aitken},
-                                       {"anderson", RelaxationType::anderson}});
+    solver         = parse_selection<ContactSolverType>(prm.get("Solver"));
+    relaxation     = parse_selection<RelaxationType>(prm.get("Relaxation"));
     gamma          = prm.get_double("Gamma");
     anderson_depth = prm.get_integer("Anderson depth");
-    stopping =
-      parse_selection<StoppingTest>(prm.get("Stopping test"),
-                                    {{"residual", StoppingTest::residual},
-                                     {"paper", StoppingTest::paper},
-                                     {"both", StoppingTest::both}});
+    stopping       = parse_selection<StoppingTest>(prm.get("Stopping test"));
     eps_u          = prm.get_double("eps_u");
     eps_residual   = prm.get_double("eps_residual");
     max_iterations = prm.get_integer("Max iterations");
-    initial_guess  = parse_selection<InitialGuess>(
-      prm.get("Initial guess"),
-      {{"zero", InitialGuess::zero}, {"winkler", InitialGuess::elastic_layer}});
+    initial_guess  = parse_selection<InitialGuess>(prm.get("Initial guess"));
     augmented_lagrangian  = prm.get_bool("Augmented Lagrangian");
     al_tolerance          = prm.get_double("AL tolerance");
     al_max_updates        = prm.get_integer("AL max updates");
@@ -908,10 +956,10 @@ namespace ddcontact
   void
   AdaptationParameters::parse(ParameterHandler &prm)
   {
-    mode             = prm.get("Mode");
+    mode             = parse_selection<AdaptationMode>(prm.get("Mode"));
     bodies           = split(prm.get("Bodies"), ',');
-    estimator        = prm.get("Estimator");
-    marking          = prm.get("Marking");
+    estimator        = parse_selection<EstimatorType>(prm.get("Estimator"));
+    marking          = parse_selection<MarkingType>(prm.get("Marking"));
     delta            = prm.get_double("Delta");
     fraction         = prm.get_double("Fraction");
     max_cycles       = prm.get_integer("Max cycles");
@@ -919,7 +967,7 @@ namespace ddcontact
     max_cells        = prm.get_integer("Max cells");
     write_every_mesh = prm.get_bool("Write every mesh");
     if (enabled() && bodies.empty())
-      throw InputError("Adaptation/Bodies: Mode = " + mode +
+      throw InputError("Adaptation/Bodies: Mode = " + to_string(mode) +
                        " needs at least one adapted body");
   }
 
@@ -1154,7 +1202,7 @@ namespace ddcontact
     prm.leave_subsection();
     // The combined algorithm (Fig. 2) interleaves single DD steps with the
     // refinement; the monolithic solver has no such steps.
-    if (adaptation.mode == "combined" &&
+    if (adaptation.mode == AdaptationMode::combined &&
         dd.solver == ContactSolverType::monolithic)
       throw InputError("Adaptation/Mode: combined needs Domain "
                        "decomposition/Solver = dd; use Mode = nested with the "
@@ -1184,13 +1232,15 @@ namespace ddcontact
         throw InputError("Adaptation/Bodies: '" + b +
                          "' is not one of the Bodies");
       // The BEM's basis is the trace of the FEM basis (26): linear only.
-      if (adaptation.enabled() && adaptation.mode != "uniform" &&
-          adaptation.estimator != "kelly" && body_parameters(b).degree != 1)
-        throw InputError("Adaptation/Estimator: " + adaptation.estimator +
-                         " builds a BEM with linear elements, but body '" + b +
-                         "' has Element/Degree = " +
-                         std::to_string(body_parameters(b).degree) +
-                         "; use Estimator = kelly or Degree = 1");
+      if (adaptation.enabled() && adaptation.mode != AdaptationMode::uniform &&
+          adaptation.estimator != EstimatorType::kelly &&
+          body_parameters(b).degree != 1)
+        throw InputError(
+          "Adaptation/Estimator: " + to_string(adaptation.estimator) +
+          " builds a BEM with linear elements, but body '" + b +
+          "' has Element/Degree = " +
+          std::to_string(body_parameters(b).degree) +
+          "; use Estimator = kelly or Degree = 1");
     }
 
     contact_pairs.clear();

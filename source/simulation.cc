@@ -217,7 +217,7 @@ namespace ddcontact
     unsigned int       marked = 0;
     for (auto &a : adaptations)
     {
-      if (parameters.adaptation.mode == "uniform")
+      if (parameters.adaptation.mode == AdaptationMode::uniform)
       {
         marked += a->mark_all();
         continue;
@@ -384,7 +384,7 @@ namespace ddcontact
       n_iterations += solve_on_current_mesh();
       const bool   last   = (cycle == parameters.adaptation.max_cycles);
       unsigned int marked = 0;
-      if (!last || parameters.adaptation.mode != "uniform")
+      if (!last || parameters.adaptation.mode != AdaptationMode::uniform)
         marked = estimate_and_mark();
       if (last && marked > 0)
       {
@@ -615,9 +615,9 @@ namespace ddcontact
       json.set("adaptation_cycles", n_adaptation_steps);
       unsigned int bem_unknowns = 0;
       Json         estimator    = Json::object();
-      estimator.set("mode", parameters.adaptation.mode);
-      estimator.set("type", parameters.adaptation.estimator);
-      estimator.set("marking", parameters.adaptation.marking);
+      estimator.set("mode", to_string(parameters.adaptation.mode));
+      estimator.set("type", to_string(parameters.adaptation.estimator));
+      estimator.set("marking", to_string(parameters.adaptation.marking));
       estimator.set("delta", parameters.adaptation.delta);
       Json per_body = Json::array();
       for (const auto &a : adaptations)
@@ -712,7 +712,7 @@ namespace ddcontact
           dd_solver->initialize();
           n_contact_iterations = solve_contact();
         }
-        else if (parameters.adaptation.mode == "combined")
+        else if (parameters.adaptation.mode == AdaptationMode::combined)
           n_contact_iterations = solve_combined();
         else
           n_contact_iterations = solve_nested();

@@ -149,9 +149,46 @@ namespace ddcontact
     elastic_layer // "winkler"
   };
 
-  /** The entry value of @p relaxation ("fixed", "auto", ...). */
+  /** Adaptation/Mode: none; combined: one DD step (20)-(21) and one
+   * adaptation step per cycle (Fig. 2); nested: DD to convergence on each
+   * mesh, then adapt; uniform: DD to convergence, then refine every
+   * cell. */
+  enum class AdaptationMode
+  {
+    none,
+    combined,
+    nested,
+    uniform
+  };
+
+  /** Adaptation/Estimator: eta_FB of (27) as printed; the local RMS stress
+   * error relative to the global RMS stress; Kelly's, the baseline. */
+  enum class EstimatorType
+  {
+    fem_bem,
+    fem_bem_scaled,
+    kelly
+  };
+
+  /** Adaptation/Marking: eta > delta as in (27), a fixed fraction, or
+   * Doerfler's bulk criterion. */
+  enum class MarkingType
+  {
+    threshold,
+    fraction,
+    doerfler
+  };
+
+  /** The entry value of an option ("fixed", "auto", "fem-bem-scaled", ...),
+   * as summary.json and the messages write it. */
   std::string
-  to_string(RelaxationType relaxation);
+  to_string(RelaxationType value);
+  std::string
+  to_string(AdaptationMode value);
+  std::string
+  to_string(EstimatorType value);
+  std::string
+  to_string(MarkingType value);
 
   struct DDParameters
   {
@@ -183,26 +220,21 @@ namespace ddcontact
    */
   struct AdaptationParameters
   {
-    // none; combined: one DD step (20)-(21) and one adaptation step per
-    // cycle (Fig. 2); nested: DD to convergence on each mesh, then adapt;
-    // uniform: DD to convergence, then refine every cell.
-    std::string              mode = "none";
+    AdaptationMode           mode = AdaptationMode::none;
     std::vector<std::string> bodies; // the adapted bodies
-    // fem-bem: eta_FB of (27) as printed; fem-bem-scaled: the local RMS
-    // stress error relative to the global RMS stress; kelly: the baseline.
-    std::string  estimator        = "fem-bem";
-    std::string  marking          = "threshold"; // or "fraction", "doerfler"
-    double       delta            = 0.1;         // threshold of (27)
-    double       fraction         = 0.3;
-    unsigned int max_cycles       = 50;
-    unsigned int max_level        = 10;
-    unsigned int max_cells        = 200000;
-    bool         write_every_mesh = true;
+    EstimatorType            estimator        = EstimatorType::fem_bem;
+    MarkingType              marking          = MarkingType::threshold;
+    double                   delta            = 0.1; // threshold of (27)
+    double                   fraction         = 0.3;
+    unsigned int             max_cycles       = 50;
+    unsigned int             max_level        = 10;
+    unsigned int             max_cells        = 200000;
+    bool                     write_every_mesh = true;
 
     bool
     enabled() const
     {
-      return mode != "none";
+      return mode != AdaptationMode::none;
     }
 
     static void
