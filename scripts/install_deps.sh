@@ -6,6 +6,8 @@ set -euo pipefail
 packages=(libdeal.ii-dev gmsh cmake ninja-build g++ make)
 # MPI launcher for the distributed runs and their tests.
 packages+=(openmpi-bin)
+# The plots of doc/ (scripts/*.py).
+packages+=(python3-matplotlib)
 
 missing=()
 for p in "${packages[@]}"; do

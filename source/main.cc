@@ -7,6 +7,7 @@
 
 #include <ddcontact/parameters.h>
 #include <ddcontact/simulation.h>
+#include <ddcontact/version.h>
 
 #include <filesystem>
 #include <iostream>
@@ -25,6 +26,8 @@ namespace
            "documentation\n"
            "                             (of FILE.prm if given, else the "
            "defaults)\n"
+           "  --version                  the git revision and deal.II "
+           "version\n"
            "  --help                     this text\n";
   }
 } // namespace
@@ -53,6 +56,12 @@ main(int argc, char **argv)
       {
         if (root)
           print_usage(std::cout);
+        return 0;
+      }
+      else if (arg == "--version")
+      {
+        if (root)
+          std::cout << version_banner() << std::endl;
         return 0;
       }
       else if (arg == "--print-parameters")
