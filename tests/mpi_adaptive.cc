@@ -28,18 +28,18 @@ namespace
       const std::string &owners,
       const std::string &mesh = "shared")
   {
-    return run_scene(source_dir + "/prm/paper_two_bodies.prm",
-                     {"Output directory=mpi_adaptive_output",
-                      "Body omega1/Mesh/Initial refinement=1",
-                      "Body omega2/Mesh/Initial refinement=0",
-                      "Domain decomposition/Relaxation=anderson",
-                      "Domain decomposition/eps_residual=1e-10",
-                      "Adaptation/Mode=combined",
-                      "Adaptation/Estimator=fem-bem-scaled",
-                      "Adaptation/Delta=0.1",
-                      "Adaptation/Max level=4"},
-                     {"Parallel/Body owners=" + owners,
-                      "Parallel/Mesh=" + mesh});
+    return run_scene(
+      source_dir + "/prm/paper_two_bodies.prm",
+      {"Output directory=mpi_adaptive_output",
+       "Body omega1/Mesh/Initial refinement=1",
+       "Body omega2/Mesh/Initial refinement=0",
+       "Domain decomposition/Relaxation=anderson",
+       "Domain decomposition/eps_residual=1e-10",
+       "Adaptation/Mode=combined",
+       "Adaptation/Estimator=fem-bem-scaled",
+       "Adaptation/Delta=0.1",
+       "Adaptation/Max level=4"},
+      {"Parallel/Body owners=" + owners, "Parallel/Mesh=" + mesh});
   }
 
   /** A number that differs between processes iff the meshes do. */
@@ -143,10 +143,9 @@ main(int argc, char **argv)
     balanced->get_bodies()[1]->get_triangulation().n_active_cells();
   for (const std::string mesh : {"shared", "distributed"})
   {
-    const auto  all = run(source_dir, "all", mesh);
-    const auto &tria =
-      dynamic_cast<const parallel::TriangulationBase<2> &>(
-        all->get_bodies()[1]->get_triangulation());
+    const auto  all  = run(source_dir, "all", mesh);
+    const auto &tria = dynamic_cast<const parallel::TriangulationBase<2> &>(
+      all->get_bodies()[1]->get_triangulation());
     const bool is_forest =
       dynamic_cast<const parallel::distributed::Triangulation<2> *>(&tria);
     check(is_forest == (mesh == "distributed"),
