@@ -387,7 +387,8 @@ namespace ddcontact
       record.iteration - best_k > std::max<unsigned int>(50, k_phase / 2);
     const bool diverged = !finite || grew || stuck;
 
-    if (shown_on_screen(record.iteration) || converged || diverged)
+    if (parameters.print_every_iteration || shown_on_screen(record.iteration) ||
+        converged || diverged)
       pcout << "  DD " << std::setw(5) << record.iteration << std::scientific
             << std::setprecision(3) << "  residual " << record.residual
             << "  increment " << record.increment << "  gamma " << record.gamma

@@ -1138,6 +1138,13 @@ namespace ddcontact
                         "true",
                         Patterns::Bool(),
                         "Write VTU/PVD files for ParaView.");
+      prm.declare_entry("Verbosity",
+                        "normal",
+                        Patterns::Selection("normal|full"),
+                        "normal: a DD line for the first five iterations, "
+                        "then about ten per decade, and the last; full: a "
+                        "line for every DD iteration (history.csv holds "
+                        "every iteration either way).");
     }
     prm.leave_subsection();
 
@@ -1277,7 +1284,8 @@ namespace ddcontact
 
     prm.enter_subsection("Output");
     {
-      write_vtu = prm.get_bool("Write vtu");
+      write_vtu                = prm.get_bool("Write vtu");
+      dd.print_every_iteration = (prm.get("Verbosity") == "full");
       points.clear();
       for (const auto &item : split(prm.get("Points"), ';'))
       {

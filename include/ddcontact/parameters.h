@@ -205,6 +205,7 @@ namespace ddcontact
     double            al_tolerance          = 1e-3; // penetration / approach
     unsigned int      al_max_updates        = 30;
     bool              write_every_iteration = false;
+    bool              print_every_iteration = false; // Output/Verbosity = full
     unsigned int      n_newton              = 50;
 
     static void
