@@ -299,7 +299,7 @@ namespace ddcontact
     , body_1(body_1)
     , body_2(body_2)
   {
-    if (parameters.gap_type == "expression")
+    if (parameters.gap_type == GapType::expression)
       gap_function = make_function(parameters.gap_expression,
                                    1,
                                    constants,
@@ -482,7 +482,7 @@ namespace ddcontact
                          "check its sign and units");
 
     // theta = c H / E_1 (paper, section 6), or given.
-    theta = (parameters.penalty_type == "relative")
+    theta = (parameters.penalty_type == PenaltyType::relative)
               ? parameters.penalty * thickness_1 /
                   body_1.get_material().youngs_modulus
               : parameters.penalty;
@@ -496,7 +496,8 @@ namespace ddcontact
     {
       std::ostringstream s;
       s << section
-        << (parameters.penalty_type == "relative" && parameters.thickness > 0
+        << (parameters.penalty_type == PenaltyType::relative &&
+                parameters.thickness > 0
               ? "Thickness"
               : "Penalty")
         << ": theta = " << theta << " is " << c << " times H/E_1 of body '"

@@ -998,7 +998,7 @@ namespace ddcontact
   ElasticBody<dim>::factorize()
   {
     const bool distributed = is_solved_distributed();
-    if (parameters.solver == "direct")
+    if (parameters.solver == BodySolverType::direct)
     {
       if (distributed)
       {
@@ -1178,7 +1178,7 @@ namespace ddcontact
                          rhs.begin(),
                          std::plus<double>());
       }
-      if (parameters.solver == "direct")
+      if (parameters.solver == BodySolverType::direct)
         distributed_direct->solve(x, rhs);
       else
         solve_cg(distributed_matrix, x, rhs);
@@ -1190,7 +1190,7 @@ namespace ddcontact
       if (load.size() > 0)
         rhs += load;
       u.reinit(dof_handler.n_dofs());
-      if (parameters.solver == "direct")
+      if (parameters.solver == BodySolverType::direct)
         direct_solver.vmult(u, rhs);
       else
         solve_cg(trilinos_matrix, u, rhs);

@@ -115,6 +115,15 @@ namespace ddcontact
                         {"threshold", MarkingType::threshold},
                         {"fraction", MarkingType::fraction},
                         {"doerfler", MarkingType::doerfler})
+    DDCONTACT_SELECTION(GapType,
+                        {"expression", GapType::expression},
+                        {"geometric", GapType::geometric})
+    DDCONTACT_SELECTION(PenaltyType,
+                        {"relative", PenaltyType::relative},
+                        {"absolute", PenaltyType::absolute})
+    DDCONTACT_SELECTION(BodySolverType,
+                        {"direct", BodySolverType::direct},
+                        {"cg-amg", BodySolverType::cg_amg})
 #undef DDCONTACT_SELECTION
 
     /** The enum value of an entry that a Patterns::Selection has checked
@@ -710,7 +719,7 @@ namespace ddcontact
 
     prm.enter_subsection("Solver");
     {
-      solver                = prm.get("Type");
+      solver                = parse_selection<BodySolverType>(prm.get("Type"));
       solver_tolerance      = prm.get_double("Tolerance");
       solver_max_iterations = prm.get_integer("Max iterations");
     }
@@ -775,12 +784,12 @@ namespace ddcontact
     body_2                    = Utilities::trim(prm.get("Body 2"));
     boundary_id_1             = prm.get_integer("Boundary id 1");
     boundary_id_2             = prm.get_integer("Boundary id 2");
-    gap_type                  = prm.get("Gap type");
+    gap_type                  = parse_selection<GapType>(prm.get("Gap type"));
     gap_expression            = prm.get("Gap");
-    penalty_type              = prm.get("Penalty type");
-    penalty                   = prm.get_double("Penalty");
-    thickness                 = prm.get_double("Thickness");
-    n_gauss                   = prm.get_integer("Gauss points");
+    penalty_type = parse_selection<PenaltyType>(prm.get("Penalty type"));
+    penalty      = prm.get_double("Penalty");
+    thickness    = prm.get_double("Thickness");
+    n_gauss      = prm.get_integer("Gauss points");
     if (!(penalty > 0.))
       throw InputError(section + "Penalty: " + prm.get("Penalty") +
                        " must be positive");

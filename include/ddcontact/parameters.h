@@ -30,6 +30,28 @@ namespace ddcontact
   /** Named constants usable in every expression ("r0=1e-3, Delta=..."). */
   using Constants = std::map<std::string, double>;
 
+  /** Contact pair/Gap type: f_n from an expression, or the distance to
+   * the orthogonal projection on S_2. */
+  enum class GapType
+  {
+    expression,
+    geometric
+  };
+
+  /** Contact pair/Penalty type: theta = c H / E_1, or theta itself. */
+  enum class PenaltyType
+  {
+    relative,
+    absolute
+  };
+
+  /** Body/Solver/Type: a direct factorization, or CG with AMG. */
+  enum class BodySolverType
+  {
+    direct,
+    cg_amg
+  };
+
   /**
    * Everything that describes one elastic body: its mesh, its element, its
    * material and its boundary conditions by boundary id. Declared in the
@@ -67,9 +89,9 @@ namespace ddcontact
     std::string body_force;
 
     // Linear solver of the body problem (20).
-    std::string  solver                = "direct"; // or "cg-amg"
-    double       solver_tolerance      = 1e-12;
-    unsigned int solver_max_iterations = 10000;
+    BodySolverType solver                = BodySolverType::direct;
+    double         solver_tolerance      = 1e-12;
+    unsigned int   solver_max_iterations = 10000;
 
     static void
     declare(ParameterHandler &prm);
@@ -97,12 +119,12 @@ namespace ddcontact
     std::string  name;
     std::string  body_1, body_2;
     unsigned int boundary_id_1 = 0, boundary_id_2 = 0;
-    std::string  gap_type       = "expression"; // or "geometric"
+    GapType      gap_type       = GapType::expression;
     std::string  gap_expression = "0";
-    std::string  penalty_type = "relative"; // theta = c H / E_1, or "absolute"
-    double       penalty      = 0.05;       // c, or theta itself
-    double       thickness    = 0;          // H; 0: from body 1's mesh
-    unsigned int n_gauss      = 3;          // Gauss points per piece
+    PenaltyType  penalty_type   = PenaltyType::relative;
+    double       penalty        = 0.05; // c, or theta itself
+    double       thickness      = 0;    // H; 0: from body 1's mesh
+    unsigned int n_gauss        = 3;    // Gauss points per piece
 
     static void
     declare(ParameterHandler &prm);
