@@ -8,8 +8,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 
-#include <ddcontact/boundary_element_solver.h>
-#include <ddcontact/elastic_body.h>
+#include <ddcontact/bem/boundary_element_solver.h>
+#include <ddcontact/body/elastic_body.h>
 
 #include <chrono>
 #include <cmath>

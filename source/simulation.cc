@@ -4,8 +4,8 @@
 
 #include <deal.II/fe/fe_values.h>
 
-#include <ddcontact/monolithic_solver.h>
 #include <ddcontact/simulation.h>
+#include <ddcontact/solvers/monolithic_solver.h>
 #include <ddcontact/tasks.h>
 #include <ddcontact/version.h>
 

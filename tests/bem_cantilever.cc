@@ -14,7 +14,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
-#include <ddcontact/boundary_element_solver.h>
+#include <ddcontact/bem/boundary_element_solver.h>
 
 #include "test_tools.h"
 

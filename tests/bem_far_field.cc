@@ -4,8 +4,8 @@
 // concentrated load
 #include <deal.II/grid/grid_generator.h>
 
-#include <ddcontact/boundary_element_solver.h>
-#include <ddcontact/elastic_body.h>
+#include <ddcontact/bem/boundary_element_solver.h>
+#include <ddcontact/body/elastic_body.h>
 
 #include "test_tools.h"
 

@@ -18,7 +18,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 
-#include <ddcontact/boundary_element_solver.h>
+#include <ddcontact/bem/boundary_element_solver.h>
 
 #include "test_tools.h"
 

@@ -14,8 +14,8 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
-#include <ddcontact/boundary_element_solver.h>
-#include <ddcontact/kelvin_solution.h>
+#include <ddcontact/bem/boundary_element_solver.h>
+#include <ddcontact/bem/kelvin_solution.h>
 
 #include "test_tools.h"
 

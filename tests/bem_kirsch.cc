@@ -17,7 +17,7 @@
 
 #include <deal.II/lac/full_matrix.h>
 
-#include <ddcontact/boundary_element_solver.h>
+#include <ddcontact/bem/boundary_element_solver.h>
 
 #include "test_tools.h"
 

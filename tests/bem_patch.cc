@@ -20,7 +20,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
-#include <ddcontact/boundary_element_solver.h>
+#include <ddcontact/bem/boundary_element_solver.h>
 #include <ddcontact/parameters.h>
 
 #include "test_tools.h"

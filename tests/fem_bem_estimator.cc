@@ -13,9 +13,9 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <ddcontact/adaptive_refinement.h>
-#include <ddcontact/elastic_body.h>
-#include <ddcontact/fem_bem_estimator.h>
+#include <ddcontact/adaptivity/adaptive_refinement.h>
+#include <ddcontact/adaptivity/fem_bem_estimator.h>
+#include <ddcontact/body/elastic_body.h>
 
 #include "test_tools.h"
 

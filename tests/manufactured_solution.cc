@@ -9,7 +9,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <ddcontact/elastic_body.h>
+#include <ddcontact/body/elastic_body.h>
 
 #include <algorithm>
 #include <cmath>

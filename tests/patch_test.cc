@@ -5,7 +5,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <ddcontact/elastic_body.h>
+#include <ddcontact/body/elastic_body.h>
 
 #include <deal.II/base/function_parser.h>
 

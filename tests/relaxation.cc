@@ -2,7 +2,7 @@
 // spectrum: the fixed relaxation (21) contracts at max|1 - gamma(1 + k)|
 // and diverges above gamma* = 2/(1 + k_max), Anderson is exact after n
 // steps on an n-dimensional map (GMRES), Aitken after two on a scalar one
-#include <ddcontact/relaxation.h>
+#include <ddcontact/solvers/relaxation.h>
 
 #include "test_tools.h"
 

@@ -1,8 +1,8 @@
 // DESCRIPTION: stability on stiff and extreme cases (issue 6): SI against
 // MPa/cm, no contact, zero gap, initial penetration, tiny approach, stiff
 // penalty, gamma above gamma*, nu = 0.4999 (Q2, reduced-integration Q1)
-#include <ddcontact/neumann_dd_solver.h>
 #include <ddcontact/simulation.h>
+#include <ddcontact/solvers/neumann_dd_solver.h>
 
 #include "scene_tools.h"
 

@@ -4,8 +4,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
-#include <ddcontact/boundary_conditions.h>
-#include <ddcontact/material.h>
+#include <ddcontact/body/boundary_conditions.h>
+#include <ddcontact/body/material.h>
 
 #include <map>
 #include <stdexcept>

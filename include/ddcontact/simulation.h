@@ -4,14 +4,14 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
-#include <ddcontact/adaptive_refinement.h>
-#include <ddcontact/body_distribution.h>
-#include <ddcontact/body_output.h>
-#include <ddcontact/contact_pair.h>
-#include <ddcontact/elastic_body.h>
-#include <ddcontact/neumann_dd_solver.h>
+#include <ddcontact/adaptivity/adaptive_refinement.h>
+#include <ddcontact/body/body_distribution.h>
+#include <ddcontact/body/elastic_body.h>
+#include <ddcontact/contact/contact_pair.h>
+#include <ddcontact/io/json.h>
+#include <ddcontact/io/output_writer.h>
 #include <ddcontact/parameters.h>
-#include <ddcontact/summary.h>
+#include <ddcontact/solvers/neumann_dd_solver.h>
 
 #include <fstream>
 #include <memory>

@@ -1,0 +1,143 @@
+#ifndef ddcontact_adaptive_refinement_h
+#define ddcontact_adaptive_refinement_h
+
+#include <deal.II/lac/vector.h>
+
+#include <ddcontact/adaptivity/fem_bem_estimator.h>
+#include <ddcontact/body/boundary_conditions.h>
+#include <ddcontact/body/elastic_body.h>
+#include <ddcontact/io/output_writer.h>
+#include <ddcontact/parameters.h>
+
+#include <memory>
+#include <string>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * The element diameters of Definitions 1-2 of the paper README: for a
+   * triangle, D_e and d_e are the diameters of its circumscribed and
+   * inscribed circles; for a quadrilateral, the largest D and the smallest
+   * d over the four triangles formed by three of its vertices. K_e =
+   * D_e/d_e is the regularity of the element. One value per active cell.
+   */
+  struct ElementDiameters
+  {
+    Vector<double> D, d, K;
+  };
+
+  ElementDiameters
+  element_diameters(const Triangulation<2> &triangulation);
+
+  /**
+   * The adaptation step of one adapted body (sections 4-5 of the paper
+   * README): estimate the error of the FEM solution of the current body
+   * problem (20), mark cells, refine them and transfer the current iterate.
+   * A body is only given this object if it is adapted, and the BEM (inside
+   * FemBemEstimator) only exists for the FEM-BEM estimators: a scene that
+   * adapts with Kelly or uniformly never builds one.
+   *
+   * The adapted mesh stays one-irregular (at most one hanging node per
+   * face, the paper's fix for spurious refinement): deal.II enforces this
+   * for every refinement of a quadrilateral mesh.
+   */
+  class AdaptiveRefinement
+  {
+  public:
+    AdaptiveRefinement(ElasticBody<2>             &body,
+                       const AdaptationParameters &parameters);
+
+    const ElasticBody<2> &
+    get_body() const
+    {
+      return body;
+    }
+
+    /** Compute eta for @p u_fem, the FEM solution of the body problem
+     * loaded by @p contact. */
+    void
+    estimate(const Vector<double>          &u_fem,
+             const BoundaryTractionSamples &contact);
+
+    /**
+     * Flag the cells to refine by the marking rule (threshold delta of (27),
+     * fixed fraction or Doerfler), except cells at Max level, and nothing
+     * when the refined mesh would exceed Max cells. Returns the number of
+     * flagged cells.
+     */
+    unsigned int
+    mark();
+
+    /** Flag every cell (uniform refinement). */
+    unsigned int
+    mark_all();
+
+    /** Refine the flagged cells and transfer the body's current iterate;
+     * rebuilds the body's system and factorization. */
+    void
+    refine();
+
+    /** eta per active cell of the last estimate. */
+    const Vector<double> &
+    indicators() const
+    {
+      return eta;
+    }
+
+    /** The largest eta and the sum of eta over all cells of the last
+     * estimate (all processes' cells of a distributed mesh). */
+    double
+    eta_max() const
+    {
+      return eta_maximum;
+    }
+
+    double
+    eta_sum() const
+    {
+      return eta_total;
+    }
+
+    /** Cells that eta marked but Max level or Max cells kept unrefined in
+     * the last mark(). */
+    unsigned int
+    n_capped() const
+    {
+      return capped;
+    }
+
+    /** The FEM-BEM estimator, or nullptr (Kelly, uniform). */
+    const FemBemEstimator *
+    fem_bem() const
+    {
+      return fem_bem_estimator.get();
+    }
+
+    /** eta, D_e, d_e, K_e of the current mesh for the VTU output (eta
+     * only if it belongs to this mesh). */
+    OutputWriter::CellData
+    cell_data() const;
+
+  private:
+    /** Clear the refine flags of cells at Max level, and all flags if the
+     * refinement would exceed Max cells; returns the cells still marked
+     * (over all processes) and counts the others in `capped`. */
+    unsigned int
+    apply_caps();
+
+    /** Kelly's indicator of @p u_fem into eta (the baseline estimator). */
+    void
+    estimate_kelly(const Vector<double> &u_fem);
+
+    ElasticBody<2>                  &body;
+    const AdaptationParameters       parameters;
+    std::unique_ptr<FemBemEstimator> fem_bem_estimator;
+    Vector<double>                   eta;
+    double                           eta_maximum = 0, eta_total = 0;
+    unsigned int                     capped = 0;
+  };
+} // namespace ddcontact
+
+#endif

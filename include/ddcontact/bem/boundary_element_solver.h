@@ -1,0 +1,349 @@
+#ifndef ddcontact_boundary_element_solver_h
+#define ddcontact_boundary_element_solver_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/mapping.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <ddcontact/bem/kelvin_solution.h>
+#include <ddcontact/body/boundary_conditions.h>
+#include <ddcontact/body/material.h>
+
+#include <array>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * Direct boundary element method for 2D plane-strain elastostatics on
+   * the boundary of one FEM body, the reference solution of the FEM-BEM
+   * estimator (22)-(27):
+   *  - one straight 2-node element per active boundary face (25), one node
+   *    per boundary vertex, linear shape functions = the trace of the Q1 (or
+   *    P1) basis (26); in 2D no hanging node lies on the boundary of a body;
+   *  - Kelvin fundamental solution, nodal collocation, element-end
+   *    tractions (they may jump at corners and at Dirichlet/Neumann
+   *    junctions), one extra collocation row where the same displacement
+   *    component is prescribed on both sides of a corner;
+   *  - lengths scaled by the body's diameter and tractions by mu before
+   *    assembly (the degenerate scale of the log kernel);
+   *  - dense LU (LAPACKFullMatrix), computed once per mesh by setup(),
+   *    reused by solve() for any boundary data;
+   *  - interior stresses by the Somigliana stress identity with adaptive
+   *    subdivision near the boundary, in parallel over points.
+   * Boundary data are those of the body: Dirichlet (5) by id and component,
+   * Neumann tractions (6) by id, ids not listed are traction free, and the
+   * contact ids carry the traction given to solve().
+   */
+  class BoundaryElementSolver
+  {
+  public:
+    BoundaryElementSolver(const Material              &material,
+                          const BoundaryConditions<2> &boundary_conditions);
+
+    /** Build the boundary mesh from the active boundary faces of the mesh
+     * of @p dof_handler, assemble and LU-factorize the system. Call again
+     * after every mesh change. */
+    void
+    setup(const DoFHandler<2> &dof_handler, const Mapping<2> &mapping);
+
+    /** Solve for the unknown boundary displacements and tractions with the
+     * body's own data plus @p contact on the contact ids. */
+    void
+    solve(const BoundaryTractionSamples &contact = {});
+
+    /** Interior stresses (Somigliana identity) at arbitrary points inside
+     * the body, physical units. */
+    std::vector<SymmetricTensor<2, 2>>
+    stress_at_points(const std::vector<Point<2>> &points) const;
+
+    /** sigma_B at the quadrature points of every active cell, indexed
+     * [active_cell_index][q], ready for the estimator (27). With a
+     * communicator of several processes (each holding the same body and
+     * boundary solution) every process evaluates a contiguous share of the
+     * cells and all receive all values. On a distributed mesh (p4est) each
+     * process evaluates its own cells only. */
+    std::vector<std::vector<SymmetricTensor<2, 2>>>
+    stress_at_quadrature_points(
+      const DoFHandler<2> &dof_handler,
+      const Mapping<2>    &mapping,
+      const Quadrature<2> &quadrature,
+      const MPI_Comm       communicator = MPI_COMM_SELF) const;
+
+    unsigned int
+    n_nodes() const;
+
+    unsigned int
+    n_elements() const;
+
+    /** Size of the dense system (the BEM unknowns of Fig. 10), without the
+     * rigid-mode multipliers of a floating body. */
+    unsigned int
+    n_unknowns() const;
+
+    /** Boundary solution: position and displacement of node i. */
+    Point<2>
+    node_position(unsigned int i) const;
+
+    Tensor<1, 2>
+    node_displacement(unsigned int i) const;
+
+    /** Wall seconds of the last setup (assembly, LU) and of the interior
+     * evaluations summed since setup. */
+    struct Timings
+    {
+      double assembly      = 0;
+      double factorization = 0;
+      double solve         = 0;
+      double interior      = 0;
+    };
+
+    const Timings &
+    timings() const;
+
+    /**
+     * Evaluate the interior stresses of many points by a hierarchy of
+     * boxes: elements well separated from a box act on it through a
+     * Chebyshev interpolant of their (smooth) field, accurate to about
+     * 1e-8 of it; only the nearby elements are integrated at every point
+     * (default true; false integrates every element at every point).
+     */
+    void
+    set_far_field_interpolation(const bool enabled)
+    {
+      use_far_field_interpolation = enabled;
+    }
+
+    /** @name Further access, for tests and diagnostics. */
+    /** @{ */
+
+    /** Boundary solution: traction at end @p end (0 = start, 1 = end in the
+     * direction of travel, body on the left) of element @p e, physical
+     * units. Tractions are stored per element end (BEM.md §2.2). */
+    Tensor<1, 2>
+    element_traction(unsigned int e, unsigned int end) const;
+
+    /** The two nodes of element @p e, ordered so that the body lies on the
+     * left of the element (outer boundaries counter-clockwise). */
+    std::array<unsigned int, 2>
+    element_nodes(unsigned int e) const;
+
+    types::boundary_id
+    element_boundary_id(unsigned int e) const;
+
+    /** The FEM degrees of freedom (x, y) at node @p i: the BEM nodal
+     * displacement is the trace of the FEM field there (26). */
+    std::array<types::global_dof_index, 2>
+    node_dof_indices(unsigned int i) const;
+
+    /** Interior displacements (Somigliana identity), physical units. */
+    std::vector<Tensor<1, 2>>
+    displacement_at_points(const std::vector<Point<2>> &points) const;
+
+    /**
+     * The 2x2 diagonal block of the BIE at node @p i as produced by the
+     * rigid-body trick (free term c_ij plus the Cauchy principal value on
+     * the two adjacent elements, dimensionless; BEM.md §2.1, §2.3).
+     */
+    Tensor<2, 2>
+    diagonal_block(unsigned int i) const;
+
+    /** Number of extra (off-node) collocation rows at corners with the same
+     * displacement component prescribed on both sides (BEM.md §2.7). */
+    unsigned int
+    n_extra_collocation_rows() const;
+
+    /** Number of rigid-body modes the system was bordered with (3 for a
+     * floating body, 0 when the Dirichlet data fix the body; §5.1). */
+    unsigned int
+    n_rigid_modes() const;
+
+    /** Length scale L_ref (bounding-box diagonal of the boundary) used to
+     * nondimensionalise the system (BEM.md §3.3). */
+    double
+    length_scale() const;
+
+    /** @} */
+
+  private:
+    /** A boundary node = a boundary vertex of the mesh. Coordinates and
+     * displacements are scaled by length_scale(). */
+    struct Node
+    {
+      Point<2>                               x;
+      Point<2>                               x_physical;
+      std::array<types::global_dof_index, 2> dofs;
+      unsigned int element_in  = numbers::invalid_unsigned_int;
+      unsigned int element_out = numbers::invalid_unsigned_int;
+      // Per component: prescribed value (scaled) or index of the unknown.
+      std::array<bool, 2>         known{{false, false}};
+      std::array<unsigned int, 2> unknown{
+        {numbers::invalid_unsigned_int, numbers::invalid_unsigned_int}};
+      Tensor<1, 2> displacement;
+      Tensor<2, 2> diagonal_block;
+    };
+
+    /** A straight 2-node boundary element = an active boundary face (25),
+     * scaled coordinates. */
+    struct Element
+    {
+      std::array<unsigned int, 2> nodes;
+      Point<2>                    x_a, x_b;
+      Tensor<1, 2>                tangent, normal;
+      double                      length;
+      types::boundary_id          boundary_id;
+      // Per component: is the displacement prescribed on this element?
+      std::array<bool, 2> dirichlet{{false, false}};
+      bool                is_contact = false;
+      // Column of the element in contact_matrix, if it is a contact element.
+      unsigned int contact_index = numbers::invalid_unsigned_int;
+      // [end][component]: index of the unknown traction (ends may be tied).
+      std::array<std::array<unsigned int, 2>, 2> unknown;
+      // Tractions (scaled by mu) at the two ends: prescribed or solved for.
+      std::array<Tensor<1, 2>, 2> traction;
+    };
+
+    /** A collocation point xi with the BIE components collocated there:
+     * a node, or an extra point inside an element (BEM.md §2.7). */
+    struct CollocationPoint
+    {
+      Point<2>                  x;
+      unsigned int              node    = numbers::invalid_unsigned_int;
+      unsigned int              element = numbers::invalid_unsigned_int;
+      double                    s0      = 0;
+      std::vector<unsigned int> components;
+      std::vector<unsigned int> rows;
+    };
+
+    /** One 2x2 block per node (H) and per element end (G) of the BIE row
+     * at one collocation point. */
+    struct RowBlocks
+    {
+      std::vector<Tensor<2, 2>>                h;
+      std::vector<std::array<Tensor<2, 2>, 2>> g;
+    };
+
+    void
+    build_boundary_mesh(const DoFHandler<2> &dof_handler,
+                        const Mapping<2>    &mapping);
+
+    void
+    number_unknowns();
+
+    void
+    find_rigid_modes();
+
+    void
+    assemble_system();
+
+    void
+    compute_row_blocks(const CollocationPoint &point, RowBlocks &blocks) const;
+
+    void
+    project_contact_traction(const BoundaryTractionSamples &contact,
+                             Vector<double> &contact_values) const;
+
+    SymmetricTensor<2, 2>
+    scaled_stress(const Point<2> &xi) const;
+
+    /**
+     * Integrate over element @p e with the distance-dependent rule for the
+     * point @p xi, calling f(x, n, t(x), u(x), w) at each quadrature point
+     * with the boundary solution interpolated there.
+     */
+    template <typename Integrand>
+    void
+    integrate_boundary_solution(const Point<2> &xi,
+                                unsigned int    e,
+                                Integrand     &&f) const;
+
+    /** Add the contribution of element @p e to the Somigliana stress at
+     * @p xi (scaled units) to @p sigma. */
+    void
+    add_element_stress(const Point<2>        &xi,
+                       unsigned int           e,
+                       SymmetricTensor<2, 2> &sigma) const;
+
+    /** The contribution of the elements @p subset to the Somigliana
+     * stress at @p xi (scaled units). */
+    SymmetricTensor<2, 2>
+    scaled_stress(const Point<2>                  &xi,
+                  const std::vector<unsigned int> &subset) const;
+
+    /** A square box of the target tree of stresses_by_tree(). */
+    struct TargetBox
+    {
+      Point<2> lower;
+      double   side;
+    };
+
+    /**
+     * One box of the hierarchical evaluation of the Somigliana stresses at
+     * many points: @p points (indices into @p x) lie in @p box; @p
+     * candidates are the elements not yet accounted for by an ancestor;
+     * @p parent and @p parent_values the Chebyshev interpolant of what the
+     * ancestors accounted for (none at the root).
+     */
+    void
+    stresses_in_box(const std::vector<Point<2>>              &x,
+                    std::vector<std::size_t>                &&points,
+                    const TargetBox                          &box,
+                    std::vector<unsigned int>               &&candidates,
+                    const TargetBox                          *parent,
+                    const std::vector<SymmetricTensor<2, 2>> *parent_values,
+                    std::vector<SymmetricTensor<2, 2>>       &stress,
+                    unsigned int                              depth) const;
+
+    Tensor<1, 2>
+    scaled_displacement(const Point<2> &xi) const;
+
+    const Material              material;
+    const BoundaryConditions<2> boundary_conditions;
+    // Kernels with mu = 1: tractions and stresses are scaled by mu.
+    const KelvinSolution kelvin;
+
+    double   reference_length = 1;
+    Point<2> reference_center;
+
+    std::vector<Node>             nodes;
+    std::vector<Element>          elements;
+    std::vector<CollocationPoint> collocation_points;
+    unsigned int                  n_boundary_unknowns = 0;
+    unsigned int                  n_extra_rows        = 0;
+    // Free rigid modes as coefficients of (translation x, translation y,
+    // rotation about reference_center), scaled coordinates.
+    std::vector<Tensor<1, 3>> rigid_modes;
+    unsigned int              n_contact_elements = 0;
+
+    LAPACKFullMatrix<double> system_matrix;
+    // Right-hand side of the body's own Dirichlet and Neumann data, and
+    // the G columns of the contact element ends, whose data change with
+    // every call of solve().
+    Vector<double>     body_rhs;
+    FullMatrix<double> contact_matrix;
+    bool               is_solved                   = false;
+    bool               use_far_field_interpolation = true;
+
+    // Interior evaluations may run concurrently (const); the mutex sits
+    // behind a pointer so that the solver stays movable.
+    mutable Timings             timing_data;
+    std::unique_ptr<std::mutex> timing_mutex = std::make_unique<std::mutex>();
+  };
+} // namespace ddcontact
+
+#endif

@@ -1,0 +1,173 @@
+#ifndef ddcontact_contact_pair_h
+#define ddcontact_contact_pair_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <ddcontact/body/elastic_body.h>
+#include <ddcontact/parameters.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * One integration point of the contact integral over S_1 (15)-(16). It
+   * carries everything an iteration needs, so that the point-to-cell search
+   * is done once per mesh and never per iteration: the position x on S_1,
+   * the weight, the outward normal n_1 of body 1, the initial gap f_n(x),
+   * and, for both bodies, the dofs of the cell that holds x (body 1) or its
+   * projection P(x) (body 2) together with the normal component of each
+   * shape function there: u_1n(x) = sum_i a_i u_1[dofs_1[i]] and
+   * u_2n(P(x)) = sum_i b_i u_2[dofs_2[i]], with n_2 = -n_1 (small-gap
+   * assumption of section 1 of the paper README).
+   *
+   * The load of the point, the same coefficients with the body's
+   * constraints resolved (hanging and Dirichlet dofs replaced by their
+   * masters, as AffineConstraints::distribute_local_to_global() would),
+   * is kept too (load_dofs_1, load_1 and the same for body 2): then adding
+   * the contact load needs no constraints, which a process of a
+   * distributed mesh knows only for its own cells.
+   */
+  struct ContactPoint
+  {
+    Point<2>                             x;
+    Point<2>                             projection;
+    double                               JxW = 0;
+    Tensor<1, 2>                         normal;
+    double                               gap = 0;
+    std::vector<types::global_dof_index> dofs_1, dofs_2;
+    std::vector<double>                  a, b;
+    std::vector<types::global_dof_index> load_dofs_1, load_dofs_2;
+    std::vector<double>                  load_1, load_2;
+  };
+
+  /**
+   * A possible contact zone S_1 of body 1 facing a zone S_2 of body 2, with
+   * independent (non-matching) meshes.
+   *
+   * The contact integral is computed on the common refinement of the two
+   * meshes: each face of S_1 is split where the projections of the
+   * vertices of S_2 fall, and each piece gets its own Gauss rule. Both
+   * normal displacements are then polynomials on every piece, so the
+   * integral of (20) is exact up to the kink of min(0, .) at the edge of
+   * the contact area; a rule on the faces of S_1 alone would integrate
+   * across the kinks of u_2n and lose accuracy at the peak pressure.
+   *
+   * A body on a distributed mesh (p4est) holds only its own cells: its
+   * zone faces are gathered from all processes, the points are found in
+   * the owned cells by Utilities::MPI::RemotePointEvaluation, and their
+   * owners send the dofs, shape values and constraints of each point to
+   * every process. setup() is then collective; the iterations are not.
+   */
+  class ContactPair
+  {
+  public:
+    ContactPair(const ContactPairParameters &parameters,
+                const ElasticBody<2>        &body_1,
+                const ElasticBody<2>        &body_2,
+                const Constants             &constants);
+
+    /** Build the contact points; call again after either mesh changed
+     * (refined or repartitioned). */
+    void
+    setup();
+
+    const std::string &
+    name() const
+    {
+      return parameters.name;
+    }
+
+    const ElasticBody<2> &
+    get_body_1() const
+    {
+      return body_1;
+    }
+
+    const ElasticBody<2> &
+    get_body_2() const
+    {
+      return body_2;
+    }
+
+    const std::vector<ContactPoint> &
+    points() const
+    {
+      return contact_points;
+    }
+
+    /** u_1n and u_2n at every contact point. */
+    void
+    normal_displacements(const Vector<double> &u_1,
+                         const Vector<double> &u_2,
+                         std::vector<double>  &u_1n,
+                         std::vector<double>  &u_2n) const;
+
+    /**
+     * Add the Neumann load of the normal traction sigma_n (one value per
+     * contact point, <= 0 for compression) to both bodies: on body 1
+     * int_S1 sigma_n n_1 . v_1, on body 2 int_S1 sigma_n n_2 . v_2(P(x)),
+     * with the same points and weights, so the two forces are equal and
+     * opposite. Constraints of each body are applied. Returns the force on
+     * body 1 and on body 2, each summed from the assembled entries (not
+     * from sigma_n), as a check of the assembly.
+     */
+    std::pair<Tensor<1, 2>, Tensor<1, 2>>
+    add_contact_loads(const std::vector<double> &sigma_n,
+                      Vector<double>            &load_1,
+                      Vector<double>            &load_2) const;
+
+    /**
+     * Append the traction sigma_n n_a that the normal stress @p sigma_n
+     * (one value per contact point) exerts on @p body (either side of the
+     * pair) to @p samples: at x with n_1 on body 1, at P(x) with n_2 = -n_1
+     * on body 2, with the weights of S_1 -- the same points and weights
+     * that add_contact_loads() uses, so that a BEM loaded by the samples
+     * sees the load of the FEM problem (20).
+     */
+    void
+    add_traction_samples(const std::vector<double> &sigma_n,
+                         const ElasticBody<2>      &body,
+                         BoundaryTractionSamples   &samples) const;
+
+    /** The penalty parameter theta of (15) for this pair. */
+    double
+    penalty() const
+    {
+      return theta;
+    }
+
+    /** Thickness of body 1 across the contact zone (for theta = c H/E_1),
+     * and of body 2 along the same direction. */
+    double
+    thickness_of_body_1() const
+    {
+      return thickness_1;
+    }
+
+    double
+    thickness_of_body_2() const
+    {
+      return thickness_2;
+    }
+
+  private:
+    const ContactPairParameters  parameters;
+    const ElasticBody<2>        &body_1;
+    const ElasticBody<2>        &body_2;
+    std::shared_ptr<Function<2>> gap_function;
+    std::vector<ContactPoint>    contact_points;
+    double                       theta       = 0;
+    double                       thickness_1 = 0, thickness_2 = 0;
+  };
+} // namespace ddcontact
+
+#endif

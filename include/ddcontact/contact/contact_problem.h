@@ -1,0 +1,133 @@
+#ifndef ddcontact_contact_problem_h
+#define ddcontact_contact_problem_h
+
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <ddcontact/body/body_distribution.h>
+#include <ddcontact/body/elastic_body.h>
+#include <ddcontact/contact/contact_pair.h>
+#include <ddcontact/contact/penalty_law.h>
+
+#include <utility>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /** Contact results of one pair for one iterate. */
+  struct ContactState
+  {
+    std::vector<double> u_1n, u_2n, sigma_n; // at every contact point
+    Tensor<1, 2>        force_1, force_2;
+    double              max_pressure   = 0;
+    double              contact_length = 0;
+    double half_width      = 0; // half the extent of the active set along S
+    double max_penetration = 0;
+  };
+
+  /**
+   * The contact problem (16) of several bodies, as the solvers see it: the
+   * bodies with their factorized stiffness, the contact pairs with their
+   * points, and the law (20) of every pair. It provides what the physics
+   * gives -- normal displacements, gaps, pressures, contact loads, the
+   * solution of every body problem for given loads -- and nothing of how
+   * to iterate (that is the solvers').
+   *
+   * An iterate is one displacement vector per body (all dofs, on every
+   * process, as BodyDistribution shares them).
+   */
+  class ContactProblem
+  {
+  public:
+    using Iterate = std::vector<Vector<double>>;
+
+    ContactProblem(const std::vector<ElasticBody<2> *> &bodies,
+                   const std::vector<ContactPair *>    &pairs,
+                   const BodyDistribution              &distribution);
+
+    const std::vector<ElasticBody<2> *> &
+    get_bodies() const
+    {
+      return bodies;
+    }
+
+    const std::vector<ContactPair *> &
+    get_pairs() const
+    {
+      return pairs;
+    }
+
+    unsigned int
+    body_index(const ElasticBody<2> &body) const;
+
+    /** The law of pair @p p (its multipliers can be updated). */
+    PenaltyLaw &
+    law(const unsigned int p)
+    {
+      return laws[p];
+    }
+
+    const PenaltyLaw &
+    law(const unsigned int p) const
+    {
+      return laws[p];
+    }
+
+    /** New laws with zero multipliers (after setup of the pairs). */
+    void
+    reset_laws();
+
+    /** The bodies' current solutions. */
+    Iterate
+    current_iterate() const;
+
+    /** Zero vectors of the bodies' sizes. */
+    Iterate
+    zero_iterate() const;
+
+    /** Solve every body b with the extra load loads[b] (empty: none), each
+     * on its process, concurrently; every process receives all u[b].
+     * A non-finite load is refused naming the pairs' Gap and Penalty. */
+    void
+    solve_all(const Iterate &loads, Iterate &u) const;
+
+    /** Solve all bodies loaded by the normal stresses sigma_n (one vector
+     * per pair) on their contact zones: one step of (20). */
+    void
+    solve_bodies(const std::vector<std::vector<double>> &sigma_n,
+                 Iterate                                &u) const;
+
+    /** g = f_n - u_1n - u_2n of pair @p p at its points. */
+    std::vector<double>
+    gaps(unsigned int p, const Iterate &u) const;
+
+    /** The pressure (20) of pair @p p for the iterate @p u. */
+    std::vector<double>
+    pressure(unsigned int p, const Iterate &u) const;
+
+    /** Normal displacements on S of all pairs, both sides, body by body. */
+    std::vector<std::vector<double>>
+    normal_displacements_by_body(const Iterate &u) const;
+
+    /** Forces, pressure, active set and penetration of pair @p p. */
+    ContactState
+    contact_state(unsigned int p, const Iterate &u) const;
+
+    /** The largest penetration u_1n + u_2n - f_n over all pairs, and its
+     * ratio to the largest approach |u_1n| + |u_2n| (the measure of the
+     * augmented Lagrangian's tolerance). */
+    std::pair<double, double>
+    penetration(const Iterate &u) const;
+
+  private:
+    std::vector<ElasticBody<2> *> bodies;
+    std::vector<ContactPair *>    pairs;
+    const BodyDistribution       &distribution;
+    std::vector<PenaltyLaw>       laws;
+  };
+} // namespace ddcontact
+
+#endif

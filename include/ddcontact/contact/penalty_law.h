@@ -1,0 +1,82 @@
+#ifndef ddcontact_penalty_law_h
+#define ddcontact_penalty_law_h
+
+#include <deal.II/base/point.h>
+
+#include <ddcontact/contact/contact_pair.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * The contact law (20) of one pair, at its contact points:
+   *   sigma_n = min(0, lambda + g / theta),  g = f_n - u_1n - u_2n,
+   * with theta the pair's penalty and lambda the augmented Lagrangian's
+   * multiplier of every point (zero without it). This is the only place
+   * the law is written; the solvers ask it for pressures, and the Newton
+   * solver for the gap that lambda shifts.
+   */
+  class PenaltyLaw
+  {
+  public:
+    explicit PenaltyLaw(const ContactPair &pair);
+
+    /** lambda = 0 at the pair's current points. */
+    void
+    reset();
+
+    /** After the pair's points moved (either mesh refined): lambda
+     * approximates the contact pressure, a function on S, so each new
+     * point takes the value of the nearest old one (piecewise constant
+     * transfer). */
+    void
+    transfer_to_new_points();
+
+    double
+    theta() const
+    {
+      return pair.penalty();
+    }
+
+    /** (20) at point @p q for the gap function value @p g. */
+    double
+    pressure(const unsigned int q, const double g) const
+    {
+      return std::min(0., lambda[q] + g / theta());
+    }
+
+    /** (20) at every point. */
+    std::vector<double>
+    pressure(const std::vector<double> &g) const;
+
+    /** lambda + g/theta < 0 exactly where u_1n + u_2n exceeds
+     * f_n + theta lambda: the gap shifted by the multiplier, for a solver
+     * that linearises (20) on its active set. */
+    double
+    shifted_gap(const unsigned int q) const
+    {
+      return pair.points()[q].gap + theta() * lambda[q];
+    }
+
+    /** The Uzawa update lambda <- sigma_n (the converged pressure). */
+    void
+    set_multipliers(const std::vector<double> &sigma_n);
+
+    const std::vector<double> &
+    multipliers() const
+    {
+      return lambda;
+    }
+
+  private:
+    const ContactPair    &pair;
+    std::vector<double>   lambda;
+    std::vector<Point<2>> lambda_points; // where lambda lives
+  };
+} // namespace ddcontact
+
+#endif

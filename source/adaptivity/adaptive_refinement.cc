@@ -1,0 +1,260 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/distributed/tria_base.h>
+
+#include <deal.II/grid/grid_refinement.h>
+
+#include <deal.II/numerics/error_estimator.h>
+
+#include <ddcontact/adaptivity/adaptive_refinement.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace ddcontact
+{
+  namespace
+  {
+    /** Circumscribed and inscribed circle diameters of a triangle. */
+    std::pair<double, double>
+    triangle_diameters(const Point<2> &a, const Point<2> &b, const Point<2> &c)
+    {
+      const double ab = a.distance(b), bc = b.distance(c), ca = c.distance(a);
+      const double area = 0.5 * std::abs((b[0] - a[0]) * (c[1] - a[1]) -
+                                         (c[0] - a[0]) * (b[1] - a[1]));
+      if (area == 0.)
+        return {std::numeric_limits<double>::infinity(), 0.};
+      // R = ab bc ca / (4 area), r = area / s with s the half perimeter.
+      return {ab * bc * ca / (2. * area), 4. * area / (ab + bc + ca)};
+    }
+    /**
+     * Flag the cells with the largest @p criteria: a fixed fraction of the
+     * cells (@p by_number) or of the sum of the criteria. On a distributed
+     * mesh over all processes' cells (deal.II searches the threshold in
+     * parallel).
+     */
+    void
+    refine_fixed(Triangulation<2>     &tria,
+                 const Vector<double> &criteria,
+                 const double          fraction,
+                 const bool            by_number)
+    {
+      namespace distributed = parallel::distributed::GridRefinement;
+      if (auto *forest =
+            dynamic_cast<parallel::distributed::Triangulation<2> *>(&tria))
+      {
+        if (by_number)
+          distributed::refine_and_coarsen_fixed_number(
+            *forest, criteria, fraction, 0.);
+        else
+          distributed::refine_and_coarsen_fixed_fraction(
+            *forest, criteria, fraction, 0.);
+      }
+      else if (by_number)
+        GridRefinement::refine_and_coarsen_fixed_number(
+          tria, criteria, fraction, 0.);
+      else
+        GridRefinement::refine_and_coarsen_fixed_fraction(
+          tria, criteria, fraction, 0.);
+    }
+  } // namespace
+
+  ElementDiameters
+  element_diameters(const Triangulation<2> &triangulation)
+  {
+    ElementDiameters result;
+    const auto       n = triangulation.n_active_cells();
+    result.D.reinit(n);
+    result.d.reinit(n);
+    result.K.reinit(n);
+    for (const auto &cell : triangulation.active_cell_iterators())
+    {
+      double             D = 0, d = std::numeric_limits<double>::max();
+      const unsigned int nv = cell->n_vertices();
+      // A triangle is its own (only) triangle; a quadrilateral gives the
+      // four triangles of three of its vertices (Definition 1).
+      for (unsigned int skip = 0; skip < (nv == 3 ? 1u : nv); ++skip)
+      {
+        std::array<Point<2>, 3> t;
+        unsigned int            k = 0;
+        for (unsigned int v = 0; v < nv; ++v)
+          if (nv == 3 || v != skip)
+            t[k++] = cell->vertex(v);
+        const auto [Dt, dt] = triangle_diameters(t[0], t[1], t[2]);
+        D                   = std::max(D, Dt);
+        d                   = std::min(d, dt);
+      }
+      const unsigned int c = cell->active_cell_index();
+      result.D(c)          = D;
+      result.d(c)          = d;
+      result.K(c)          = D / d; // Definition 2
+    }
+    return result;
+  }
+
+  AdaptiveRefinement::AdaptiveRefinement(ElasticBody<2>             &body,
+                                         const AdaptationParameters &parameters)
+    : body(body)
+    , parameters(parameters)
+  {
+    if (parameters.mode != AdaptationMode::uniform && body.is_simplex())
+      throw InputError("Adaptation/Bodies: body '" + body.name() +
+                       "' has triangles, which deal.II 9.4 refines only "
+                       "globally; use quadrilaterals or Mode = uniform");
+    if (parameters.mode != AdaptationMode::uniform &&
+        parameters.estimator == EstimatorType::kelly &&
+        parameters.marking == MarkingType::threshold)
+      throw InputError("Adaptation/Marking: threshold compares eta with the "
+                       "dimensionless delta of (27) and needs a fem-bem "
+                       "estimator; use fraction or doerfler with kelly");
+    if (parameters.mode != AdaptationMode::uniform &&
+        parameters.estimator != EstimatorType::kelly)
+      fem_bem_estimator = std::make_unique<FemBemEstimator>(
+        body,
+        parameters.estimator == EstimatorType::fem_bem ? "printed" : "scaled");
+  }
+
+  void
+  AdaptiveRefinement::estimate(const Vector<double>          &u_fem,
+                               const BoundaryTractionSamples &contact)
+  {
+    if (fem_bem_estimator)
+    {
+      fem_bem_estimator->estimate(u_fem, contact);
+      eta = fem_bem_estimator->indicators();
+    }
+    else
+      estimate_kelly(u_fem);
+    // A distributed mesh holds eta on its own cells (zero elsewhere).
+    eta_maximum = eta.linfty_norm();
+    eta_total   = eta.l1_norm();
+    if (body.is_mesh_distributed())
+    {
+      const MPI_Comm comm = body.get_triangulation().get_communicator();
+      eta_maximum         = Utilities::MPI::max(eta_maximum, comm);
+      eta_total           = Utilities::MPI::sum(eta_total, comm);
+    }
+  }
+
+  void
+  AdaptiveRefinement::estimate_kelly(const Vector<double> &u_fem)
+  {
+    Vector<float> kelly(body.get_triangulation().n_active_cells());
+    KellyErrorEstimator<2>::estimate(body.get_mapping(),
+                                     body.get_dof_handler(),
+                                     QGauss<1>(body.get_fe().degree + 1),
+                                     {},
+                                     u_fem,
+                                     kelly);
+    // On a partitioned mesh every process estimates only its own cells;
+    // each cell has one owner, so on a shared mesh the sum is the whole
+    // estimate. A distributed one keeps the owned cells' values.
+    if (const auto *tria = dynamic_cast<const parallel::TriangulationBase<2> *>(
+          &body.get_triangulation());
+        tria && !body.is_mesh_distributed())
+      Utilities::MPI::sum(kelly, tria->get_communicator(), kelly);
+    eta = kelly;
+    if (body.is_mesh_distributed())
+      for (const auto &cell : body.get_triangulation().active_cell_iterators())
+        if (!cell->is_locally_owned())
+          eta(cell->active_cell_index()) = 0.;
+  }
+
+  unsigned int
+  AdaptiveRefinement::mark()
+  {
+    auto &tria = body.get_triangulation();
+    AssertDimension(eta.size(), tria.n_active_cells());
+    for (const auto &cell : tria.active_cell_iterators())
+      cell->clear_refine_flag();
+
+    if (parameters.marking == MarkingType::threshold)
+    {
+      for (const auto &cell : tria.active_cell_iterators())
+        if (body.computes(cell) &&
+            eta(cell->active_cell_index()) > parameters.delta)
+          cell->set_refine_flag();
+    }
+    else if (parameters.marking == MarkingType::fraction)
+      refine_fixed(tria, eta, parameters.fraction, true);
+    else
+    {
+      // Doerfler (bulk) marking on eta^2: the error is the l2 sum of the
+      // cell contributions.
+      Vector<double> eta2(eta.size());
+      for (unsigned int c = 0; c < eta.size(); ++c)
+        eta2(c) = eta(c) * eta(c);
+      refine_fixed(tria, eta2, parameters.fraction, false);
+    }
+
+    return apply_caps();
+  }
+
+  unsigned int
+  AdaptiveRefinement::apply_caps()
+  {
+    auto        &tria   = body.get_triangulation();
+    unsigned int marked = 0;
+    capped              = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (body.computes(cell) && cell->refine_flag_set())
+      {
+        if (static_cast<unsigned int>(cell->level()) >= parameters.max_level)
+        {
+          cell->clear_refine_flag();
+          ++capped;
+        }
+        else
+          ++marked;
+      }
+    if (body.is_mesh_distributed())
+    {
+      marked = Utilities::MPI::sum(marked, tria.get_communicator());
+      capped = Utilities::MPI::sum(capped, tria.get_communicator());
+    }
+    // Each refined quadrilateral becomes four cells (the one-irregularity
+    // closure adds a few more, not counted here).
+    if (body.n_active_cells() + 3 * marked > parameters.max_cells)
+    {
+      for (const auto &cell : tria.active_cell_iterators())
+        cell->clear_refine_flag();
+      capped += marked;
+      marked = 0;
+    }
+    return marked;
+  }
+
+  unsigned int
+  AdaptiveRefinement::mark_all()
+  {
+    auto &tria = body.get_triangulation();
+    for (const auto &cell : tria.active_cell_iterators())
+      if (body.computes(cell))
+        cell->set_refine_flag();
+    // Uniform refinement obeys Max level and Max cells like the other
+    // modes (it quadrupled the mesh every cycle until memory ran out).
+    return apply_caps();
+  }
+
+  void
+  AdaptiveRefinement::refine()
+  {
+    body.refine_and_transfer();
+  }
+
+  OutputWriter::CellData
+  AdaptiveRefinement::cell_data() const
+  {
+    const auto diameters = element_diameters(body.get_triangulation());
+    OutputWriter::CellData data;
+    data["D_e"] = diameters.D;
+    data["d_e"] = diameters.d;
+    data["K_e"] = diameters.K;
+    if (eta.size() == body.get_triangulation().n_active_cells())
+      data["eta"] = eta;
+    return data;
+  }
+} // namespace ddcontact

@@ -1,0 +1,109 @@
+#include <deal.II/base/timer.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <ddcontact/adaptivity/fem_bem_estimator.h>
+
+#include <cmath>
+
+namespace ddcontact
+{
+  FemBemEstimator::FemBemEstimator(const ElasticBody<2> &body,
+                                   const std::string    &variant)
+    : body(body)
+    , scaled(variant == "scaled")
+    , bem(body.get_material(), body.get_boundary_conditions())
+  {
+    Assert(variant == "printed" || variant == "scaled", ExcInternalError());
+    // The boundary mesh (25) follows the FEM mesh: any refinement makes
+    // the BEM stale, and it is rebuilt at the next estimate.
+    mesh_changed = body.get_triangulation().signals.any_change.connect(
+      [this]() { bem_is_current = false; });
+  }
+
+  FemBemEstimator::~FemBemEstimator()
+  {
+    mesh_changed.disconnect();
+  }
+
+  void
+  FemBemEstimator::estimate(const Vector<double>          &u_fem,
+                            const BoundaryTractionSamples &contact)
+  {
+    Timer timer;
+    if (!bem_is_current)
+    {
+      bem.setup(body.get_dof_handler(), body.get_mapping());
+      bem_is_current = true;
+      time.bem_setup += timer.wall_time();
+    }
+
+    timer.restart();
+    bem.solve(contact);
+    time.bem_solve += timer.wall_time();
+
+    timer.restart();
+    // Under mpirun every process holds the body and its boundary solution:
+    // the interior evaluation, the estimator's main cost, is split.
+    const auto sigma_B =
+      bem.stress_at_quadrature_points(body.get_dof_handler(),
+                                      body.get_mapping(),
+                                      body.get_cell_quadrature(),
+                                      MPI_COMM_WORLD);
+    time.bem_interior += timer.wall_time();
+
+    // (24), (27): cell norms of sigma_B - sigma_F and the global norm of
+    // sigma_B, with the cell quadrature of the FEM (the sigma_B above
+    // lives at its points).
+    timer.restart();
+    const auto     sigma_F = body.stress_at_quadrature_points(u_fem);
+    const auto    &tria    = body.get_triangulation();
+    Vector<double> area(tria.n_active_cells());
+    local_error.reinit(tria.n_active_cells());
+    double      total_area = 0, bem_norm2 = 0, error2 = 0;
+    FEValues<2> fe_values(body.get_mapping(),
+                          body.get_fe(),
+                          body.get_cell_quadrature(),
+                          update_JxW_values);
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+    {
+      if (!body.computes(cell))
+        continue;
+      fe_values.reinit(cell);
+      const unsigned int c  = cell->active_cell_index();
+      double             e2 = 0;
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const auto d = sigma_B[c][q] - sigma_F[c][q];
+        // sum_ij z_ij^2: the double contraction counts z_12 twice.
+        e2 += (d * d) * fe_values.JxW(q);
+        bem_norm2 += (sigma_B[c][q] * sigma_B[c][q]) * fe_values.JxW(q);
+        area(c) += fe_values.JxW(q);
+      }
+      local_error(c) = std::sqrt(e2);
+      error2 += e2;
+      total_area += area(c);
+    }
+    if (body.is_mesh_distributed())
+    {
+      // Each process summed its own cells.
+      const MPI_Comm comm = body.get_triangulation().get_communicator();
+      error2              = Utilities::MPI::sum(error2, comm);
+      bem_norm2           = Utilities::MPI::sum(bem_norm2, comm);
+      total_area          = Utilities::MPI::sum(total_area, comm);
+    }
+    error_norm      = std::sqrt(error2);
+    bem_stress_norm = std::sqrt(bem_norm2);
+
+    eta.reinit(tria.n_active_cells());
+    const double reference =
+      bem_stress_norm / (scaled ? std::sqrt(total_area) : total_area);
+    for (unsigned int c = 0; c < eta.size(); ++c)
+      eta(c) =
+        // (Cells of other processes of a distributed mesh have no area.)
+        (reference > 0 && area(c) > 0)
+          ? local_error(c) / (scaled ? std::sqrt(area(c)) : area(c)) / reference
+          : 0.;
+    time.compare += timer.wall_time();
+  }
+} // namespace ddcontact

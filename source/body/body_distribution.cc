@@ -1,0 +1,218 @@
+#include <ddcontact/body/body_distribution.h>
+#include <ddcontact/tasks.h>
+
+#include <deal.II/base/thread_management.h>
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <numeric>
+#include <sstream>
+
+namespace ddcontact
+{
+  BodyDistribution::BodyDistribution(
+    const std::vector<ElasticBody<2> *> &bodies,
+    const ParallelParameters            &parameters,
+    const MPI_Comm                       communicator)
+    : bodies(bodies)
+    , parameters(parameters)
+    , communicator(communicator)
+    , this_process(Utilities::MPI::this_mpi_process(communicator))
+    , n_procs(Utilities::MPI::n_mpi_processes(communicator))
+    , process_groups(parameters.process_groups(n_procs, bodies.size()))
+    , groups(bodies.size(), std::vector<unsigned int>{0})
+  {
+  }
+
+  namespace
+  {
+    /** The ranks first, ..., first + n - 1. */
+    std::vector<unsigned int>
+    ranks(const unsigned int first, const unsigned int n)
+    {
+      std::vector<unsigned int> r(n);
+      std::iota(r.begin(), r.end(), first);
+      return r;
+    }
+  } // namespace
+
+  bool
+  BodyDistribution::distribute()
+  {
+    const auto previous = groups;
+    if (process_groups)
+    {
+      // Chosen once: a body's mesh is partitioned between its group, and
+      // refinement repartitions within the group.
+      if (groups_chosen)
+        return false;
+      groups_chosen = true;
+      if (parameters.mode == "all")
+        for (auto &g : groups)
+          g = ranks(0, n_procs);
+      else if (parameters.mode == "list")
+        for (unsigned int b = 0; b < bodies.size(); ++b)
+          groups[b] = parameters.body_groups.at(bodies[b]->name());
+      else
+      {
+        // One process per body, then each further process to the body
+        // with the most dofs per process; consecutive ranks per body.
+        std::vector<unsigned int> size(bodies.size(), 1);
+        for (unsigned int p = bodies.size(); p < n_procs; ++p)
+        {
+          unsigned int best = 0;
+          for (unsigned int b = 1; b < bodies.size(); ++b)
+            if (static_cast<double>(bodies[b]->n_dofs()) / size[b] >
+                static_cast<double>(bodies[best]->n_dofs()) / size[best])
+              best = b;
+          ++size[best];
+        }
+        unsigned int first = 0;
+        for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          groups[b] = ranks(first, size[b]);
+          first += size[b];
+        }
+      }
+      // Collective over the world, in the same body order everywhere.
+      // The bodies keep (and free) their groups' communicators.
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        MPI_Comm  group;
+        const int ierr = MPI_Comm_split(
+          communicator, owns(b) ? 0 : MPI_UNDEFINED, this_process, &group);
+        AssertThrowMPI(ierr);
+        bodies[b]->set_process_group(groups[b], group);
+      }
+    }
+    else if (parameters.mode == "list")
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        groups[b] = parameters.body_groups.at(bodies[b]->name());
+    else
+    {
+      // Largest body first onto the least loaded process: the time of one
+      // DD iteration is that of the slowest process. Ties go to the lower
+      // rank, and every process computes the same from the same meshes.
+      std::vector<unsigned int> order(bodies.size());
+      std::iota(order.begin(), order.end(), 0);
+      std::stable_sort(order.begin(),
+                       order.end(),
+                       [&](const unsigned int a, const unsigned int b)
+                       { return bodies[a]->n_dofs() > bodies[b]->n_dofs(); });
+      std::vector<double> load(n_procs, 0.);
+      for (const unsigned int b : order)
+      {
+        const unsigned int p =
+          std::min_element(load.begin(), load.end()) - load.begin();
+        groups[b] = {p};
+        load[p] += bodies[b]->n_dofs();
+      }
+    }
+    // Assembly and factorization of the bodies are independent.
+    for_each_body([&](const unsigned int b)
+                  { bodies[b]->set_solved_here(owns(b)); },
+                  false);
+    return groups != previous;
+  }
+
+  void
+  BodyDistribution::for_each_body(const std::function<void(unsigned int)> &work,
+                                  const bool owned_only) const
+  {
+    std::vector<std::string> errors(bodies.size());
+    const auto               run = [&](const unsigned int b)
+    {
+      try
+      {
+        work(b);
+      }
+      catch (const std::exception &e)
+      {
+        errors[b] = e.what();
+      }
+    };
+    // With process groups the work may be collective over a body's group
+    // or the world: every process takes the bodies in the same order, one
+    // at a time.
+    run_tasks(
+      bodies.size(),
+      [&](const unsigned int b)
+      {
+        if (!owned_only || owns(b))
+          run(b);
+      },
+      process_groups);
+    std::string first_error;
+    for (const auto &e : errors)
+      if (first_error.empty())
+        first_error = e;
+    agree_on_errors(first_error);
+  }
+
+  void
+  BodyDistribution::agree_on_errors(const std::string &message) const
+  {
+    if (n_procs == 1)
+    {
+      if (!message.empty())
+        throw InputError(message);
+      return;
+    }
+    // Collective: every process calls this once at the same point (after
+    // every set of body solves). The messages are gathered only when some
+    // process failed: the usual case costs one integer reduction.
+    if (Utilities::MPI::max(static_cast<int>(!message.empty()), communicator) ==
+        0)
+      return;
+    for (const auto &m : Utilities::MPI::all_gather(communicator, message))
+      if (!m.empty())
+        throw InputError(m);
+  }
+
+  void
+  BodyDistribution::solve_and_share(
+    const std::function<void(unsigned int)> &solve,
+    std::vector<Vector<double>>             &per_body) const
+  {
+    AssertDimension(per_body.size(), bodies.size());
+    Timer timer;
+    for_each_body(solve, true);
+    seconds_solving += timer.wall_time();
+    timer.restart();
+    share(per_body);
+    seconds_exchanging += timer.wall_time();
+  }
+
+  void
+  BodyDistribution::share(const unsigned int b, Vector<double> &v) const
+  {
+    if (n_procs == 1)
+      return;
+    // Every process knows the body's size from its own copy of the mesh.
+    if (!owns(b))
+      v.reinit(bodies[b]->n_dofs());
+    AssertDimension(v.size(), bodies[b]->n_dofs());
+    Utilities::MPI::broadcast(v.data(), v.size(), owner_of(b), communicator);
+  }
+
+  void
+  BodyDistribution::share(std::vector<Vector<double>> &per_body) const
+  {
+    AssertDimension(per_body.size(), bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      share(b, per_body[b]);
+  }
+
+  std::string
+  BodyDistribution::describe() const
+  {
+    std::ostringstream s;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+    {
+      s << (b ? ", " : "") << bodies[b]->name() << ": " << groups[b].front();
+      if (groups[b].size() > 1)
+        s << '-' << groups[b].back();
+    }
+    return s.str();
+  }
+} // namespace ddcontact

@@ -1,0 +1,578 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/mpi_remote_point_evaluation.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <ddcontact/contact/contact_pair.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace ddcontact
+{
+  namespace
+  {
+    /** A boundary face of a zone, as a straight segment (linear mapping),
+     * with its cell where this process holds it (invalid when the face
+     * was gathered from another process of a distributed mesh). */
+    struct ZoneFace
+    {
+      DoFHandler<2>::active_cell_iterator cell;
+      Point<2>                            a, b;
+      Tensor<1, 2>                        normal; // outward
+    };
+
+    /** The faces with boundary id @p id: all of them on every process
+     * (on a distributed mesh each process finds those of its own cells and
+     * the lists are gathered, in the order of the processes). */
+    std::vector<ZoneFace>
+    zone_faces(const ElasticBody<2> &body, const types::boundary_id id)
+    {
+      std::vector<ZoneFace> faces;
+      for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+        if (body.computes(cell))
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == id)
+            {
+              ZoneFace           z{cell,
+                         cell->face(f)->vertex(0),
+                         cell->face(f)->vertex(1),
+                         Tensor<1, 2>()};
+              const Tensor<1, 2> t = z.b - z.a;
+              Tensor<1, 2>       n({t[1], -t[0]});
+              n /= n.norm();
+              if (n * (cell->face(f)->center() - cell->center()) < 0)
+                n *= -1.;
+              z.normal = n;
+              faces.push_back(z);
+            }
+      if (!body.is_mesh_distributed())
+        return faces;
+
+      std::vector<std::array<double, 6>> mine;
+      for (const auto &z : faces)
+        mine.push_back(
+          {{z.a[0], z.a[1], z.b[0], z.b[1], z.normal[0], z.normal[1]}});
+      faces.clear();
+      for (const auto &from_process : Utilities::MPI::all_gather(
+             body.get_triangulation().get_communicator(), mine))
+        for (const auto &g : from_process)
+          faces.push_back({DoFHandler<2>::active_cell_iterator(),
+                           Point<2>(g[0], g[1]),
+                           Point<2>(g[2], g[3]),
+                           Tensor<1, 2>({g[4], g[5]})});
+      return faces;
+    }
+
+    /** "the gap is f at x = (x1, x2)", for messages. */
+    std::string
+    gap_at(const ContactPoint &p)
+    {
+      std::ostringstream s;
+      s << std::setprecision(6) << "the gap is " << p.gap << " at x = ("
+        << p.x[0] << ", " << p.x[1] << ")";
+      return s.str();
+    }
+
+    /** An end of a zone that is not closed: a vertex of only one of its
+     * faces, with the direction that leaves the zone there (along that
+     * face, away from its other vertex). */
+    struct ZoneEnd
+    {
+      Point<2>     vertex;
+      Tensor<1, 2> outward;
+    };
+
+    /** The ends of the zone made of @p faces: vertices shared by two faces
+     * are the same doubles (one vertex of the mesh, or gathered exactly
+     * from another process), so they are matched exactly. */
+    std::vector<ZoneEnd>
+    zone_ends(const std::vector<ZoneFace> &faces)
+    {
+      std::map<std::pair<double, double>, std::vector<unsigned int>> faces_at;
+      for (unsigned int i = 0; i < faces.size(); ++i)
+      {
+        faces_at[{faces[i].a[0], faces[i].a[1]}].push_back(i);
+        faces_at[{faces[i].b[0], faces[i].b[1]}].push_back(i);
+      }
+      std::vector<ZoneEnd> ends;
+      for (const auto &[vertex, at] : faces_at)
+        if (at.size() == 1)
+        {
+          const auto    &f = faces[at[0]];
+          const Point<2> v(vertex.first, vertex.second);
+          const Point<2> other = (v == f.a) ? f.b : f.a;
+          ends.push_back({v, (v - other) / (v - other).norm()});
+        }
+      return ends;
+    }
+
+    /** Whether @p x, whose closest point on the zone is @p projection,
+     * lies beyond one of the zone's ends (then the closest point is that
+     * end, and x is on the far side of the end's normal line). The
+     * tolerance is relative to the length @p h of the face of x. */
+    bool
+    beyond_zone_end(const Point<2>             &x,
+                    const Point<2>             &projection,
+                    const std::vector<ZoneEnd> &ends,
+                    const double                h)
+    {
+      for (const auto &end : ends)
+        if (projection.distance(end.vertex) <= 1e-12 * h &&
+            (x - end.vertex) * end.outward > 1e-10 * h)
+          return true;
+      return false;
+    }
+
+    /**
+     * What the cell holding a point knows of it: the cell's dofs, the
+     * value of every shape function at the point (of its one nonzero
+     * component), and the body's constraint of every dof (n_entries[i] < 0:
+     * none; otherwise that many entries of masters/weights, none for a
+     * Dirichlet dof). Sent between processes by RemotePointEvaluation.
+     */
+    struct PointShape
+    {
+      std::vector<types::global_dof_index> dofs;
+      std::vector<double>                  values;
+      std::vector<int>                     n_entries;
+      std::vector<types::global_dof_index> masters;
+      std::vector<double>                  weights;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &dofs &values &n_entries &masters &weights;
+      }
+    };
+
+    /** PointShape at unit points of one cell (one FEValues per cell). */
+    std::vector<PointShape>
+    point_shapes(const ElasticBody<2>                      &body,
+                 const DoFHandler<2>::active_cell_iterator &cell,
+                 const std::vector<Point<2>>               &unit_points)
+    {
+      FEValues<2> fe_values(body.get_mapping(),
+                            body.get_fe(),
+                            Quadrature<2>(unit_points),
+                            update_values);
+      fe_values.reinit(cell);
+      PointShape common;
+      common.dofs.resize(body.get_fe().dofs_per_cell);
+      cell->get_dof_indices(common.dofs);
+      const auto &constraints = body.get_constraints();
+      for (const auto dof : common.dofs)
+      {
+        if (!constraints.is_constrained(dof))
+        {
+          common.n_entries.push_back(-1);
+          continue;
+        }
+        const auto *entries = constraints.get_constraint_entries(dof);
+        common.n_entries.push_back(entries ? entries->size() : 0);
+        if (entries)
+          for (const auto &[master, weight] : *entries)
+          {
+            common.masters.push_back(master);
+            common.weights.push_back(weight);
+          }
+      }
+      std::vector<PointShape> shapes(unit_points.size(), common);
+      for (unsigned int q = 0; q < unit_points.size(); ++q)
+        for (unsigned int i = 0; i < common.dofs.size(); ++i)
+          shapes[q].values.push_back(fe_values.shape_value(i, q));
+      return shapes;
+    }
+
+    /** PointShape at points given in real coordinates in one cell. */
+    std::vector<PointShape>
+    point_shapes_at(const ElasticBody<2>                      &body,
+                    const DoFHandler<2>::active_cell_iterator &cell,
+                    const std::vector<Point<2>>               &points)
+    {
+      std::vector<Point<2>> unit_points;
+      for (const auto &x : points)
+        unit_points.push_back(
+          body.get_mapping().transform_real_to_unit_cell(cell, x));
+      return point_shapes(body, cell, unit_points);
+    }
+
+    /** PointShape at @p points of a distributed mesh: the owners of the
+     * cells around the points evaluate and send (collective). */
+    std::vector<PointShape>
+    remote_point_shapes(const ElasticBody<2>        &body,
+                        const std::vector<Point<2>> &points,
+                        const std::string           &section)
+    {
+      // Process 0 asks and sends the answer to all: a point on an edge
+      // between two processes' cells has two equally valid answers that
+      // differ in round-off, and the DD, replicated on every process, must
+      // see the same numbers everywhere. One cell per point, else a point
+      // on an edge would be loaded twice; the tolerance is in unit
+      // coordinates.
+      const MPI_Comm comm = body.get_triangulation().get_communicator();
+      const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
+      Utilities::MPI::RemotePointEvaluation<2> remote(1e-6, true);
+      remote.reinit(root ? points : std::vector<Point<2>>(),
+                    body.get_triangulation(),
+                    body.get_mapping());
+      if (Utilities::MPI::broadcast(comm, remote.all_points_found(), 0) ==
+          false)
+        throw InputError(section +
+                         ": a contact point lies in no cell of "
+                         "body '" +
+                         body.name() + "'");
+      std::vector<PointShape> shapes, buffer;
+      remote.evaluate_and_process<PointShape>(
+        shapes,
+        buffer,
+        [&](const ArrayView<PointShape> &values, const auto &cell_data)
+        {
+          for (unsigned int c = 0; c < cell_data.cells.size(); ++c)
+          {
+            const DoFHandler<2>::active_cell_iterator cell(
+              &body.get_triangulation(),
+              cell_data.cells[c].first,
+              cell_data.cells[c].second,
+              &body.get_dof_handler());
+            const unsigned int begin = cell_data.reference_point_ptrs[c],
+                               end   = cell_data.reference_point_ptrs[c + 1];
+            const auto in_cell =
+              point_shapes(body,
+                           cell,
+                           std::vector<Point<2>>(
+                             cell_data.reference_point_values.begin() + begin,
+                             cell_data.reference_point_values.begin() + end));
+            std::copy(in_cell.begin(), in_cell.end(), values.begin() + begin);
+          }
+        });
+      shapes = Utilities::MPI::broadcast(comm, shapes, 0);
+      AssertDimension(shapes.size(), points.size());
+      return shapes;
+    }
+
+    /** The normal-component coefficients of a point, and its load with the
+     * constraints resolved (see ContactPoint). */
+    void
+    couple(const PointShape                     &shape,
+           const FiniteElement<2>               &fe,
+           const Tensor<1, 2>                   &normal,
+           std::vector<types::global_dof_index> &dofs,
+           std::vector<double>                  &a,
+           std::vector<types::global_dof_index> &load_dofs,
+           std::vector<double>                  &load)
+    {
+      dofs = shape.dofs;
+      a.resize(dofs.size());
+      load_dofs.clear();
+      load.clear();
+      for (unsigned int i = 0, e = 0; i < dofs.size(); ++i)
+      {
+        a[i] = shape.values[i] * normal[fe.system_to_component_index(i).first];
+        if (shape.n_entries[i] < 0)
+        {
+          load_dofs.push_back(dofs[i]);
+          load.push_back(a[i]);
+        }
+        else
+          for (int k = 0; k < shape.n_entries[i]; ++k, ++e)
+          {
+            load_dofs.push_back(shape.masters[e]);
+            load.push_back(a[i] * shape.weights[e]);
+          }
+      }
+    }
+  } // namespace
+
+  ContactPair::ContactPair(const ContactPairParameters &parameters,
+                           const ElasticBody<2>        &body_1,
+                           const ElasticBody<2>        &body_2,
+                           const Constants             &constants)
+    : parameters(parameters)
+    , body_1(body_1)
+    , body_2(body_2)
+  {
+    if (parameters.gap_type == GapType::expression)
+      gap_function = make_function(parameters.gap_expression,
+                                   1,
+                                   constants,
+                                   "Contact pair " + parameters.name + "/Gap");
+  }
+
+  void
+  ContactPair::setup()
+  {
+    const std::string section = "Contact pair " + parameters.name + "/";
+    const auto        faces_1 = zone_faces(body_1, parameters.boundary_id_1);
+    const auto        faces_2 = zone_faces(body_2, parameters.boundary_id_2);
+    if (faces_1.empty())
+      throw InputError(section + "Boundary id 1: body '" + body_1.name() +
+                       "' has no face with boundary id " +
+                       std::to_string(parameters.boundary_id_1));
+    if (faces_2.empty())
+      throw InputError(section + "Boundary id 2: body '" + body_2.name() +
+                       "' has no face with boundary id " +
+                       std::to_string(parameters.boundary_id_2));
+
+    // Vertices of S_2: their projections split the faces of S_1.
+    std::vector<Point<2>> vertices_2;
+    for (const auto &f : faces_2)
+    {
+      vertices_2.push_back(f.a);
+      vertices_2.push_back(f.b);
+    }
+    const auto ends_2 = zone_ends(faces_2);
+
+    const QGauss<1> gauss(parameters.n_gauss);
+    contact_points.clear();
+    // Per point, the shapes of both bodies there: computed from the face's
+    // cell at once on a serial or shared mesh, by the owners of a
+    // distributed one at the end.
+    std::vector<PointShape> shapes_1, shapes_2;
+    for (const auto &face : faces_1)
+    {
+      const Tensor<1, 2>  t      = face.b - face.a;
+      const double        length = t.norm();
+      std::vector<double> breaks = {0., 1.};
+      for (const auto &v : vertices_2)
+      {
+        const double s = (v - face.a) * t / (length * length);
+        if (s > 1e-10 && s < 1. - 1e-10)
+          breaks.push_back(s);
+      }
+      // Where the normal line through an end of S_2 crosses the face: the
+      // points beyond it have no orthogonal projection on S_2 and drop out
+      // (below), so no piece straddles the edge of the zone.
+      for (const auto &end : ends_2)
+      {
+        const double along = t * end.outward;
+        if (std::abs(along) < 1e-12 * length)
+          continue;
+        const double s = (end.vertex - face.a) * end.outward / along;
+        if (s > 1e-10 && s < 1. - 1e-10)
+          breaks.push_back(s);
+      }
+      std::sort(breaks.begin(), breaks.end());
+      breaks.erase(std::unique(breaks.begin(),
+                               breaks.end(),
+                               [](double x, double y)
+                               { return std::abs(x - y) < 1e-10; }),
+                   breaks.end());
+
+      std::vector<Point<2>> xs;
+      for (unsigned int piece = 0; piece + 1 < breaks.size(); ++piece)
+        for (unsigned int q = 0; q < gauss.size(); ++q)
+        {
+          const double s =
+            breaks[piece] +
+            gauss.point(q)[0] * (breaks[piece + 1] - breaks[piece]);
+          ContactPoint p;
+          p.x = face.a + s * t;
+          p.JxW =
+            gauss.weight(q) * (breaks[piece + 1] - breaks[piece]) * length;
+          p.normal = face.normal;
+
+          // Orthogonal projection P(x) on S_2: the closest point.
+          double          best  = std::numeric_limits<double>::max();
+          const ZoneFace *owner = nullptr;
+          for (const auto &f : faces_2)
+          {
+            const Tensor<1, 2> d = f.b - f.a;
+            const double       r =
+              std::clamp((p.x - f.a) * d / d.norm_square(), 0., 1.);
+            const Point<2> candidate = f.a + r * d;
+            const double   distance  = candidate.distance(p.x);
+            if (distance < best)
+            {
+              best         = distance;
+              owner        = &f;
+              p.projection = candidate;
+            }
+          }
+          // A point beyond an end of S_2 has no partner on S_2 and cannot
+          // touch it: the closest point would be that end, and the point
+          // would be pressed against the end's displacement (a zone S_1
+          // longer than S_2 would be loaded where nothing touches it).
+          if (beyond_zone_end(p.x, p.projection, ends_2, length))
+            continue;
+          p.gap = gap_function ? gap_function->value(p.x)
+                               : (p.projection - p.x) * p.normal;
+          if (!std::isfinite(p.gap))
+            throw InputError(section + "Gap: " + gap_at(p) +
+                             " of S_1; give an expression that is finite "
+                             "on the whole zone");
+          if (!body_2.is_mesh_distributed())
+            shapes_2.push_back(
+              point_shapes_at(body_2, owner->cell, {p.projection})[0]);
+          xs.push_back(p.x);
+          contact_points.push_back(p);
+        }
+      if (!body_1.is_mesh_distributed() && !xs.empty())
+        for (const auto &shape : point_shapes_at(body_1, face.cell, xs))
+          shapes_1.push_back(shape);
+    }
+
+    if (contact_points.empty())
+      throw InputError(
+        section + "Boundary id 1: no point of the zone of '" + body_1.name() +
+        "' (boundary id " + std::to_string(parameters.boundary_id_1) +
+        ") lies within the zone of '" + body_2.name() + "' (boundary id " +
+        std::to_string(parameters.boundary_id_2) +
+        "): the normal lines of S_2 do not meet S_1");
+
+    if (body_1.is_mesh_distributed() || body_2.is_mesh_distributed())
+    {
+      std::vector<Point<2>> xs, projections;
+      for (const auto &p : contact_points)
+      {
+        xs.push_back(p.x);
+        projections.push_back(p.projection);
+      }
+      if (body_1.is_mesh_distributed())
+        shapes_1 = remote_point_shapes(body_1, xs, section + "Boundary id 1");
+      if (body_2.is_mesh_distributed())
+        shapes_2 =
+          remote_point_shapes(body_2, projections, section + "Boundary id 2");
+    }
+    for (unsigned int q = 0; q < contact_points.size(); ++q)
+    {
+      auto &p = contact_points[q];
+      couple(shapes_1[q],
+             body_1.get_fe(),
+             p.normal,
+             p.dofs_1,
+             p.a,
+             p.load_dofs_1,
+             p.load_1);
+      // n_2 = -n_1 (small-gap assumption).
+      couple(shapes_2[q],
+             body_2.get_fe(),
+             -p.normal,
+             p.dofs_2,
+             p.b,
+             p.load_dofs_2,
+             p.load_2);
+    }
+
+    // Thickness of both bodies along the mean normal of S_1 (the x axis
+    // if the normals cancel).
+    Tensor<1, 2> mean;
+    for (const auto &p : contact_points)
+      mean += p.normal;
+    mean = (mean.norm() > 0) ? mean / mean.norm() : Tensor<1, 2>({1., 0.});
+    const auto extent_1 = body_1.extent_along(mean);
+    const auto extent_2 = body_2.extent_along(mean);
+    thickness_1         = parameters.thickness > 0 ? parameters.thickness
+                                                   : extent_1.second - extent_1.first;
+    thickness_2         = extent_2.second - extent_2.first;
+
+    // An initial overlap deeper than both bodies together is no small-strain
+    // contact problem (a gap given in other units, or a sign error).
+    for (const auto &p : contact_points)
+      if (p.gap < -(extent_1.second - extent_1.first + thickness_2))
+        throw InputError(section + "Gap: " + gap_at(p) +
+                         ", an overlap deeper than both bodies together; "
+                         "check its sign and units");
+
+    // theta = c H / E_1 (paper, section 6), or given.
+    theta = (parameters.penalty_type == PenaltyType::relative)
+              ? parameters.penalty * thickness_1 /
+                  body_1.get_material().youngs_modulus
+              : parameters.penalty;
+    // The penalty relative to the body, c = theta E_1 / H_1: below 1e-12 the
+    // penetration theta p is below round-off of the displacements and the
+    // pressure g/theta is round-off amplified by 1e12 (no solver can tell
+    // contact from separation).
+    const double extent = extent_1.second - extent_1.first;
+    const double c      = theta * body_1.get_material().youngs_modulus / extent;
+    if (!(c >= 1e-12) || !std::isfinite(theta))
+    {
+      std::ostringstream s;
+      s << section
+        << (parameters.penalty_type == PenaltyType::relative &&
+                parameters.thickness > 0
+              ? "Thickness"
+              : "Penalty")
+        << ": theta = " << theta << " is " << c << " times H/E_1 of body '"
+        << body_1.name() << "' (H = " << extent
+        << "); a penalty below 1e-12 H/E_1 is lost in round-off: raise it, "
+           "or use Domain decomposition/Augmented Lagrangian = true with a "
+           "larger penalty";
+      throw InputError(s.str());
+    }
+  }
+
+  void
+  ContactPair::normal_displacements(const Vector<double> &u_1,
+                                    const Vector<double> &u_2,
+                                    std::vector<double>  &u_1n,
+                                    std::vector<double>  &u_2n) const
+  {
+    u_1n.resize(contact_points.size());
+    u_2n.resize(contact_points.size());
+    for (unsigned int q = 0; q < contact_points.size(); ++q)
+    {
+      const auto &p  = contact_points[q];
+      double      v1 = 0, v2 = 0;
+      for (unsigned int i = 0; i < p.a.size(); ++i)
+        v1 += p.a[i] * u_1(p.dofs_1[i]);
+      for (unsigned int i = 0; i < p.b.size(); ++i)
+        v2 += p.b[i] * u_2(p.dofs_2[i]);
+      u_1n[q] = v1;
+      u_2n[q] = v2;
+    }
+  }
+
+  std::pair<Tensor<1, 2>, Tensor<1, 2>>
+  ContactPair::add_contact_loads(const std::vector<double> &sigma_n,
+                                 Vector<double>            &load_1,
+                                 Vector<double>            &load_2) const
+  {
+    AssertDimension(sigma_n.size(), contact_points.size());
+    const auto  &fe_1 = body_1.get_fe();
+    const auto  &fe_2 = body_2.get_fe();
+    Tensor<1, 2> force_1, force_2;
+    for (unsigned int q = 0; q < contact_points.size(); ++q)
+    {
+      if (sigma_n[q] == 0.)
+        continue;
+      const auto  &p = contact_points[q];
+      const double s = sigma_n[q] * p.JxW;
+      for (unsigned int i = 0; i < p.a.size(); ++i)
+        force_1[fe_1.system_to_component_index(i).first] += s * p.a[i];
+      for (unsigned int i = 0; i < p.b.size(); ++i)
+        force_2[fe_2.system_to_component_index(i).first] += s * p.b[i];
+      // The constraints are resolved in the load coefficients.
+      for (unsigned int i = 0; i < p.load_1.size(); ++i)
+        load_1(p.load_dofs_1[i]) += s * p.load_1[i];
+      for (unsigned int i = 0; i < p.load_2.size(); ++i)
+        load_2(p.load_dofs_2[i]) += s * p.load_2[i];
+    }
+    return {force_1, force_2};
+  }
+
+  void
+  ContactPair::add_traction_samples(const std::vector<double> &sigma_n,
+                                    const ElasticBody<2>      &body,
+                                    BoundaryTractionSamples   &samples) const
+  {
+    AssertDimension(sigma_n.size(), contact_points.size());
+    Assert(&body == &body_1 || &body == &body_2, ExcInternalError());
+    const bool on_body_1 = (&body == &body_1);
+    for (unsigned int q = 0; q < contact_points.size(); ++q)
+    {
+      const auto &p = contact_points[q];
+      samples.points.push_back(on_body_1 ? p.x : p.projection);
+      samples.weights.push_back(p.JxW);
+      samples.traction.push_back((on_body_1 ? sigma_n[q] : -sigma_n[q]) *
+                                 p.normal);
+    }
+  }
+} // namespace ddcontact

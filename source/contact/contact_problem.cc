@@ -1,0 +1,180 @@
+#include <ddcontact/contact/contact_problem.h>
+#include <ddcontact/parameters.h>
+
+#include <cmath>
+#include <limits>
+
+namespace ddcontact
+{
+  ContactProblem::ContactProblem(const std::vector<ElasticBody<2> *> &bodies,
+                                 const std::vector<ContactPair *>    &pairs,
+                                 const BodyDistribution &distribution)
+    : bodies(bodies)
+    , pairs(pairs)
+    , distribution(distribution)
+  {
+    reset_laws();
+  }
+
+  unsigned int
+  ContactProblem::body_index(const ElasticBody<2> &body) const
+  {
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (bodies[b] == &body)
+        return b;
+    Assert(false, ExcInternalError());
+    return 0;
+  }
+
+  void
+  ContactProblem::reset_laws()
+  {
+    laws.clear();
+    for (const auto *pair : pairs)
+      laws.emplace_back(*pair);
+  }
+
+  ContactProblem::Iterate
+  ContactProblem::current_iterate() const
+  {
+    Iterate u(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      u[b] = bodies[b]->get_solution();
+    return u;
+  }
+
+  ContactProblem::Iterate
+  ContactProblem::zero_iterate() const
+  {
+    Iterate u(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      u[b].reinit(bodies[b]->n_dofs());
+    return u;
+  }
+
+  void
+  ContactProblem::solve_all(const Iterate &loads, Iterate &u) const
+  {
+    // A contact load beyond the floating-point range would come back as a
+    // non-finite displacement blamed on the body; name the pairs instead.
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (loads[b].size() > 0 && !std::isfinite(loads[b].linfty_norm()))
+      {
+        std::string entries;
+        for (const auto *pair : pairs)
+          if (&pair->get_body_1() == bodies[b] ||
+              &pair->get_body_2() == bodies[b])
+            entries += (entries.empty() ? "" : ", ") +
+                       ("Contact pair " + pair->name() + "/Gap");
+        throw InputError(entries + ": the contact load on body '" +
+                         bodies[b]->name() +
+                         "' is beyond the floating-point range (gap / theta "
+                         "overflows); check the gap's magnitude and the "
+                         "Penalty");
+      }
+    // The body problems of (20) are independent: solve them concurrently,
+    // each on the process that owns it.
+    u.resize(bodies.size());
+    distribution.solve_and_share(
+      [&](const unsigned int b) { bodies[b]->solve(loads[b], u[b]); }, u);
+  }
+
+  void
+  ContactProblem::solve_bodies(const std::vector<std::vector<double>> &sigma_n,
+                               Iterate                                &u) const
+  {
+    Iterate loads = zero_iterate();
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      pairs[p]->add_contact_loads(sigma_n[p],
+                                  loads[body_index(pairs[p]->get_body_1())],
+                                  loads[body_index(pairs[p]->get_body_2())]);
+    solve_all(loads, u);
+  }
+
+  std::vector<double>
+  ContactProblem::gaps(const unsigned int p, const Iterate &u) const
+  {
+    const auto         &pair = *pairs[p];
+    std::vector<double> u_1n, u_2n;
+    pair.normal_displacements(u[body_index(pair.get_body_1())],
+                              u[body_index(pair.get_body_2())],
+                              u_1n,
+                              u_2n);
+    std::vector<double> g(u_1n.size());
+    for (unsigned int q = 0; q < g.size(); ++q)
+      g[q] = pair.points()[q].gap - u_1n[q] - u_2n[q];
+    return g;
+  }
+
+  std::vector<double>
+  ContactProblem::pressure(const unsigned int p, const Iterate &u) const
+  {
+    return laws[p].pressure(gaps(p, u));
+  }
+
+  std::vector<std::vector<double>>
+  ContactProblem::normal_displacements_by_body(const Iterate &u) const
+  {
+    std::vector<std::vector<double>> by_body(bodies.size());
+    for (const auto *pair : pairs)
+    {
+      std::vector<double> u_1n, u_2n;
+      const unsigned int  b1 = body_index(pair->get_body_1());
+      const unsigned int  b2 = body_index(pair->get_body_2());
+      pair->normal_displacements(u[b1], u[b2], u_1n, u_2n);
+      by_body[b1].insert(by_body[b1].end(), u_1n.begin(), u_1n.end());
+      by_body[b2].insert(by_body[b2].end(), u_2n.begin(), u_2n.end());
+    }
+    return by_body;
+  }
+
+  ContactState
+  ContactProblem::contact_state(const unsigned int p, const Iterate &u) const
+  {
+    const auto  &pair = *pairs[p];
+    ContactState state;
+    pair.normal_displacements(u[body_index(pair.get_body_1())],
+                              u[body_index(pair.get_body_2())],
+                              state.u_1n,
+                              state.u_2n);
+    state.sigma_n = pressure(p, u);
+    Vector<double> l1(pair.get_body_1().n_dofs()),
+      l2(pair.get_body_2().n_dofs());
+    std::tie(state.force_1, state.force_2) =
+      pair.add_contact_loads(state.sigma_n, l1, l2);
+    double lo = std::numeric_limits<double>::max(), hi = -lo;
+    for (unsigned int q = 0; q < state.sigma_n.size(); ++q)
+    {
+      const auto &pt     = pair.points()[q];
+      state.max_pressure = std::max(state.max_pressure, -state.sigma_n[q]);
+      if (state.sigma_n[q] < 0)
+      {
+        state.contact_length += pt.JxW;
+        // Position along the tangent of S, for the half-width.
+        const double s = pt.x[0] * pt.normal[1] - pt.x[1] * pt.normal[0];
+        lo             = std::min(lo, s);
+        hi             = std::max(hi, s);
+      }
+      state.max_penetration =
+        std::max(state.max_penetration, state.u_1n[q] + state.u_2n[q] - pt.gap);
+    }
+    state.half_width = (hi >= lo) ? 0.5 * (hi - lo) : 0.;
+    return state;
+  }
+
+  std::pair<double, double>
+  ContactProblem::penetration(const Iterate &u) const
+  {
+    double max_penetration = 0, max_displacement = 0;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+    {
+      const auto state = contact_state(p, u);
+      max_penetration  = std::max(max_penetration, state.max_penetration);
+      for (unsigned int q = 0; q < state.u_1n.size(); ++q)
+        max_displacement = std::max(
+          max_displacement, std::abs(state.u_1n[q]) + std::abs(state.u_2n[q]));
+    }
+    return {max_penetration,
+            max_penetration / std::max(max_displacement, 1e-300)};
+  }
+} // namespace ddcontact

@@ -1,0 +1,205 @@
+#include <deal.II/distributed/tria_base.h>
+
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <ddcontact/io/output_writer.h>
+
+#include <fstream>
+#include <iomanip>
+#include <set>
+#include <sstream>
+
+namespace ddcontact
+{
+  namespace
+  {
+    /** Plane-strain stress (2), sigma_33 and von Mises from the
+     * displacement gradient, for DataOut. */
+    template <int dim>
+    class StressPostprocessor : public DataPostprocessor<dim>
+    {
+    public:
+      StressPostprocessor(const ElasticBody<dim>    &body,
+                          const std::vector<double> &dilatation)
+        : body(body)
+        , material(body.get_material())
+        , dilatation(dilatation)
+      {
+      }
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>> &computed_quantities) const override
+      {
+        for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
+        {
+          SymmetricTensor<2, dim> strain;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = i; j < dim; ++j)
+              strain[i][j] = 0.5 * (inputs.solution_gradients[q][i][j] +
+                                    inputs.solution_gradients[q][j][i]);
+          // The body's own stress (2), with its reduced dilatation if any.
+          const auto s = body.stress_from_strain(
+            strain,
+            dilatation,
+            inputs.template get_cell<dim>()->active_cell_index());
+          auto &out = computed_quantities[q];
+          out(0)    = s[0][0];
+          out(1)    = s[1][1];
+          out(2)    = s[0][1];
+          out(3)    = material.out_of_plane_stress(s);
+          out(4)    = material.von_mises(s);
+        }
+      }
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return {"sigma_11", "sigma_22", "sigma_12", "sigma_33", "von_mises"};
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_gradients;
+      }
+
+    private:
+      const ElasticBody<dim>    &body;
+      const Material             material;
+      const std::vector<double> &dilatation;
+    };
+
+    std::string
+    step_name(const std::string &base, const unsigned int step)
+    {
+      std::ostringstream s;
+      s << base << '-' << std::setw(4) << std::setfill('0') << step;
+      return s.str();
+    }
+  } // namespace
+
+  OutputWriter::OutputWriter(const std::string &directory,
+                             const MPI_Comm     communicator)
+    : directory(directory)
+    , communicator(communicator)
+  {
+  }
+
+  void
+  OutputWriter::write_step(const unsigned int                         step,
+                           const double                               time,
+                           const std::vector<const ElasticBody<2> *> &bodies,
+                           const std::vector<const Vector<double> *> &solutions,
+                           const std::vector<CellData>               &cell_data)
+  {
+    // The union of the extra cell fields, so that every piece has them all.
+    std::set<std::string> extra_fields;
+    for (const auto &data : cell_data)
+      for (const auto &[name, values] : data)
+        extra_fields.insert(name);
+
+    std::vector<std::string> pieces;
+    const std::string        group = step_name("bodies", step) + ".pvtu";
+    const unsigned int       this_process =
+      Utilities::MPI::this_mpi_process(communicator);
+    const bool root = this_process == 0;
+
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+    {
+      const auto &body    = *bodies[b];
+      const auto  n_cells = body.get_triangulation().n_active_cells();
+
+      // A partitioned mesh is written by every process, each its own
+      // cells (DataOut's default selection); a serial one by process 0.
+      const auto *partitioned =
+        dynamic_cast<const parallel::TriangulationBase<2> *>(
+          &body.get_triangulation());
+      if (!partitioned && !root)
+        continue;
+
+      DataOut<2> data_out;
+      data_out.attach_dof_handler(body.get_dof_handler());
+
+      const std::vector<std::string> displacement_names(2, "displacement");
+      const std::vector<
+        DataComponentInterpretation::DataComponentInterpretation>
+        interpretation(
+          2, DataComponentInterpretation::component_is_part_of_vector);
+      data_out.add_data_vector(*solutions[b],
+                               displacement_names,
+                               DataOut<2>::type_dof_data,
+                               interpretation);
+      const auto dilatation = body.reduced_dilatation(*solutions[b]);
+      StressPostprocessor<2> stress(body, dilatation);
+      data_out.add_data_vector(*solutions[b], stress);
+
+      Vector<double> body_id(n_cells), level(n_cells), process(n_cells);
+      for (const auto &cell : body.get_triangulation().active_cell_iterators())
+      {
+        body_id(cell->active_cell_index()) = b;
+        level(cell->active_cell_index())   = cell->level();
+        // The process that assembles the cell (0 on a serial mesh).
+        process(cell->active_cell_index()) =
+          cell->subdomain_id() == numbers::invalid_subdomain_id
+            ? 0.
+            : cell->subdomain_id();
+      }
+      data_out.add_data_vector(body_id, "body_id", DataOut<2>::type_cell_data);
+      data_out.add_data_vector(level, "level", DataOut<2>::type_cell_data);
+      data_out.add_data_vector(process, "process", DataOut<2>::type_cell_data);
+
+      std::vector<Vector<double>> extra;
+      extra.reserve(extra_fields.size());
+      for (const auto &field : extra_fields)
+      {
+        const CellData *data = (b < cell_data.size()) ? &cell_data[b] : nullptr;
+        const auto it = data ? data->find(field) : CellData::const_iterator();
+        if (data && it != data->end())
+          extra.push_back(it->second);
+        else
+          extra.emplace_back(n_cells);
+        data_out.add_data_vector(
+          extra.back(), field, DataOut<2>::type_cell_data);
+      }
+
+      data_out.build_patches(body.get_mapping(), body.get_fe().degree);
+
+      const std::string name = step_name(body.name(), step);
+      if (partitioned)
+      {
+        const auto owned = Utilities::MPI::all_gather(
+          communicator, partitioned->n_locally_owned_active_cells());
+        for (unsigned int p = 0; p < owned.size(); ++p)
+          if (owned[p] > 0)
+            pieces.push_back(name + "." + std::to_string(p) + ".vtu");
+        if (owned[this_process] > 0)
+        {
+          std::ofstream out(directory + "/" + name + "." +
+                            std::to_string(this_process) + ".vtu");
+          data_out.write_vtu(out);
+        }
+      }
+      else
+      {
+        pieces.push_back(name + ".vtu");
+        std::ofstream out(directory + "/" + pieces.back());
+        data_out.write_vtu(out);
+      }
+      // Group the bodies of this step; every piece has the same fields.
+      if (root && b + 1 == bodies.size())
+      {
+        std::ofstream out(directory + "/" + group);
+        data_out.write_pvtu_record(out, pieces);
+      }
+    }
+    if (!root)
+      return;
+
+    records.emplace_back(time, group);
+    std::ofstream pvd(directory + "/solution.pvd");
+    DataOutBase::write_pvd_record(pvd, records);
+  }
+} // namespace ddcontact
