@@ -77,7 +77,7 @@ main(int argc, char **argv)
 
     // The estimator's raw ingredient, as a sanity check of the numbers:
     // RMS of sigma_B - sigma_F over all quadrature points, relative.
-    const auto  sigma_f = body.stress_at_quadrature_points(body.get_solution());
+    const auto  sigma_f    = body.stresses().at_quadrature_points();
     double      difference = 0, norm = 0;
     std::size_t n_points = 0;
     for (unsigned int c = 0; c < sigma_b.size(); ++c)

@@ -273,22 +273,12 @@ namespace ddcontact
         continue;
       std::ostringstream rows;
       rows << std::setprecision(8);
-      const Quadrature<2> centre = body.is_simplex()
-                                     ? Quadrature<2>(QGaussSimplex<2>(1))
-                                     : Quadrature<2>(QGauss<2>(1));
-      FEValues<2>         fe_values(
-        body.get_mapping(), body.get_fe(), centre, update_gradients);
-      const FEValuesExtractors::Vector   displacement(0);
-      std::vector<SymmetricTensor<2, 2>> strain(1);
-      const auto                        &eta = a->indicators();
-      const auto dilatation = body.reduced_dilatation(body.get_solution());
+      const auto &eta    = a->indicators();
+      const auto  stress = body.stresses().at_cell_centres();
       for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       {
         if (!body.computes(cell))
           continue;
-        fe_values.reinit(cell);
-        fe_values[displacement].get_function_symmetric_gradients(
-          body.get_solution(), strain);
         // Counter-clockwise corners (deal.II numbers those of a
         // quadrilateral lexicographically; a triangle repeats its last).
         const std::array<unsigned int, 4> corners =
@@ -297,9 +287,7 @@ namespace ddcontact
         for (const unsigned int v : corners)
           rows << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ',';
         const unsigned int c = cell->active_cell_index();
-        rows << cell->level() << ','
-             << body.get_material().von_mises(
-                  body.stress_from_strain(strain[0], dilatation, c))
+        rows << cell->level() << ',' << body.get_material().von_mises(stress[c])
              << ','
              << (eta.size() == body.get_triangulation().n_active_cells()
                    ? eta(c)
@@ -544,8 +532,8 @@ namespace ddcontact
                              1048576.;
       b.set("mesh_memory_mb", Utilities::MPI::max(mesh_mb, MPI_COMM_WORLD));
       b.set("dofs", static_cast<unsigned long>(body->n_dofs()));
-      b.set("min_cell_diameter", body->min_cell_diameter());
-      b.set("strain_energy", body->strain_energy(body->get_solution()));
+      b.set("min_cell_diameter", body->get_mesh().min_cell_diameter());
+      b.set("strain_energy", body->stresses().strain_energy());
       body_list.push_back(b);
     }
     json.set("bodies", body_list);
@@ -559,7 +547,7 @@ namespace ddcontact
         std::find_if(bodies.begin(),
                      bodies.end(),
                      [&](const auto &b) { return b->name() == point.body; });
-      const auto values = (*it)->point_values(point.x, (*it)->get_solution());
+      const auto values = (*it)->stresses().at_point(point.x);
       Json       p      = Json::object();
       p.set("body", point.body);
       p.set("x", json_array({point.x[0], point.x[1]}));

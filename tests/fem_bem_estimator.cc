@@ -149,7 +149,7 @@ namespace
     scaled.estimate(u, samples);
 
     // True errors of the FEM and of the BEM stresses at the same points.
-    const auto sigma_F = body.stress_at_quadrature_points(u);
+    const auto sigma_F = body.stresses(u).at_quadrature_points();
     const auto sigma_B = printed.get_bem().stress_at_quadrature_points(
       body.get_dof_handler(), body.get_mapping(), body.get_cell_quadrature());
     FEValues<2> fe_values(body.get_mapping(),
@@ -172,7 +172,7 @@ namespace
     }
 
     Result r;
-    r.h               = body.min_cell_diameter();
+    r.h               = body.get_mesh().min_cell_diameter();
     r.true_error      = std::sqrt(fem2);
     r.bem_error       = std::sqrt(bem2);
     r.estimate        = printed.global_error();

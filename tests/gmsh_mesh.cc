@@ -217,8 +217,7 @@ namespace
     SymmetricTensor<2, 2> sigma;
     sigma[0][0]    = s;
     double s_error = 0;
-    for (const auto &cell_stress :
-         body.stress_at_quadrature_points(body.get_solution()))
+    for (const auto &cell_stress : body.stresses().at_quadrature_points())
       for (const auto &stress : cell_stress)
         s_error = std::max(s_error, (stress - sigma).norm() / s);
 

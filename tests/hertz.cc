@@ -64,7 +64,7 @@ main(int argc, char **argv)
     const double intercept = (t0 - slope * s1) / s0;
     const double a         = std::sqrt(-intercept / slope);
 
-    const double h = simulation.get_bodies()[0]->min_cell_diameter();
+    const double h = simulation.get_bodies()[0]->get_mesh().min_cell_diameter();
     error_a.push_back(std::abs(a - a_exact) / a_exact);
     error_p0.push_back(std::abs(state.max_pressure - p0_exact) / p0_exact);
     table.add_value("level", level);

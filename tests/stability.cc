@@ -127,13 +127,13 @@ main(int argc, char **argv)
                                 "Output/Points=omega2: 0.005, 0.0075"}));
     const auto   sc = pc->get_dd_solver().contact_state(0);
     const auto   ss = ps->get_dd_solver().contact_state(0);
-    const double uc =
-      pc->get_bodies()[1]
-        ->point_values(Point<2>(0.5, 0.75), pc->get_bodies()[1]->get_solution())
-        .displacement[1];
+    const double uc = pc->get_bodies()[1]
+                        ->stresses()
+                        .at_point(Point<2>(0.5, 0.75))
+                        .displacement[1];
     const double us = ps->get_bodies()[1]
-                        ->point_values(Point<2>(0.005, 0.0075),
-                                       ps->get_bodies()[1]->get_solution())
+                        ->stresses()
+                        .at_point(Point<2>(0.005, 0.0075))
                         .displacement[1];
     std::cout << "paper scene: force " << sc.force_1.norm() << " MPa cm, "
               << ss.force_1.norm() << " N/m; u_2(0.5, 0.75) = " << uc << " cm, "
@@ -287,8 +287,7 @@ main(int argc, char **argv)
       const auto &body = *sim.get_bodies()[1];
       return std::make_pair(
         sim.get_dd_solver().contact_state(0).force_1.norm(),
-        body.point_values(Point<2>(0.5, 0.75), body.get_solution())
-          .displacement[1]);
+        body.stresses().at_point(Point<2>(0.5, 0.75)).displacement[1]);
     };
     const auto ref =
       result(*run(paper,

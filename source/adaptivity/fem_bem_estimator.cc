@@ -56,7 +56,7 @@ namespace ddcontact
     // sigma_B, with the cell quadrature of the FEM (the sigma_B above
     // lives at its points).
     timer.restart();
-    const auto     sigma_F = body.stress_at_quadrature_points(u_fem);
+    const auto     sigma_F = body.stresses(u_fem).at_quadrature_points();
     const auto    &tria    = body.get_triangulation();
     Vector<double> area(tria.n_active_cells());
     local_error.reinit(tria.n_active_cells());

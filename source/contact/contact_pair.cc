@@ -467,8 +467,8 @@ namespace ddcontact
     for (const auto &p : contact_points)
       mean += p.normal;
     mean = (mean.norm() > 0) ? mean / mean.norm() : Tensor<1, 2>({1., 0.});
-    const auto extent_1 = body_1.extent_along(mean);
-    const auto extent_2 = body_2.extent_along(mean);
+    const auto extent_1 = body_1.get_mesh().extent_along(mean);
+    const auto extent_2 = body_2.get_mesh().extent_along(mean);
     thickness_1         = parameters.thickness > 0 ? parameters.thickness
                                                    : extent_1.second - extent_1.first;
     thickness_2         = extent_2.second - extent_2.first;

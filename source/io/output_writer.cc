@@ -20,11 +20,9 @@ namespace ddcontact
     class StressPostprocessor : public DataPostprocessor<dim>
     {
     public:
-      StressPostprocessor(const ElasticBody<dim>    &body,
-                          const std::vector<double> &dilatation)
-        : body(body)
+      StressPostprocessor(const ElasticBody<dim> &body, const Vector<double> &u)
+        : stresses(body, u)
         , material(body.get_material())
-        , dilatation(dilatation)
       {
       }
 
@@ -41,10 +39,8 @@ namespace ddcontact
               strain[i][j] = 0.5 * (inputs.solution_gradients[q][i][j] +
                                     inputs.solution_gradients[q][j][i]);
           // The body's own stress (2), with its reduced dilatation if any.
-          const auto s = body.stress_from_strain(
-            strain,
-            dilatation,
-            inputs.template get_cell<dim>()->active_cell_index());
+          const auto s = stresses.stress(
+            strain, inputs.template get_cell<dim>()->active_cell_index());
           auto &out = computed_quantities[q];
           out(0)    = s[0][0];
           out(1)    = s[1][1];
@@ -67,9 +63,8 @@ namespace ddcontact
       }
 
     private:
-      const ElasticBody<dim>    &body;
-      const Material             material;
-      const std::vector<double> &dilatation;
+      const BodyStresses<dim> stresses;
+      const Material          material;
     };
 
     std::string
@@ -132,8 +127,7 @@ namespace ddcontact
                                displacement_names,
                                DataOut<2>::type_dof_data,
                                interpretation);
-      const auto dilatation = body.reduced_dilatation(*solutions[b]);
-      StressPostprocessor<2> stress(body, dilatation);
+      StressPostprocessor<2> stress(body, *solutions[b]);
       data_out.add_data_vector(*solutions[b], stress);
 
       Vector<double> body_id(n_cells), level(n_cells), process(n_cells);

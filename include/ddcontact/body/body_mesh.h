@@ -1,0 +1,184 @@
+#ifndef ddcontact_body_mesh_h
+#define ddcontact_body_mesh_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/fe/mapping.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <ddcontact/body/boundary_conditions.h>
+#include <ddcontact/parameters.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * The mesh of one body Omega_a: the kind of triangulation, its initial
+   * cells (a subdivided rectangle or a Gmsh file; a .geo is meshed by the
+   * gmsh program), the checks of its size and boundary ids, and its
+   * partition between the processes that solve the body.
+   *
+   * Three kinds of triangulation, decided here and nowhere else:
+   *  - serial (MPI_COMM_SELF): every process that holds the body holds it
+   *    whole;
+   *  - shared (parallel::shared::Triangulation on a communicator of several
+   *    processes): every process keeps every cell, and the subdomain ids
+   *    say which process of the body's group assembles which cell; the
+   *    partition follows every refinement (post-refinement signal);
+   *  - distributed (parallel::distributed::Triangulation, p4est,
+   *    quadrilaterals only): each process keeps its own cells and a ghost
+   *    layer, and p4est repartitions after every refinement.
+   */
+  template <int dim>
+  class BodyMesh
+  {
+  public:
+    /** @p communicator: MPI_COMM_SELF for a serial mesh; with several
+     * processes a shared mesh, or a p4est forest if @p distributed. */
+    BodyMesh(const BodyParameters &parameters,
+             const MPI_Comm        communicator,
+             const bool            distributed);
+
+    ~BodyMesh();
+
+    BodyMesh(const BodyMesh &) = delete;
+    BodyMesh &
+    operator=(const BodyMesh &) = delete;
+
+    /**
+     * Create the initial mesh: the rectangle with boundary ids 0 left,
+     * 1 right, 2 bottom, 3 top, or the Gmsh file (a .geo is meshed into
+     * @p work_directory); then the initial and the box refinement. Each
+     * step is refused, naming its entry, if the mesh would not fit into
+     * the available memory, before its cells are made. Finally every
+     * boundary id named in @p conditions must exist in the mesh.
+     */
+    void
+    make(const BoundaryConditions<dim> &conditions,
+         const std::string             &work_directory);
+
+    /**
+     * The processes (world ranks, ascending) that solve the body and their
+     * communicator (MPI_COMM_NULL on the others; the mesh takes it over and
+     * frees it). A shared mesh is partitioned between the ranks again;
+     * returns whether the group changed.
+     */
+    bool
+    set_process_group(const std::vector<unsigned int> &ranks,
+                      const MPI_Comm                   group_communicator);
+
+    const std::vector<unsigned int> &
+    process_group() const
+    {
+      return group;
+    }
+
+    MPI_Comm
+    group_communicator() const
+    {
+      return group_comm;
+    }
+
+    Triangulation<dim> &
+    triangulation()
+    {
+      return *tria;
+    }
+
+    const Triangulation<dim> &
+    triangulation() const
+    {
+      return *tria;
+    }
+
+    /** The mapping from the reference cells (linear). */
+    const Mapping<dim> &
+    mapping() const
+    {
+      return *cell_mapping;
+    }
+
+    bool
+    is_simplex() const;
+
+    /** Whether the mesh is a p4est forest. */
+    bool
+    is_distributed() const
+    {
+      return distributed;
+    }
+
+    /** Whether the mesh is a shared triangulation partitioned between
+     * processes. */
+    bool
+    is_shared() const;
+
+    /** Whether this process computes the cell's contributions to cell
+     * sums and per-cell fields: every cell on a serial or shared mesh, the
+     * owned cells on a distributed one. */
+    template <typename CellIterator>
+    bool
+    computes(const CellIterator &cell) const
+    {
+      return !distributed || cell->is_locally_owned();
+    }
+
+    /** @p value summed over the processes of a distributed mesh (the
+     * value itself on the other kinds). */
+    double
+    sum(const double value) const;
+
+    /** The smallest cell diameter (all processes' cells). */
+    double
+    min_cell_diameter() const;
+
+    /** The smallest and largest value of x . @p direction over the
+     * vertices of the mesh (all processes' cells). */
+    std::pair<double, double>
+    extent_along(const Tensor<1, dim> &direction) const;
+
+  private:
+    void
+    make_rectangle();
+
+    void
+    read_file(const std::string &work_directory);
+
+    /** The refinement box: cells touching it are refined, Box refinement
+     * times. */
+    void
+    refine_box();
+
+    /** Refuse, naming @p entry of the body's section, a mesh of
+     * @p n_cells cells whose unknowns would not fit into the memory this
+     * machine has available. */
+    void
+    check_size(double n_cells, const std::string &entry) const;
+
+    void
+    check_boundary_ids(const BoundaryConditions<dim> &conditions) const;
+
+    /** Subdomain ids of the cells: the group's ranks, the cells split in
+     * z-order (quadrilaterals) or in the order of the active cells
+     * (triangles). */
+    void
+    partition_between_group();
+
+    const BodyParameters               &parameters;
+    const bool                          distributed;
+    std::unique_ptr<Triangulation<dim>> tria;
+    std::unique_ptr<const Mapping<dim>> cell_mapping;
+    std::vector<unsigned int>           group{0};
+    MPI_Comm                            group_comm = MPI_COMM_NULL;
+  };
+} // namespace ddcontact
+
+#endif

@@ -1,0 +1,88 @@
+#ifndef ddcontact_body_stresses_h
+#define ddcontact_body_stresses_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  template <int dim>
+  class ElasticBody;
+
+  /** Displacement and stress of a body at one point. */
+  template <int dim>
+  struct PointValues
+  {
+    Point<dim>              x;
+    Tensor<1, dim>          displacement;
+    SymmetricTensor<2, dim> stress;
+    double                  von_mises = 0.;
+  };
+
+  /**
+   * The plane-strain stress sigma(u) of (2) of one displacement field u of
+   * a body, and what is computed from it: the stress at the quadrature
+   * points (for the estimator (27)), at the cell centres (for the adapted
+   * meshes' files), at any point, and the elastic energy 1/2 a_a(u, u) of
+   * (11).
+   *
+   * With selective reduced integration (ElasticBody::
+   * reduced_volumetric_integration()) the stress is sigma = lambda (div
+   * u)(x_c) I + 2 mu eps(u), with the dilatation taken at the cell's
+   * reduced point x_c, consistently with the assembled a_a; stress() is the
+   * one place that applies this correction.
+   *
+   * On a distributed mesh each process computes its own cells; sums are
+   * taken over the processes, and per-cell arrays hold zeros elsewhere.
+   */
+  template <int dim>
+  class BodyStresses
+  {
+  public:
+    /** The stresses of @p u (a vector of the body's dofs); the reduced
+     * dilatation of every cell is computed here, once. Both references must
+     * outlive this object. */
+    BodyStresses(const ElasticBody<dim> &body, const Vector<double> &u);
+
+    /** The stress (2) from the strain at a point of the active cell with
+     * index @p cell. */
+    SymmetricTensor<2, dim>
+    stress(const SymmetricTensor<2, dim> &strain,
+           const unsigned int             cell) const;
+
+    /** sigma(u) at every quadrature point of every active cell, indexed
+     * [active_cell_index][q]. */
+    std::vector<std::vector<SymmetricTensor<2, dim>>>
+    at_quadrature_points() const;
+
+    /** sigma(u) at the centre of every active cell, by active_cell_index. */
+    std::vector<SymmetricTensor<2, dim>>
+    at_cell_centres() const;
+
+    /** Displacement, stress and von Mises stress at @p x; throws InputError
+     * naming Output/Points if @p x lies outside the body. */
+    PointValues<dim>
+    at_point(const Point<dim> &x) const;
+
+    /** The elastic energy 1/2 a_a(u, u) of (11), with the quadrature of the
+     * assembly. */
+    double
+    strain_energy() const;
+
+  private:
+    const ElasticBody<dim> &body;
+    const Vector<double>   &u;
+    /** div u at the reduced point of every active cell; empty with full
+     * integration. */
+    std::vector<double> dilatation;
+  };
+} // namespace ddcontact
+
+#endif

@@ -1,0 +1,451 @@
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <ddcontact/body/body_linear_solver.h>
+
+#include <type_traits>
+
+namespace ddcontact
+{
+  namespace
+  {
+    /** Matrix and load of a body solved on this process alone. */
+    struct SerialSystem
+    {
+      using VectorType = Vector<double>;
+
+      template <int dim>
+      void
+      reinit(const DoFHandler<dim>           &dof_handler,
+             const AffineConstraints<double> &constraints)
+      {
+        DynamicSparsityPattern dsp(dof_handler.n_dofs());
+        DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+        sparsity.copy_from(dsp);
+        matrix.reinit(sparsity);
+        load.reinit(dof_handler.n_dofs());
+      }
+
+      void
+      add(const AffineConstraints<double>            &constraints,
+          const FullMatrix<double>                   &cell_matrix,
+          const Vector<double>                       &cell_load,
+          const std::vector<types::global_dof_index> &dof_indices)
+      {
+        constraints.distribute_local_to_global(
+          cell_matrix, cell_load, dof_indices, matrix, load);
+      }
+
+      void
+      compress()
+      {
+      }
+
+      /** l + @p extra, and the solution vector it is solved into. */
+      void
+      right_hand_side(const Vector<double> &extra,
+                      VectorType           &rhs,
+                      VectorType           &x) const
+      {
+        rhs = load;
+        if (extra.size() > 0)
+          rhs += extra;
+        x.reinit(load.size());
+      }
+
+      void
+      to_whole(const VectorType &x, Vector<double> &u) const
+      {
+        u = x;
+      }
+
+      SparsityPattern      sparsity;
+      SparseMatrix<double> matrix;
+      Vector<double>       load;
+    };
+
+    /**
+     * Matrix and load distributed over the processes of the body's group:
+     * each process assembles its own cells (subdomain) into the rows of
+     * its dofs, one contiguous range per process (a partitioned DoFHandler
+     * numbers the dofs subdomain by subdomain), and the solution is
+     * gathered whole on every process of the group.
+     */
+    struct GroupSystem
+    {
+      using VectorType = TrilinosWrappers::MPI::Vector;
+
+      explicit GroupSystem(const MPI_Comm communicator)
+        : communicator(communicator)
+      {
+      }
+
+      template <int dim>
+      void
+      reinit(const DoFHandler<dim>           &dof_handler,
+             const AffineConstraints<double> &constraints)
+      {
+        // The rows of this process's dofs, with the columns its cells
+        // couple them to; entries of other rows are sent to their owners.
+        owned = dof_handler.locally_owned_dofs();
+        AssertThrow(owned.is_contiguous(), ExcInternalError());
+        n_dofs       = dof_handler.n_dofs();
+        range_starts = Utilities::MPI::all_gather(
+          communicator,
+          static_cast<int>(owned.n_elements() ? *owned.begin() : 0));
+        range_sizes = Utilities::MPI::all_gather(
+          communicator, static_cast<int>(owned.n_elements()));
+        IndexSet relevant;
+        DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+        TrilinosWrappers::SparsityPattern sp(
+          owned, owned, relevant, communicator);
+        DoFTools::make_sparsity_pattern(dof_handler, sp, constraints, false);
+        sp.compress();
+        matrix.reinit(sp);
+        load.reinit(owned, communicator);
+      }
+
+      void
+      add(const AffineConstraints<double>            &constraints,
+          const FullMatrix<double>                   &cell_matrix,
+          const Vector<double>                       &cell_load,
+          const std::vector<types::global_dof_index> &dof_indices)
+      {
+        constraints.distribute_local_to_global(
+          cell_matrix, cell_load, dof_indices, matrix, load);
+      }
+
+      void
+      compress()
+      {
+        matrix.compress(VectorOperation::add);
+        load.compress(VectorOperation::add);
+      }
+
+      /** Every process of the group holds the whole @p extra load: it
+       * takes the rows it owns. */
+      void
+      right_hand_side(const Vector<double> &extra,
+                      VectorType           &rhs,
+                      VectorType           &x) const
+      {
+        rhs = load;
+        x.reinit(load);
+        if (extra.size() > 0 && owned.n_elements() > 0)
+          std::transform(rhs.begin(),
+                         rhs.end(),
+                         extra.begin() + *owned.begin(),
+                         rhs.begin(),
+                         std::plus<double>());
+      }
+
+      /** The solution whole on every process of the group. */
+      void
+      to_whole(const VectorType &x, Vector<double> &u) const
+      {
+        u.reinit(n_dofs);
+        const int ierr = MPI_Allgatherv(x.begin(),
+                                        x.locally_owned_size(),
+                                        MPI_DOUBLE,
+                                        u.data(),
+                                        range_sizes.data(),
+                                        range_starts.data(),
+                                        MPI_DOUBLE,
+                                        communicator);
+        AssertThrowMPI(ierr);
+      }
+
+      MPI_Comm                       communicator;
+      IndexSet                       owned;
+      types::global_dof_index        n_dofs = 0;
+      std::vector<int>               range_starts, range_sizes;
+      TrilinosWrappers::SparseMatrix matrix;
+      VectorType                     load;
+    };
+
+    /** What every implementation shares: the system it assembles into. */
+    template <int dim, class System>
+    class SystemSolver : public BodyLinearSolver<dim>
+    {
+    public:
+      SystemSolver(const BodyParameters &parameters, System system)
+        : parameters(parameters)
+        , system(std::move(system))
+      {
+      }
+
+      /** The factorization or preconditioner of the old matrix is released
+       * before the new matrix is made. */
+      void
+      reinit(const DoFHandler<dim>           &dof_handler,
+             const AffineConstraints<double> &constraints) override
+      {
+        release();
+        system.reinit(dof_handler, constraints);
+      }
+
+      void
+      zero() override
+      {
+        system.matrix = 0;
+        system.load   = 0;
+      }
+
+      void
+      add(const AffineConstraints<double>            &constraints,
+          const FullMatrix<double>                   &cell_matrix,
+          const Vector<double>                       &cell_load,
+          const std::vector<types::global_dof_index> &dof_indices) override
+      {
+        system.add(constraints, cell_matrix, cell_load, dof_indices);
+      }
+
+      void
+      compress() override
+      {
+        system.compress();
+      }
+
+      const SparseMatrix<double> &
+      matrix() const override
+      {
+        if constexpr (std::is_same_v<System, SerialSystem>)
+          return system.matrix;
+        else
+          return BodyLinearSolver<dim>::matrix();
+      }
+
+      const Vector<double> &
+      load_vector() const override
+      {
+        if constexpr (std::is_same_v<System, SerialSystem>)
+          return system.load;
+        else
+          return BodyLinearSolver<dim>::load_vector();
+      }
+
+    protected:
+      virtual void
+      release()
+      {
+      }
+
+      const BodyParameters &parameters;
+      System                system;
+    };
+
+    /** UMFPACK on one process. */
+    template <int dim>
+    class SerialDirectSolver : public SystemSolver<dim, SerialSystem>
+    {
+    public:
+      using SystemSolver<dim, SerialSystem>::SystemSolver;
+
+      void
+      factorize(const DoFHandler<dim> &) override
+      {
+        try
+        {
+          direct.initialize(this->system.matrix);
+        }
+        catch (const std::exception &)
+        {
+          // UMFPACK reports a singular or overflowing matrix by an
+          // exception with a stack trace; the user needs the body.
+          throw InputError(this->parameters.section() +
+                           ": the stiffness matrix cannot be factorized "
+                           "(singular, or its entries overflow); check "
+                           "Material/Young's modulus and the Dirichlet "
+                           "conditions");
+        }
+      }
+
+      void
+      solve(const Vector<double> &load, Vector<double> &u) const override
+      {
+        Vector<double> rhs;
+        this->system.right_hand_side(load, rhs, u);
+        direct.vmult(u, rhs);
+      }
+
+    private:
+      SparseDirectUMFPACK direct;
+    };
+
+    /** MUMPS (through Amesos) over the process group. */
+    template <int dim>
+    class GroupDirectSolver : public SystemSolver<dim, GroupSystem>
+    {
+    public:
+      using SystemSolver<dim, GroupSystem>::SystemSolver;
+
+      /** MUMPS frees its factors collectively over the group. */
+      void
+      release() override
+      {
+        direct.reset();
+      }
+
+      void
+      factorize(const DoFHandler<dim> &) override
+      {
+        direct = std::make_unique<TrilinosWrappers::SolverDirect>(
+          control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                         "Amesos_Mumps"));
+        direct->initialize(this->system.matrix);
+      }
+
+      void
+      solve(const Vector<double> &load, Vector<double> &u) const override
+      {
+        GroupSystem::VectorType rhs, x;
+        this->system.right_hand_side(load, rhs, x);
+        direct->solve(x, rhs);
+        this->system.to_whole(x, u);
+      }
+
+    private:
+      mutable SolverControl                                   control;
+      mutable std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
+    };
+
+    /** CG preconditioned by ML's algebraic multigrid, on either system. */
+    template <int dim, class System>
+    class CgAmgSolver : public SystemSolver<dim, System>
+    {
+    public:
+      using SystemSolver<dim, System>::SystemSolver;
+
+      void
+      release() override
+      {
+        amg.clear();
+      }
+
+      void
+      factorize(const DoFHandler<dim> &dof_handler) override
+      {
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic              = true;
+        data.higher_order_elements = (this->parameters.degree > 1);
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        DoFTools::extract_constant_modes(
+          dof_handler, ComponentMask(dim, true), data.constant_modes);
+        amg.initialize(trilinos_matrix(), data);
+      }
+
+      void
+      solve(const Vector<double> &load, Vector<double> &u) const override
+      {
+        typename System::VectorType rhs, x;
+        this->system.right_hand_side(load, rhs, x);
+        SolverControl control(this->parameters.solver_max_iterations,
+                              this->parameters.solver_tolerance *
+                                rhs.l2_norm());
+        SolverCG<typename System::VectorType> cg(control);
+        try
+        {
+          cg.solve(trilinos_matrix(), x, rhs, amg);
+        }
+        catch (const SolverControl::NoConvergence &e)
+        {
+          throw InputError(this->parameters.section() +
+                           "/Solver: cg-amg did not converge in " +
+                           std::to_string(e.last_step) +
+                           " iterations (residual " +
+                           std::to_string(e.last_residual) +
+                           "); raise Max iterations or use Type = direct");
+        }
+        this->system.to_whole(x, u);
+      }
+
+    private:
+      /** The matrix ML works on: the distributed one as it is, a serial
+       * one copied (its SparseMatrix stays for the monolithic solver). */
+      const TrilinosWrappers::SparseMatrix &
+      trilinos_matrix()
+      {
+        if constexpr (std::is_same_v<System, SerialSystem>)
+        {
+          copy.reinit(this->system.matrix);
+          return copy;
+        }
+        else
+          return this->system.matrix;
+      }
+
+      const TrilinosWrappers::SparseMatrix &
+      trilinos_matrix() const
+      {
+        if constexpr (std::is_same_v<System, SerialSystem>)
+          return copy;
+        else
+          return this->system.matrix;
+      }
+
+      TrilinosWrappers::SparseMatrix    copy;
+      TrilinosWrappers::PreconditionAMG amg;
+    };
+  } // namespace
+
+  template <int dim>
+  const SparseMatrix<double> &
+  BodyLinearSolver<dim>::matrix() const
+  {
+    AssertThrow(false,
+                ExcMessage("the matrix of a body solved by a process group "
+                           "is distributed"));
+    static const SparseMatrix<double> none;
+    return none;
+  }
+
+  template <int dim>
+  const Vector<double> &
+  BodyLinearSolver<dim>::load_vector() const
+  {
+    AssertThrow(false,
+                ExcMessage("the load of a body solved by a process group is "
+                           "distributed"));
+    static const Vector<double> none;
+    return none;
+  }
+
+  template <int dim>
+  std::unique_ptr<BodyLinearSolver<dim>>
+  BodyLinearSolver<dim>::create(const BodyParameters &parameters,
+                                const MPI_Comm        group_communicator,
+                                const unsigned int    group_size)
+  {
+    const bool group = group_size > 1;
+    switch (parameters.solver)
+    {
+      case BodySolverType::direct:
+        if (group)
+          return std::make_unique<GroupDirectSolver<dim>>(
+            parameters, GroupSystem(group_communicator));
+        return std::make_unique<SerialDirectSolver<dim>>(parameters,
+                                                         SerialSystem());
+      case BodySolverType::cg_amg:
+        if (group)
+          return std::make_unique<CgAmgSolver<dim, GroupSystem>>(
+            parameters, GroupSystem(group_communicator));
+        return std::make_unique<CgAmgSolver<dim, SerialSystem>>(parameters,
+                                                                SerialSystem());
+    }
+    AssertThrow(false, ExcInternalError());
+    return nullptr;
+  }
+
+  template class BodyLinearSolver<2>;
+} // namespace ddcontact

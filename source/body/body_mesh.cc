@@ -1,0 +1,536 @@
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <ddcontact/body/body_mesh.h>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <thread>
+
+namespace ddcontact
+{
+  namespace
+  {
+    /** Seconds gmsh may take for one .geo: DDCONTACT_GMSH_TIMEOUT, or 120. */
+    double
+    gmsh_time_limit()
+    {
+      const char *value = std::getenv("DDCONTACT_GMSH_TIMEOUT");
+      if (value == nullptr)
+        return 120.;
+      char        *end     = nullptr;
+      const double seconds = std::strtod(value, &end);
+      if (end == value || *end != '\0' || !(seconds > 0) ||
+          !std::isfinite(seconds))
+        throw InputError(std::string("DDCONTACT_GMSH_TIMEOUT: '") + value +
+                         "' is not a positive number of seconds");
+      return seconds;
+    }
+
+    /**
+     * Run @p arguments (the program first, found on PATH) with its output
+     * and errors in @p log, without a shell, so that no character of a
+     * file name is ever interpreted. Returns the exit status, -1 if the
+     * program could not be started or ended by a signal, -2 if it ran
+     * longer than @p seconds (then it is killed).
+     */
+    int
+    run_without_shell(const std::vector<std::string> &arguments,
+                      const std::string              &log,
+                      const double                    seconds)
+    {
+      std::vector<char *> argv;
+      for (const auto &a : arguments)
+        argv.push_back(const_cast<char *>(a.c_str()));
+      argv.push_back(nullptr);
+
+      posix_spawn_file_actions_t actions;
+      posix_spawn_file_actions_init(&actions);
+      posix_spawn_file_actions_addopen(
+        &actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      posix_spawn_file_actions_adddup2(&actions, 1, 2);
+      pid_t     pid = 0;
+      const int failed =
+        posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+      posix_spawn_file_actions_destroy(&actions);
+      if (failed != 0)
+        return -1;
+
+      const auto start  = std::chrono::steady_clock::now();
+      int        status = 0;
+      while (waitpid(pid, &status, WNOHANG) == 0)
+      {
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                          start)
+              .count() > seconds)
+        {
+          kill(pid, SIGKILL);
+          waitpid(pid, &status, 0);
+          return -2;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+      return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+
+    /** What this process may allocate, in bytes: MemAvailable of
+     * /proc/meminfo (without swapping), or less under an address-space
+     * limit (ulimit -v; half of it, since the libraries reserve address
+     * space they never touch); 0 if neither can be read. */
+    double
+    available_memory()
+    {
+      double        available = 0;
+      std::ifstream meminfo("/proc/meminfo");
+      std::string   key;
+      double        kb = 0;
+      while (meminfo >> key >> kb)
+      {
+        if (key == "MemAvailable:")
+        {
+          available = kb * 1024.;
+          break;
+        }
+        meminfo.ignore(256, '\n');
+      }
+      rlimit limit;
+      if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+      {
+        const double allowed = 0.5 * static_cast<double>(limit.rlim_cur);
+        available = (available > 0) ? std::min(available, allowed) : allowed;
+      }
+      return available;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  BodyMesh<dim>::check_size(const double       n_cells,
+                            const std::string &entry) const
+  {
+    // Unknowns per cell: 2 components times p^2 nodes per quadrilateral,
+    // about half that per triangle. A body needs about 4 kB per unknown
+    // with the direct solver (measured in Release: 556 MB at 1.3e5 and
+    // 1780 MB at 5.3e5 unknowns, the factorization growing faster than
+    // the unknowns).
+    const double p       = parameters.degree;
+    const double n_dofs  = n_cells * (is_simplex() ? 1. : 2.) * p * p;
+    const double bytes   = 4096. * n_dofs;
+    const double memory  = available_memory();
+    const bool   too_big = n_cells > 1e9 || (memory > 0 && bytes > memory);
+    if (!too_big)
+      return;
+    std::ostringstream s;
+    s << std::setprecision(3) << parameters.section() << "/" << entry
+      << ": the mesh would have about " << n_cells << " cells and " << n_dofs
+      << " unknowns, needing about " << bytes / 1e9
+      << " GB (4 kB per unknown), but " << memory / 1e9
+      << " GB are available; lower it";
+    throw InputError(s.str());
+  }
+
+  template <int dim>
+  void
+  BodyMesh<dim>::read_file(const std::string &work_directory)
+  {
+    const std::string what = parameters.section() + "/Mesh/File";
+    std::string       file = parameters.mesh_file;
+    if (!std::ifstream(file))
+      throw InputError(what + ": mesh file '" + file +
+                       "' does not exist or cannot be read");
+
+    const auto ends_with = [&](const std::string &suffix)
+    {
+      return file.size() >= suffix.size() &&
+             file.compare(file.size() - suffix.size(), suffix.size(), suffix) ==
+               0;
+    };
+
+    if (ends_with(".geo"))
+    {
+      // Mesh the geometry with the gmsh binary, in the legacy ASCII format
+      // that GridIn reads without the Gmsh API.
+      // Under mpirun every process meshes (gmsh is deterministic) into a
+      // file of its own.
+      const std::string rank =
+        Utilities::MPI::job_supports_mpi() &&
+            Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1
+          ? "." +
+              std::to_string(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD))
+          : "";
+      const std::string msh =
+        work_directory + "/" + parameters.name + rank + ".msh";
+      const std::string log =
+        work_directory + "/" + parameters.name + rank + ".gmsh.log";
+      read_bounded_file(file, 16u << 20, what); // size and kind only
+      const double timeout = gmsh_time_limit();
+      const int    status  = run_without_shell(
+        {"gmsh", "-2", "-format", "msh22", "-v", "2", "-o", msh, file},
+        log,
+        timeout);
+      if (status == -2)
+        throw InputError(what + ": gmsh did not finish meshing '" + file +
+                         "' within " + Utilities::to_string(timeout) +
+                         " s (an endless loop in the .geo?); stopped it "
+                         "(the limit is DDCONTACT_GMSH_TIMEOUT)");
+      if (status != 0)
+        throw InputError(what + ": gmsh could not mesh '" + file + "' (see " +
+                         log + ")");
+      file = msh;
+    }
+    else if (!ends_with(".msh"))
+      throw InputError(what + ": '" + file +
+                       "' is neither a Gmsh .msh nor a .geo file");
+
+    // A mesh of 512 MiB has millions of cells: beyond what a body here
+    // can factorize; refuse before reading it (and anything not a file).
+    std::istringstream in(read_bounded_file(file, 512u << 20, what));
+    GridIn<dim>        grid_in;
+    grid_in.attach_triangulation(*tria);
+    try
+    {
+      grid_in.read_msh(in);
+    }
+    catch (const std::exception &e)
+    {
+      throw InputError(what + ": cannot read '" + file + "' as a Gmsh mesh");
+    }
+  }
+
+  template <int dim>
+  void
+  BodyMesh<dim>::make(const BoundaryConditions<dim> &conditions,
+                      const std::string             &work_directory)
+  {
+    tria->clear();
+    if (parameters.mesh_type == "rectangle")
+      make_rectangle();
+    else
+      read_file(work_directory);
+
+    const bool simplex_mesh = tria->all_reference_cells_are_simplex();
+    const bool quad_mesh    = tria->all_reference_cells_are_hyper_cube();
+    if (is_simplex() && !simplex_mesh)
+      throw InputError(parameters.section() +
+                       "/Element/Cell type: 'triangle', but the mesh '" +
+                       parameters.mesh_file + "' holds other cells");
+    if (!is_simplex() && !quad_mesh)
+      throw InputError(parameters.section() +
+                       "/Element/Cell type: 'quadrilateral', but the mesh '" +
+                       parameters.mesh_file +
+                       "' holds other cells (recombine it in Gmsh, or choose "
+                       "triangle)");
+
+    check_size(tria->n_global_active_cells() *
+                 std::pow(4., parameters.initial_refinement),
+               "Mesh/Initial refinement");
+    tria->refine_global(parameters.initial_refinement);
+
+    if (!parameters.refinement_box.empty() && parameters.box_refinement > 0)
+      refine_box();
+    check_boundary_ids(conditions);
+  }
+
+  template <int dim>
+  void
+  BodyMesh<dim>::make_rectangle()
+  {
+    check_size(double(parameters.subdivisions[0]) * parameters.subdivisions[1],
+               "Mesh/Subdivisions");
+    if (is_simplex())
+      GridGenerator::subdivided_hyper_rectangle_with_simplices(
+        *tria,
+        parameters.subdivisions,
+        parameters.corner_1,
+        parameters.corner_2);
+    else
+      GridGenerator::subdivided_hyper_rectangle(*tria,
+                                                parameters.subdivisions,
+                                                parameters.corner_1,
+                                                parameters.corner_2);
+    // Ids 0 left, 1 right, 2 bottom, 3 top (deal.II 9.4 cannot colorize
+    // the simplex variant, so both are labelled here).
+    const double tolerance =
+      1e-10 * parameters.corner_1.distance(parameters.corner_2);
+    for (const auto &face : tria->active_face_iterators())
+      if (face->at_boundary())
+      {
+        const auto c = face->center();
+        if (std::abs(c[0] - parameters.corner_1[0]) < tolerance)
+          face->set_boundary_id(0);
+        else if (std::abs(c[0] - parameters.corner_2[0]) < tolerance)
+          face->set_boundary_id(1);
+        else if (std::abs(c[1] - parameters.corner_1[1]) < tolerance)
+          face->set_boundary_id(2);
+        else
+          face->set_boundary_id(3);
+      }
+  }
+
+  template <int dim>
+  void
+  BodyMesh<dim>::refine_box()
+  {
+    if (is_simplex())
+      throw InputError(parameters.section() +
+                       "/Mesh/Refinement box: local refinement needs "
+                       "quadrilaterals (deal.II 9.4 refines triangles "
+                       "only globally)");
+    const auto      &c = parameters.refinement_box;
+    const Point<dim> lo(c[0], c[1]);
+    const Point<dim> hi(c[2], c[3]);
+    if (parameters.mesh_type == "rectangle")
+    {
+      // Before any cell is made: at step k the cells of size h_k that
+      // touch the box (clipped to the body) are refined, each into four.
+      double cells = tria->n_global_active_cells();
+      for (unsigned int k = 0; k < parameters.box_refinement; ++k)
+      {
+        double flagged = 1;
+        for (unsigned int d = 0; d < 2; ++d)
+        {
+          const double n_across =
+            parameters.subdivisions[d] *
+            std::pow(2., parameters.initial_refinement + k);
+          const double length = parameters.corner_2[d] - parameters.corner_1[d];
+          const double width  = std::min(hi[d], parameters.corner_2[d]) -
+                               std::max(lo[d], parameters.corner_1[d]);
+          flagged *=
+            std::min(n_across, std::max(0., width) / length * n_across + 2);
+        }
+        cells += 3 * flagged;
+      }
+      check_size(cells, "Mesh/Box refinement");
+    }
+    for (unsigned int k = 0; k < parameters.box_refinement; ++k)
+    {
+      unsigned int n_flagged = 0;
+      for (const auto &cell : tria->active_cell_iterators())
+      {
+        // p4est takes the flags of the owned cells.
+        if (!computes(cell))
+          continue;
+        const auto box = cell->bounding_box();
+        if (box.get_boundary_points().first[0] <= hi[0] &&
+            box.get_boundary_points().second[0] >= lo[0] &&
+            box.get_boundary_points().first[1] <= hi[1] &&
+            box.get_boundary_points().second[1] >= lo[1])
+        {
+          cell->set_refine_flag();
+          ++n_flagged;
+        }
+      }
+      // Each flagged cell becomes four (the one-irregularity closure adds
+      // a few more, within the factor of the estimate).
+      check_size(tria->n_global_active_cells() +
+                   3. *
+                     Utilities::MPI::sum(n_flagged, tria->get_communicator()),
+                 "Mesh/Box refinement");
+      tria->execute_coarsening_and_refinement();
+    }
+  }
+
+  template <int dim>
+  void
+  BodyMesh<dim>::check_boundary_ids(
+    const BoundaryConditions<dim> &boundary_conditions) const
+  {
+    const auto ids = tria->get_boundary_ids();
+    const auto check =
+      [&](const types::boundary_id id, const std::string &entry)
+    {
+      if (std::find(ids.begin(), ids.end(), id) == ids.end())
+      {
+        std::string list;
+        for (const auto i : ids)
+          list += (list.empty() ? "" : ", ") + std::to_string(i);
+        throw InputError(parameters.section() + "/Boundary conditions/" +
+                         entry + ": boundary id " + std::to_string(id) +
+                         " does not exist in the mesh (its ids: " + list + ")");
+      }
+    };
+    for (const auto &[id, d] : boundary_conditions.dirichlet)
+      check(id, "Dirichlet");
+    for (const auto &[id, f] : boundary_conditions.neumann)
+      check(id, "Neumann");
+    for (const auto id : boundary_conditions.contact)
+      check(id, "Contact ids");
+  }
+
+  template <int dim>
+  BodyMesh<dim>::BodyMesh(const BodyParameters &parameters,
+                          const MPI_Comm        communicator,
+                          const bool            distributed)
+    : parameters(parameters)
+    , distributed(distributed)
+  {
+    // Mesh smoothing keeps adapted quadrilateral meshes graded; deal.II 9.4
+    // refines triangles only globally and without smoothing.
+    const auto smoothing =
+      is_simplex() ? Triangulation<dim>::none
+                   : Triangulation<dim>::limit_level_difference_at_vertices;
+    AssertThrow(!distributed || !is_simplex(),
+                ExcMessage("p4est meshes hold quadrilaterals only"));
+    if (distributed)
+      // p4est partitions the cells between all processes of the
+      // communicator (z-order of the forest) and again after every
+      // refinement.
+      tria = std::make_unique<parallel::distributed::Triangulation<dim>>(
+        communicator, smoothing);
+    else if (Utilities::MPI::n_mpi_processes(communicator) > 1)
+    {
+      // Every process keeps every cell (no artificial cells); the
+      // subdomain ids say which process of the group assembles a cell.
+      auto shared = std::make_unique<parallel::shared::Triangulation<dim>>(
+        communicator,
+        smoothing,
+        false,
+        parallel::shared::Triangulation<dim>::partition_custom_signal);
+      shared->signals.create.connect([this]() { partition_between_group(); });
+      shared->signals.post_refinement.connect([this]()
+                                              { partition_between_group(); });
+      tria = std::move(shared);
+    }
+    else
+      tria = std::make_unique<Triangulation<dim>>(smoothing);
+
+    if (is_simplex())
+      cell_mapping = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
+    else
+      cell_mapping = std::make_unique<MappingQ<dim>>(1);
+  }
+
+  template <int dim>
+  BodyMesh<dim>::~BodyMesh()
+  {
+    // The body's solver, which uses the group's communicator, is released
+    // before the mesh (ElasticBody declares it after the mesh).
+    if (group_comm != MPI_COMM_NULL)
+      MPI_Comm_free(&group_comm);
+  }
+
+  template <int dim>
+  bool
+  BodyMesh<dim>::is_simplex() const
+  {
+    return parameters.cell_type == "triangle";
+  }
+
+  template <int dim>
+  bool
+  BodyMesh<dim>::is_shared() const
+  {
+    return dynamic_cast<const parallel::shared::Triangulation<dim> *>(
+             tria.get()) != nullptr;
+  }
+
+  template <int dim>
+  void
+  BodyMesh<dim>::partition_between_group()
+  {
+    const unsigned int k = group.size();
+    if (k == 1)
+      for (const auto &cell : tria->active_cell_iterators())
+        cell->set_subdomain_id(group[0]);
+    else
+    {
+      if (is_simplex())
+      {
+        // Equal shares of the active cells in their order.
+        const unsigned int n = tria->n_active_cells();
+        for (const auto &cell : tria->active_cell_iterators())
+          cell->set_subdomain_id(
+            static_cast<std::size_t>(cell->active_cell_index()) * k / n);
+      }
+      else
+        GridTools::partition_triangulation_zorder(k, *tria);
+      for (const auto &cell : tria->active_cell_iterators())
+        cell->set_subdomain_id(group[cell->subdomain_id()]);
+    }
+  }
+
+  template <int dim>
+  bool
+  BodyMesh<dim>::set_process_group(const std::vector<unsigned int> &ranks,
+                                   const MPI_Comm                   comm)
+  {
+    AssertThrow(!ranks.empty(), ExcInternalError());
+    AssertThrow(
+      ranks.size() == 1 || is_shared() || distributed,
+      ExcMessage("a body on several processes needs a partitioned mesh"));
+    // p4est splits the forest between all processes of the mesh's
+    // communicator, which must be the group.
+    AssertThrow(!distributed || ranks.size() == Utilities::MPI::n_mpi_processes(
+                                                  tria->get_communicator()),
+                ExcMessage("a distributed mesh is solved by all processes"));
+    const bool changed = ranks != group;
+    group              = ranks;
+    if (group_comm != MPI_COMM_NULL)
+      MPI_Comm_free(&group_comm);
+    group_comm = comm;
+    if (changed && is_shared())
+      // No cell is flagged: the refinement step only fires the
+      // post-refinement signal, which partitions between the new group.
+      tria->execute_coarsening_and_refinement();
+    return changed;
+  }
+
+  template <int dim>
+  double
+  BodyMesh<dim>::sum(const double value) const
+  {
+    return distributed ? Utilities::MPI::sum(value, tria->get_communicator())
+                       : value;
+  }
+
+  template <int dim>
+  double
+  BodyMesh<dim>::min_cell_diameter() const
+  {
+    double h = std::numeric_limits<double>::max();
+    for (const auto &cell : tria->active_cell_iterators())
+      if (computes(cell))
+        h = std::min(h, cell->diameter(*cell_mapping));
+    return distributed ? Utilities::MPI::min(h, tria->get_communicator()) : h;
+  }
+
+  template <int dim>
+  std::pair<double, double>
+  BodyMesh<dim>::extent_along(const Tensor<1, dim> &direction) const
+  {
+    double lo = std::numeric_limits<double>::max(), hi = -lo;
+    for (const auto &cell : tria->active_cell_iterators())
+      if (computes(cell))
+        for (const unsigned int v : cell->vertex_indices())
+        {
+          lo = std::min(lo, cell->vertex(v) * direction);
+          hi = std::max(hi, cell->vertex(v) * direction);
+        }
+    if (distributed)
+    {
+      lo = Utilities::MPI::min(lo, tria->get_communicator());
+      hi = Utilities::MPI::max(hi, tria->get_communicator());
+    }
+    return {lo, hi};
+  }
+
+  template class BodyMesh<2>;
+} // namespace ddcontact

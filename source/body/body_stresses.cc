@@ -1,0 +1,242 @@
+#include <deal.II/base/mpi_remote_point_evaluation.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
+
+#include <ddcontact/body/body_stresses.h>
+#include <ddcontact/body/elastic_body.h>
+
+#include <array>
+#include <sstream>
+
+namespace ddcontact
+{
+  template <int dim>
+  BodyStresses<dim>::BodyStresses(const ElasticBody<dim> &body,
+                                  const Vector<double>   &u)
+    : body(body)
+    , u(u)
+  {
+    const Quadrature<dim> *reduced = body.get_volumetric_quadrature();
+    if (reduced == nullptr)
+      return;
+    dilatation.assign(body.get_triangulation().n_active_cells(), 0.);
+    FEValues<dim> fe_values(
+      body.get_mapping(), body.get_fe(), *reduced, update_gradients);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<double>              div(reduced->size());
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (body.computes(cell))
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_divergences(u, div);
+        dilatation[cell->active_cell_index()] = div[0];
+      }
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  BodyStresses<dim>::stress(const SymmetricTensor<2, dim> &strain,
+                            const unsigned int             cell) const
+  {
+    const Material &material = body.get_material();
+    auto            s        = material.stress(strain);
+    if (!dilatation.empty())
+      s += material.lambda() * (dilatation[cell] - trace(strain)) *
+           unit_symmetric_tensor<dim>();
+    return s;
+  }
+
+  template <int dim>
+  std::vector<std::vector<SymmetricTensor<2, dim>>>
+  BodyStresses<dim>::at_quadrature_points() const
+  {
+    std::vector<std::vector<SymmetricTensor<2, dim>>> result(
+      body.get_triangulation().n_active_cells());
+    const Quadrature<dim> &quadrature = body.get_cell_quadrature();
+    FEValues<dim>          fe_values(
+      body.get_mapping(), body.get_fe(), quadrature, update_gradients);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (body.computes(cell))
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_symmetric_gradients(u, strain);
+        auto &s = result[cell->active_cell_index()];
+        s.resize(strain.size());
+        for (unsigned int q = 0; q < strain.size(); ++q)
+          s[q] = stress(strain[q], cell->active_cell_index());
+      }
+    return result;
+  }
+
+  template <int dim>
+  std::vector<SymmetricTensor<2, dim>>
+  BodyStresses<dim>::at_cell_centres() const
+  {
+    std::vector<SymmetricTensor<2, dim>> result(
+      body.get_triangulation().n_active_cells());
+    const Quadrature<dim> centre = body.is_simplex()
+                                     ? Quadrature<dim>(QGaussSimplex<dim>(1))
+                                     : Quadrature<dim>(QGauss<dim>(1));
+    FEValues<dim>         fe_values(
+      body.get_mapping(), body.get_fe(), centre, update_gradients);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strain(1);
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (body.computes(cell))
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_symmetric_gradients(u, strain);
+        result[cell->active_cell_index()] =
+          stress(strain[0], cell->active_cell_index());
+      }
+    return result;
+  }
+
+  template <int dim>
+  double
+  BodyStresses<dim>::strain_energy() const
+  {
+    const Material                  &material   = body.get_material();
+    const Quadrature<dim>           &quadrature = body.get_cell_quadrature();
+    FEValues<dim>                    fe_values(body.get_mapping(),
+                            body.get_fe(),
+                            quadrature,
+                            update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
+    const bool                           reduced = !dilatation.empty();
+    double                               energy  = 0;
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (body.computes(cell))
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_symmetric_gradients(u, strain);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          energy += 0.5 *
+                    (reduced ? 2. * material.mu() * (strain[q] * strain[q])
+                             : material.stress(strain[q]) * strain[q]) *
+                    fe_values.JxW(q);
+      }
+    if (reduced)
+    {
+      // The volumetric part on its own (one-point) rule, as assembled.
+      FEValues<dim> fe_reduced(body.get_mapping(),
+                               body.get_fe(),
+                               *body.get_volumetric_quadrature(),
+                               update_JxW_values);
+      for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+        if (body.computes(cell))
+        {
+          fe_reduced.reinit(cell);
+          const double d = dilatation[cell->active_cell_index()];
+          for (const unsigned int q : fe_reduced.quadrature_point_indices())
+            energy += 0.5 * material.lambda() * d * d * fe_reduced.JxW(q);
+        }
+    }
+    return body.get_mesh().sum(energy);
+  }
+
+  template <int dim>
+  PointValues<dim>
+  BodyStresses<dim>::at_point(const Point<dim> &x) const
+  {
+    const auto outside = [&]()
+    {
+      std::ostringstream s;
+      s << "Output/Points: the point (" << x << ") does not lie in body '"
+        << body.name() << "'";
+      return InputError(s.str());
+    };
+    using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
+    const Triangulation<dim> &tria = body.get_triangulation();
+    // Displacement and stress at the unit point @p xi of @p cell.
+    const auto evaluate = [&](const CellIterator &cell, const Point<dim> &xi)
+    {
+      const Quadrature<dim> at_xi(std::vector<Point<dim>>{xi});
+      FEValues<dim>         fe_values(body.get_mapping(),
+                              body.get_fe(),
+                              at_xi,
+                              update_values | update_gradients);
+      fe_values.reinit(cell);
+      const FEValuesExtractors::Vector     displacement(0);
+      std::vector<Tensor<1, dim>>          value(1);
+      std::vector<SymmetricTensor<2, dim>> strain(1);
+      fe_values[displacement].get_function_values(u, value);
+      fe_values[displacement].get_function_symmetric_gradients(u, strain);
+      PointValues<dim> result;
+      result.x            = x;
+      result.displacement = value[0];
+      result.stress       = stress(strain[0], cell->active_cell_index());
+      return result;
+    };
+
+    PointValues<dim> result;
+    if (body.is_mesh_distributed())
+    {
+      // The process owning the cell around x evaluates and sends
+      // (collective over the mesh's processes, which all ask for x).
+      static_assert(dim == 2, "five values: u and the plane stress");
+      using Values = std::array<double, 5>;
+      Utilities::MPI::RemotePointEvaluation<dim> remote(1e-6, true);
+      remote.reinit({x}, tria, body.get_mapping());
+      if (!remote.all_points_found())
+        throw outside();
+      std::vector<Values> found, buffer;
+      remote.template evaluate_and_process<Values>(
+        found,
+        buffer,
+        [&](const ArrayView<Values> &values, const auto &cell_data)
+        {
+          for (unsigned int c = 0; c < cell_data.cells.size(); ++c)
+          {
+            const CellIterator cell(&tria,
+                                    cell_data.cells[c].first,
+                                    cell_data.cells[c].second,
+                                    &body.get_dof_handler());
+            for (unsigned int k = cell_data.reference_point_ptrs[c];
+                 k < cell_data.reference_point_ptrs[c + 1];
+                 ++k)
+            {
+              const auto v =
+                evaluate(cell, cell_data.reference_point_values[k]);
+              values[k] = {{v.displacement[0],
+                            v.displacement[1],
+                            v.stress[0][0],
+                            v.stress[1][1],
+                            v.stress[0][1]}};
+            }
+          }
+        });
+      const Values &v     = found.at(0);
+      result.x            = x;
+      result.displacement = Tensor<1, dim>({v[0], v[1]});
+      result.stress[0][0] = v[2];
+      result.stress[1][1] = v[3];
+      result.stress[0][1] = v[4];
+    }
+    else
+    {
+      // The cache version reports a point outside the mesh by an invalid
+      // iterator instead of an assertion.
+      const GridTools::Cache<dim> cache(tria, body.get_mapping());
+      const auto found = GridTools::find_active_cell_around_point(cache, x);
+      if (found.first.state() != IteratorState::valid)
+        throw outside();
+      result = evaluate(CellIterator(&tria,
+                                     found.first->level(),
+                                     found.first->index(),
+                                     &body.get_dof_handler()),
+                        found.second);
+    }
+    result.von_mises = body.get_material().von_mises(result.stress);
+    return result;
+  }
+
+  template class BodyStresses<2>;
+} // namespace ddcontact
