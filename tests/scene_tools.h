@@ -5,6 +5,7 @@
 #define ddcontact_tests_scene_tools_h
 
 #include <ddcontact/simulation.h>
+#include <ddcontact/solvers/errors.h>
 
 #include "test_tools.h"
 
@@ -57,6 +58,25 @@ namespace ddcontact
       all.insert(all.end(), defaults.begin(), defaults.end());
       return run_scene(
         source_dir + "/prm/paper_two_bodies.prm", all, overrides);
+    }
+
+    /** A run by @p run (a function of the overrides) with the fixed
+     * relaxation (21) at @p gamma, above gamma*, must stop by a
+     * DivergenceError naming Gamma instead of iterating on. */
+    template <typename Run>
+    void
+    check_divergence_reported(const Run         &run,
+                              const std::string &gamma,
+                              const std::string &what)
+    {
+      const std::string message = error_message<DivergenceError>(
+        [&]
+        {
+          run(std::vector<std::string>{"Domain decomposition/Relaxation=fixed",
+                                       "Domain decomposition/Gamma=" + gamma});
+        });
+      std::cout << "gamma = " << gamma << ": " << message << std::endl;
+      check(message_names(message, {"Gamma"}), what);
     }
 
     /** Every face of an active cell borders at most two active cells on its
