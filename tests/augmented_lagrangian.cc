@@ -110,23 +110,20 @@ main(int argc, char **argv)
   //    stops at a residual of 1e-10; 1e-6 leaves room for the condition of
   //    the contact problem (c = 0.05) and the Uzawa loop on each mesh.
   {
-    const std::vector<std::string> scene = {
-      "Output directory=augmented_lagrangian_output",
-      al,
-      "Body omega1/Mesh/Initial refinement=1",
-      "Body omega2/Mesh/Initial refinement=0",
-      "Domain decomposition/Relaxation=anderson",
-      "Domain decomposition/eps_residual=1e-10",
-      "Adaptation/Mode=nested",
-      "Adaptation/Estimator=fem-bem-scaled",
-      "Adaptation/Delta=0.1",
-      "Adaptation/Max level=4"};
-    const auto dd       = run_scene(source_dir + "/prm/paper_two_bodies.prm",
-                              scene,
-                              {"Domain decomposition/Solver=dd"});
-    const auto newton   = run_scene(source_dir + "/prm/paper_two_bodies.prm",
-                                  scene,
-                                  {"Domain decomposition/Solver=monolithic"});
+    const auto run = [&](const std::string &solver)
+    {
+      return run_coarse_paper_scene(source_dir,
+                                    "augmented_lagrangian_output",
+                                    0,
+                                    {al,
+                                     "Adaptation/Mode=nested",
+                                     "Adaptation/Estimator=fem-bem-scaled",
+                                     "Adaptation/Delta=0.1",
+                                     "Adaptation/Max level=4"},
+                                    {"Domain decomposition/Solver=" + solver});
+    };
+    const auto dd       = run("dd");
+    const auto newton   = run("monolithic");
     const auto f_dd     = dd->get_dd_solver().contact_state(0);
     const auto f_newton = newton->get_dd_solver().contact_state(0);
     const auto cells    = [](const Simulation &s)

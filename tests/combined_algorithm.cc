@@ -19,17 +19,15 @@ namespace
   /** The paper's scene on a coarse start mesh (Omega_2: 16 x 4 cells,
    * h = 0.25), adapted by the given overrides. */
   std::unique_ptr<Simulation>
-  run(const std::string &source_dir, std::vector<std::string> overrides)
+  run(const std::string &source_dir, const std::vector<std::string> &overrides)
   {
-    std::vector<std::string> all = {"Output directory=combined_output",
-                                    "Body omega1/Mesh/Initial refinement=1",
-                                    "Body omega2/Mesh/Initial refinement=0",
-                                    "Domain decomposition/Relaxation=anderson",
-                                    "Domain decomposition/eps_residual=1e-10",
-                                    "Adaptation/Bodies=omega2",
-                                    "Adaptation/Estimator=fem-bem-scaled",
-                                    "Adaptation/Max level=5"};
-    return run_scene(source_dir + "/prm/paper_two_bodies.prm", all, overrides);
+    return run_coarse_paper_scene(source_dir,
+                                  "combined_output",
+                                  0,
+                                  {"Adaptation/Bodies=omega2",
+                                   "Adaptation/Estimator=fem-bem-scaled",
+                                   "Adaptation/Max level=5"},
+                                  overrides);
   }
 
   double

@@ -10,6 +10,8 @@
 
 #include <ddcontact/body/elastic_body.h>
 
+#include "test_tools.h"
+
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -19,6 +21,7 @@
 #include <string>
 
 using namespace ddcontact;
+using namespace ddcontact::testing;
 
 namespace
 {
@@ -127,10 +130,9 @@ namespace
    * Every boundary face against expected_id(), on the mesh as read and once
    * more after a global refinement (the children must inherit the ids).
    */
-  unsigned int
+  void
   check_boundary_ids(Triangulation<2> &tria, const std::string &what)
   {
-    unsigned int failures = 0;
     for (unsigned int round = 0; round < 2; ++round)
     {
       std::map<types::boundary_id, unsigned int> n_faces;
@@ -148,19 +150,19 @@ namespace
             ++n_wrong;
           }
         }
-      std::cout << what << (round == 0 ? ", as read" : ", refined once") << ": "
-                << tria.n_active_cells() << " cells, boundary faces";
+      const std::string label =
+        what + (round == 0 ? ", as read" : ", refined once");
+      std::cout << label << ": " << tria.n_active_cells()
+                << " cells, boundary faces";
       for (const auto &[id, n] : n_faces)
         std::cout << " [id " << id << ": " << n << "]";
-      const bool ok = n_wrong == 0 && n_faces.size() == 4;
-      std::cout << ", " << n_wrong << " with a wrong id"
-                << (ok ? "  ok" : "  FAIL") << std::endl;
-      if (!ok)
-        ++failures;
+      std::cout << std::endl;
+      check(n_wrong == 0 && n_faces.size() == 4,
+            label + ": four boundary ids, " + std::to_string(n_wrong) +
+              " faces with a wrong one");
       if (round == 0)
         tria.refine_global(1);
     }
-    return failures;
   }
 
   BodyParameters
@@ -186,7 +188,7 @@ namespace
    * linear, so every element reproduces it up to round-off (1e-10
    * relative: these systems have condition numbers ~1e3-1e4).
    */
-  unsigned int
+  void
   check_uniaxial_tension(const std::string &name,
                          const std::string &file,
                          const std::string &cell_type)
@@ -221,49 +223,37 @@ namespace
       for (const auto &stress : cell_stress)
         s_error = std::max(s_error, (stress - sigma).norm() / s);
 
-    const bool ok = u_error < 1e-10 && s_error < 1e-10;
-    std::cout << file << ", " << cell_type
+    const std::string label = file + ", " + cell_type;
+    std::cout << label
               << ": uniaxial tension (Dirichlet on 14, traction on 12), "
-              << body.get_triangulation().n_active_cells()
-              << " cells, max nodal error " << u_error << ", max stress error "
-              << s_error << (ok ? "  ok" : "  FAIL") << std::endl;
-    return ok ? 0 : 1;
+              << body.get_triangulation().n_active_cells() << " cells"
+              << std::endl;
+    check(label + ": max nodal error", u_error, 1e-10);
+    check(label + ": max stress error", s_error, 1e-10);
   }
 
   /** A boundary condition on a tag the file does not have must be an
    * InputError from make_mesh() that names the entry and the id. */
-  unsigned int
+  void
   check_missing_tag(const std::string &file,
                     const std::string &cell_type,
                     const std::string &dirichlet,
                     const std::string &neumann,
                     const std::string &expected_message)
   {
-    BodyParameters p = body_parameters("missing_tag", file, cell_type);
-    p.dirichlet      = dirichlet;
-    p.neumann        = neumann;
-    std::string message;
-    try
-    {
-      ElasticBody<2> body(p, Constants());
-      body.make_mesh(".");
-      message = "(no error)";
-    }
-    catch (const InputError &e)
-    {
-      message = e.what();
-    }
-    catch (const std::exception &e)
-    {
-      message = std::string("(not an InputError) ") + e.what();
-    }
-    const bool ok = message.find(expected_message) != std::string::npos &&
-                    message.rfind("(", 0) != 0;
+    BodyParameters p          = body_parameters("missing_tag", file, cell_type);
+    p.dirichlet               = dirichlet;
+    p.neumann                 = neumann;
+    const std::string message = error_message<InputError>(
+      [&]
+      {
+        ElasticBody<2> body(p, Constants());
+        body.make_mesh(".");
+      });
     std::cout << "Dirichlet '" << dirichlet << "', Neumann '" << neumann
-              << "' on " << file << ": " << message
-              << (ok ? "  ok" : "  FAIL (expected '" + expected_message + "')")
-              << std::endl;
-    return ok ? 0 : 1;
+              << "' on " << file << ": " << message << std::endl;
+    check(message_names(message, {expected_message}),
+          "an InputError '" + expected_message + "'");
   }
 } // namespace
 
@@ -280,7 +270,6 @@ main(int argc, char **argv)
   write_msh(msh, 6, 3);
   write_geo(geo);
 
-  unsigned int failures = 0;
   try
   {
     for (const auto &[file, cell_type] :
@@ -292,32 +281,26 @@ main(int argc, char **argv)
       p.neumann        = "11: 0; 0 | 12: 0; 0 | 13: 0; 0";
       ElasticBody<2> body(p, Constants());
       body.make_mesh(".");
-      failures +=
-        check_boundary_ids(body.get_triangulation(), file + ", " + cell_type);
+      check_boundary_ids(body.get_triangulation(), file + ", " + cell_type);
     }
 
-    failures +=
-      check_uniaxial_tension("gmsh_mesh_tension_quads", msh, "quadrilateral");
-    failures +=
-      check_uniaxial_tension("gmsh_mesh_tension_triangles", geo, "triangle");
+    check_uniaxial_tension("gmsh_mesh_tension_quads", msh, "quadrilateral");
+    check_uniaxial_tension("gmsh_mesh_tension_triangles", geo, "triangle");
 
-    failures += check_missing_tag(msh,
-                                  "quadrilateral",
-                                  "14: xy: 0; 0",
-                                  "15: 1; 0",
-                                  "Neumann: boundary id 15 does not exist");
-    failures += check_missing_tag(geo,
-                                  "triangle",
-                                  "14: xy: 0; 0 | 16: y: 0; 0",
-                                  "12: 1; 0",
-                                  "Dirichlet: boundary id 16 does not exist");
+    check_missing_tag(msh,
+                      "quadrilateral",
+                      "14: xy: 0; 0",
+                      "15: 1; 0",
+                      "Neumann: boundary id 15 does not exist");
+    check_missing_tag(geo,
+                      "triangle",
+                      "14: xy: 0; 0 | 16: y: 0; 0",
+                      "12: 1; 0",
+                      "Dirichlet: boundary id 16 does not exist");
   }
   catch (const std::exception &e)
   {
-    std::cout << "FAIL: unexpected exception: " << e.what() << std::endl;
-    ++failures;
+    check(false, std::string("unexpected exception: ") + e.what());
   }
-
-  std::cout << (failures ? "\nFAILED" : "\nall ok") << std::endl;
-  return failures ? 1 : 0;
+  return report();
 }

@@ -28,14 +28,11 @@ namespace
       const std::string &owners,
       const std::string &mesh = "shared")
   {
-    return run_scene(
-      source_dir + "/prm/paper_two_bodies.prm",
-      {"Output directory=mpi_adaptive_output",
-       "Body omega1/Mesh/Initial refinement=1",
-       "Body omega2/Mesh/Initial refinement=0",
-       "Domain decomposition/Relaxation=anderson",
-       "Domain decomposition/eps_residual=1e-10",
-       "Adaptation/Mode=combined",
+    return run_coarse_paper_scene(
+      source_dir,
+      "mpi_adaptive_output",
+      0,
+      {"Adaptation/Mode=combined",
        "Adaptation/Estimator=fem-bem-scaled",
        "Adaptation/Delta=0.1",
        "Adaptation/Max level=4"},
@@ -62,8 +59,8 @@ main(int argc, char **argv)
   const bool root = Utilities::MPI::this_mpi_process(world) == 0;
   if (Utilities::MPI::n_mpi_processes(world) != 2)
   {
-    std::cerr << "run this test with mpirun -np 2" << std::endl;
-    return 1;
+    check(false, "run this test with mpirun -np 2");
+    return report();
   }
   // Only the first process prints; every process checks (a failure on
   // either fails the test through the exit code mpirun reports).

@@ -9,11 +9,14 @@
 
 #include <deal.II/base/function_parser.h>
 
+#include "test_tools.h"
+
 #include <iomanip>
 #include <iostream>
 #include <sstream>
 
 using namespace ddcontact;
+using namespace ddcontact::testing;
 
 int
 main(int argc, char **argv)
@@ -40,7 +43,6 @@ main(int argc, char **argv)
     {"g11", g11}, {"g12", g12}, {"g21", g21}, {"g22", g22}};
   const std::string u = "g11*x + g12*y; g21*x + g22*y";
 
-  int failures = 0;
   for (const std::string cell_type : {"quadrilateral", "triangle"})
     for (const unsigned int degree : {1u, 2u})
     {
@@ -100,20 +102,13 @@ main(int argc, char **argv)
         if (!line.entries.empty())
           ++hanging;
 
-      const bool ok = u_error < 1e-10 && s_error < 1e-10;
-      std::cout << cell_type << " degree " << degree << ": "
-                << tria.n_active_cells() << " cells, " << hanging
-                << " hanging-node constraints, max nodal error " << u_error
-                << ", max stress error " << s_error << (ok ? "  ok" : "  FAIL")
-                << std::endl;
-      if (!ok)
-        ++failures;
-      if (cell_type == "quadrilateral" && hanging == 0)
-      {
-        std::cout << "  FAIL: the quadrilateral mesh has no hanging node"
-                  << std::endl;
-        ++failures;
-      }
+      const std::string label = cell_type + " degree " + std::to_string(degree);
+      std::cout << label << ": " << tria.n_active_cells() << " cells, "
+                << hanging << " hanging-node constraints" << std::endl;
+      check(label + ": max nodal error", u_error, 1e-10);
+      check(label + ": max stress error", s_error, 1e-10);
+      if (cell_type == "quadrilateral")
+        check(hanging > 0, label + ": the mesh has hanging nodes");
     }
-  return failures ? 1 : 0;
+  return report();
 }

@@ -1,9 +1,11 @@
 // Helpers for the tests that run whole scenes: a run of a scene file with
-// overrides, quiet on the screen, and the one-irregularity of a mesh.
+// overrides, quiet on the screen, the paper's scene made quick, and the
+// one-irregularity of a mesh.
 #ifndef ddcontact_tests_scene_tools_h
 #define ddcontact_tests_scene_tools_h
 
 #include <ddcontact/simulation.h>
+#include <ddcontact/solvers/errors.h>
 
 #include "test_tools.h"
 
@@ -32,6 +34,51 @@ namespace ddcontact
       simulation->run();
       return simulation;
     }
+    /**
+     * Run the paper's scene (prm/paper_two_bodies.prm) on coarse meshes,
+     * into @p output_directory: Omega_1 refined once instead of twice,
+     * Omega_2 @p omega2_refinement times, and the Anderson relaxation to a
+     * residual of 1e-10, converged far below what the tests compare. Then
+     * the entries @p defaults and @p overrides, as run_scene() takes them.
+     */
+    inline std::unique_ptr<Simulation>
+    run_coarse_paper_scene(const std::string              &source_dir,
+                           const std::string              &output_directory,
+                           const unsigned int              omega2_refinement,
+                           const std::vector<std::string> &defaults,
+                           const std::vector<std::string> &overrides)
+    {
+      std::vector<std::string> all = {
+        "Output directory=" + output_directory,
+        "Body omega1/Mesh/Initial refinement=1",
+        "Body omega2/Mesh/Initial refinement=" +
+          std::to_string(omega2_refinement),
+        "Domain decomposition/Relaxation=anderson",
+        "Domain decomposition/eps_residual=1e-10"};
+      all.insert(all.end(), defaults.begin(), defaults.end());
+      return run_scene(
+        source_dir + "/prm/paper_two_bodies.prm", all, overrides);
+    }
+
+    /** A run by @p run (a function of the overrides) with the fixed
+     * relaxation (21) at @p gamma, above gamma*, must stop by a
+     * DivergenceError naming Gamma instead of iterating on. */
+    template <typename Run>
+    void
+    check_divergence_reported(const Run         &run,
+                              const std::string &gamma,
+                              const std::string &what)
+    {
+      const std::string message = error_message<DivergenceError>(
+        [&]
+        {
+          run(std::vector<std::string>{"Domain decomposition/Relaxation=fixed",
+                                       "Domain decomposition/Gamma=" + gamma});
+        });
+      std::cout << "gamma = " << gamma << ": " << message << std::endl;
+      check(message_names(message, {"Gamma"}), what);
+    }
+
     /** Every face of an active cell borders at most two active cells on its
      * other side: a refined neighbour face has two children, both leaves. */
     inline bool

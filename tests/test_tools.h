@@ -1,12 +1,13 @@
 // Helpers shared by the test programs: a checklist that counts failures,
-// relative differences and convergence rates (scene_tools.h adds runs of
-// scene files).
+// relative differences, convergence rates and the messages of expected
+// errors (scene_tools.h adds runs of scene files).
 #ifndef ddcontact_tests_test_tools_h
 #define ddcontact_tests_test_tools_h
 
 #include <deal.II/base/convergence_table.h>
 
 #include <cmath>
+#include <exception>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -55,6 +56,47 @@ namespace ddcontact
     {
       std::cout << (failures == 0 ? "PASSED" : "FAILED") << std::endl;
       return failures == 0 ? 0 : 1;
+    }
+
+    /** What error_message() puts before the message of an exception of
+     * another type than the expected one. */
+    inline const std::string unexpected_error = "(not the expected error) ";
+
+    /** The message of the @p Error that @p f throws, empty if @p f returns
+     * normally. Any other exception gives its message behind
+     * unexpected_error, so that a check with message_names() fails and
+     * the output says why, instead of the program ending there. */
+    template <typename Error, typename F>
+    std::string
+    error_message(const F &f)
+    {
+      try
+      {
+        f();
+      }
+      catch (const Error &e)
+      {
+        return e.what();
+      }
+      catch (const std::exception &e)
+      {
+        return unexpected_error + e.what();
+      }
+      return "";
+    }
+
+    /** Whether @p message, from error_message(), is one of the expected
+     * error and contains each of @p fragments. */
+    inline bool
+    message_names(const std::string              &message,
+                  const std::vector<std::string> &fragments)
+    {
+      if (message.empty() || message.rfind(unexpected_error, 0) == 0)
+        return false;
+      for (const auto &f : fragments)
+        if (message.find(f) == std::string::npos)
+          return false;
+      return true;
     }
 
     /** The mean convergence rate over the last two refinements of a
