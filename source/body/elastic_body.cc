@@ -63,10 +63,10 @@ namespace ddcontact
     // Mesh smoothing keeps adapted quadrilateral meshes graded; deal.II 9.4
     // refines triangles only globally and without smoothing.
     const auto smoothing =
-      parameters.cell_type == "triangle"
+      parameters.cell_type == CellType::triangle
         ? Triangulation<dim>::none
         : Triangulation<dim>::limit_level_difference_at_vertices;
-    AssertThrow(!mesh_distributed || parameters.cell_type != "triangle",
+    AssertThrow(!mesh_distributed || parameters.cell_type != CellType::triangle,
                 ExcMessage("p4est meshes hold quadrilaterals only"));
     if (mesh_distributed)
       // p4est partitions the cells between all processes of the
@@ -105,7 +105,7 @@ namespace ddcontact
       fe              = std::make_unique<FESystem<dim>>(FE_Q<dim>(p), dim);
       mapping         = std::make_unique<MappingQ<dim>>(1);
       cell_quadrature = std::make_unique<QGauss<dim>>(p + 1);
-      if (parameters.volumetric_integration == "reduced")
+      if (parameters.volumetric_integration == VolumetricIntegration::reduced)
         volumetric_quadrature = std::make_unique<QGauss<dim>>(p);
     }
     face_quadrature = std::make_unique<QGauss<dim - 1>>(p + 1);
@@ -408,7 +408,7 @@ namespace ddcontact
   ElasticBody<dim>::make_mesh(const std::string &work_directory)
   {
     triangulation->clear();
-    if (parameters.mesh_type == "rectangle")
+    if (parameters.mesh_type == MeshType::rectangle)
     {
       check_mesh_size(double(parameters.subdivisions[0]) *
                         parameters.subdivisions[1],
@@ -473,7 +473,7 @@ namespace ddcontact
       const auto      &c = parameters.refinement_box;
       const Point<dim> lo(c[0], c[1]);
       const Point<dim> hi(c[2], c[3]);
-      if (parameters.mesh_type == "rectangle")
+      if (parameters.mesh_type == MeshType::rectangle)
       {
         // Before any cell is made: at step k the cells of size h_k that
         // touch the box (clipped to the body) are refined, each into four.

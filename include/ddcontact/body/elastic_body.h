@@ -294,7 +294,7 @@ namespace ddcontact
     bool
     is_simplex() const
     {
-      return parameters.cell_type == "triangle";
+      return parameters.cell_type == CellType::triangle;
     }
 
     Vector<double> &
