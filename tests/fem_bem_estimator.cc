@@ -144,7 +144,8 @@ namespace
     Vector<double> u;
     body.solve(load, u);
 
-    FemBemEstimator printed(body, "printed"), scaled(body, "scaled");
+    FemBemEstimator printed(body, EstimatorType::fem_bem),
+      scaled(body, EstimatorType::fem_bem_scaled);
     printed.estimate(u, samples);
     scaled.estimate(u, samples);
 

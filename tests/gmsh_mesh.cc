@@ -172,9 +172,9 @@ namespace
   {
     BodyParameters p;
     p.name                    = name;
-    p.mesh_type               = "file";
+    p.mesh_type               = MeshType::file;
     p.mesh_file               = file;
-    p.cell_type               = cell_type;
+    p.cell_type               = parse_selection<CellType>(cell_type);
     p.material.youngs_modulus = 2.1e5;
     p.material.poisson_ratio  = 0.3;
     return p;

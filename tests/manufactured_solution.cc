@@ -192,7 +192,7 @@ namespace
   {
     BodyParameters p;
     p.name         = "manufactured";
-    p.cell_type    = c.cell_type;
+    p.cell_type    = parse_selection<CellType>(c.cell_type);
     p.degree       = c.degree;
     p.corner_1     = Point<2>(0, 0);
     p.corner_2     = Point<2>(1, 1);

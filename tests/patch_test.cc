@@ -48,7 +48,7 @@ main(int argc, char **argv)
     {
       BodyParameters p;
       p.name         = "patch";
-      p.cell_type    = cell_type;
+      p.cell_type    = parse_selection<CellType>(cell_type);
       p.degree       = degree;
       p.corner_1     = Point<2>(0, 0);
       p.corner_2     = Point<2>(2, 1);

@@ -112,9 +112,8 @@ namespace ddcontact
                        "estimator; use fraction or doerfler with kelly");
     if (parameters.mode != AdaptationMode::uniform &&
         parameters.estimator != EstimatorType::kelly)
-      fem_bem_estimator = std::make_unique<FemBemEstimator>(
-        body,
-        parameters.estimator == EstimatorType::fem_bem ? "printed" : "scaled");
+      fem_bem_estimator =
+        std::make_unique<FemBemEstimator>(body, parameters.estimator);
   }
 
   void

@@ -9,12 +9,12 @@
 namespace ddcontact
 {
   FemBemEstimator::FemBemEstimator(const ElasticBody<2> &body,
-                                   const std::string    &variant)
+                                   const EstimatorType   variant)
     : body(body)
-    , scaled(variant == "scaled")
+    , scaled(variant == EstimatorType::fem_bem_scaled)
     , bem(body.get_material(), body.get_boundary_conditions())
   {
-    Assert(variant == "printed" || variant == "scaled", ExcInternalError());
+    Assert(variant != EstimatorType::kelly, ExcInternalError());
     // The boundary mesh (25) follows the FEM mesh: any refinement makes
     // the BEM stale, and it is rebuilt at the next estimate.
     mesh_changed = body.get_triangulation().signals.any_change.connect(

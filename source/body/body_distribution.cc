@@ -47,10 +47,10 @@ namespace ddcontact
       if (groups_chosen)
         return false;
       groups_chosen = true;
-      if (parameters.mode == "all")
+      if (parameters.mode == BodyOwners::all)
         for (auto &g : groups)
           g = ranks(0, n_procs);
-      else if (parameters.mode == "list")
+      else if (parameters.mode == BodyOwners::list)
         for (unsigned int b = 0; b < bodies.size(); ++b)
           groups[b] = parameters.body_groups.at(bodies[b]->name());
       else
@@ -85,7 +85,7 @@ namespace ddcontact
         bodies[b]->set_process_group(groups[b], group);
       }
     }
-    else if (parameters.mode == "list")
+    else if (parameters.mode == BodyOwners::list)
       for (unsigned int b = 0; b < bodies.size(); ++b)
         groups[b] = parameters.body_groups.at(bodies[b]->name());
     else

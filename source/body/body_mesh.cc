@@ -221,7 +221,7 @@ namespace ddcontact
                       const std::string             &work_directory)
   {
     tria->clear();
-    if (parameters.mesh_type == "rectangle")
+    if (parameters.mesh_type == MeshType::rectangle)
       make_rectangle();
     else
       read_file(work_directory);
@@ -297,7 +297,7 @@ namespace ddcontact
     const auto      &c = parameters.refinement_box;
     const Point<dim> lo(c[0], c[1]);
     const Point<dim> hi(c[2], c[3]);
-    if (parameters.mesh_type == "rectangle")
+    if (parameters.mesh_type == MeshType::rectangle)
     {
       // Before any cell is made: at step k the cells of size h_k that
       // touch the box (clipped to the body) are refined, each into four.
@@ -431,7 +431,7 @@ namespace ddcontact
   bool
   BodyMesh<dim>::is_simplex() const
   {
-    return parameters.cell_type == "triangle";
+    return parameters.cell_type == CellType::triangle;
   }
 
   template <int dim>

@@ -45,7 +45,7 @@ namespace ddcontact
     {
       fe              = std::make_unique<FESystem<dim>>(FE_Q<dim>(p), dim);
       cell_quadrature = std::make_unique<QGauss<dim>>(p + 1);
-      if (parameters.volumetric_integration == "reduced")
+      if (parameters.volumetric_integration == VolumetricIntegration::reduced)
         volumetric_quadrature = std::make_unique<QGauss<dim>>(p);
     }
     face_quadrature = std::make_unique<QGauss<dim - 1>>(p + 1);

@@ -5,6 +5,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <ddcontact/adaptivity/adaptation_parameters.h>
 #include <ddcontact/bem/boundary_element_solver.h>
 #include <ddcontact/body/boundary_conditions.h>
 #include <ddcontact/body/elastic_body.h>
@@ -45,8 +46,9 @@ namespace ddcontact
   class FemBemEstimator
   {
   public:
-    /** @p variant is "printed" or "scaled". */
-    FemBemEstimator(const ElasticBody<2> &body, const std::string &variant);
+    /** @p variant is EstimatorType::fem_bem (printed) or
+     * EstimatorType::fem_bem_scaled (scaled). */
+    FemBemEstimator(const ElasticBody<2> &body, EstimatorType variant);
 
     ~FemBemEstimator();
 

@@ -6,7 +6,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ddcontact/body/elastic_body.h>
-#include <ddcontact/parameters.h>
+#include <ddcontact/body/parallel_parameters.h>
 
 #include <algorithm>
 #include <functional>

@@ -1,0 +1,86 @@
+#ifndef ddcontact_parallel_parameters_h
+#define ddcontact_parallel_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <ddcontact/body/body_parameters.h>
+#include <ddcontact/parameter_tools.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /** Parallel/Body owners: chosen from the bodies' sizes ("auto"), every
+   * body on all processes ("all"), or the groups of a list. */
+  enum class BodyOwners
+  {
+    automatic,
+    all,
+    list
+  };
+
+  /** Parallel/Mesh: how the mesh of a body that several processes solve
+   * is split (ParallelParameters::distributed_mesh()). */
+  enum class MeshPartition
+  {
+    automatic,
+    shared,
+    distributed
+  };
+
+  DDCONTACT_DECLARE_SELECTION(BodyOwners)
+  DDCONTACT_DECLARE_SELECTION(MeshPartition)
+
+  /**
+   * Runs on several MPI processes, in the subsection "Parallel": which
+   * processes solve which body (BodyDistribution).
+   */
+  struct ParallelParameters
+  {
+    /** "auto", "all" or a list (the groups below). */
+    BodyOwners mode = BodyOwners::automatic;
+    /** With mode list: the processes (world ranks, ascending) that solve
+     * every body. */
+    std::map<std::string, std::vector<unsigned int>> body_groups;
+    /** "auto", "shared" or "distributed": how the mesh of a body that
+     * several processes solve is split (see distributed_mesh()). */
+    MeshPartition mesh = MeshPartition::automatic;
+
+    /**
+     * Whether the bodies' meshes are partitioned over process groups
+     * (parallel::shared::Triangulation on MPI_COMM_WORLD, a distributed
+     * matrix and solver on every group with more than one process): with
+     * "all", with a list in which a body has several processes, and with
+     * "auto" when there are more processes than bodies. Otherwise every
+     * body is solved whole on one process (or there is one process).
+     */
+    bool
+    process_groups(unsigned int n_processes, unsigned int n_bodies) const;
+
+    /**
+     * Whether @p body gets a parallel::distributed::Triangulation (p4est):
+     * each process then keeps only its own cells and a ghost layer, so
+     * the mesh memory shrinks with the processes. That needs a body of
+     * quadrilaterals solved by every process ("all", or a list giving it
+     * every process: the p4est forest lives on MPI_COMM_WORLD). "auto"
+     * takes it wherever it is possible, "shared" never.
+     */
+    bool
+    distributed_mesh(const BodyParameters &body,
+                     unsigned int          n_processes) const;
+
+    static void
+    declare(ParameterHandler &prm);
+
+    /** Checks the names against @p body_names and the processes against
+     * the size of MPI_COMM_WORLD. */
+    void
+    parse(ParameterHandler &prm, const std::vector<std::string> &body_names);
+  };
+} // namespace ddcontact
+
+#endif

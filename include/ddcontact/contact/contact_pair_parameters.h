@@ -1,0 +1,57 @@
+#ifndef ddcontact_contact_pair_parameters_h
+#define ddcontact_contact_pair_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <ddcontact/parameter_tools.h>
+
+#include <string>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /** Contact pair/Gap type: f_n from an expression, or the distance to
+   * the orthogonal projection on S_2. */
+  enum class GapType
+  {
+    expression,
+    geometric
+  };
+
+  /** Contact pair/Penalty type: theta = c H / E_1, or theta itself. */
+  enum class PenaltyType
+  {
+    relative,
+    absolute
+  };
+
+  DDCONTACT_DECLARE_SELECTION(GapType)
+  DDCONTACT_DECLARE_SELECTION(PenaltyType)
+
+  /**
+   * A contact pair: zone S_1 (boundary id of body 1, where the contact
+   * integral is computed) facing S_2 (boundary id of body 2). Declared in
+   * "Contact pair <name>", one per name listed in "Contact pairs".
+   */
+  struct ContactPairParameters
+  {
+    std::string  name;
+    std::string  body_1, body_2;
+    unsigned int boundary_id_1 = 0, boundary_id_2 = 0;
+    GapType      gap_type       = GapType::expression;
+    std::string  gap_expression = "0";
+    PenaltyType  penalty_type   = PenaltyType::relative;
+    double       penalty        = 0.05; // c, or theta itself
+    double       thickness      = 0;    // H; 0: from body 1's mesh
+    unsigned int n_gauss        = 3;    // Gauss points per piece
+
+    static void
+    declare(ParameterHandler &prm);
+
+    void
+    parse(ParameterHandler &prm);
+  };
+} // namespace ddcontact
+
+#endif

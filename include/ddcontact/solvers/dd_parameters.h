@@ -1,0 +1,88 @@
+#ifndef ddcontact_dd_parameters_h
+#define ddcontact_dd_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <ddcontact/parameter_tools.h>
+
+#include <string>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /** Domain decomposition/Solver: the DD (20)-(21), or the monolithic
+   * semismooth Newton method on (16). */
+  enum class ContactSolverType
+  {
+    dd,
+    monolithic
+  };
+
+  /** Domain decomposition/Relaxation: the paper's fixed gamma of (21),
+   * the optimal fixed gamma estimated at the start ("auto"), Aitken or
+   * Anderson. */
+  enum class RelaxationType
+  {
+    fixed,
+    automatic,
+    aitken,
+    anderson
+  };
+
+  /** Domain decomposition/Stopping test. */
+  enum class StoppingTest
+  {
+    residual, // u~^{k+1} - u^k on S
+    paper,    // the paper's increment test with eps_u
+    both      // either
+  };
+
+  /** Domain decomposition/Initial guess. */
+  enum class InitialGuess
+  {
+    zero,
+    elastic_layer // "winkler"
+  };
+
+  DDCONTACT_DECLARE_SELECTION(ContactSolverType)
+  DDCONTACT_DECLARE_SELECTION(RelaxationType)
+  DDCONTACT_DECLARE_SELECTION(StoppingTest)
+  DDCONTACT_DECLARE_SELECTION(InitialGuess)
+
+  /** The entry value of a relaxation ("fixed", "auto", ...), as
+   * summary.json and the messages write it. */
+  std::string
+  to_string(RelaxationType value);
+
+  /**
+   * The domain decomposition (20)-(21) and its stopping tests, in the
+   * subsection "Domain decomposition".
+   */
+  struct DDParameters
+  {
+    ContactSolverType solver         = ContactSolverType::dd;
+    RelaxationType    relaxation     = RelaxationType::fixed;
+    double            gamma          = 0.02; // gamma of (21)
+    unsigned int      anderson_depth = 8;
+    StoppingTest      stopping       = StoppingTest::residual;
+    double            eps_u          = 1.5e-3; // the paper's increment test
+    double            eps_residual   = 1e-8;   // test on u~^{k+1} - u^k
+    unsigned int      max_iterations = 5000;
+    InitialGuess      initial_guess  = InitialGuess::elastic_layer;
+    bool              augmented_lagrangian  = false;
+    double            al_tolerance          = 1e-3; // penetration / approach
+    unsigned int      al_max_updates        = 30;
+    bool              write_every_iteration = false;
+    bool              print_every_iteration = false; // Output/Verbosity = full
+    unsigned int      n_newton              = 50;
+
+    static void
+    declare(ParameterHandler &prm);
+
+    void
+    parse(ParameterHandler &prm);
+  };
+} // namespace ddcontact
+
+#endif

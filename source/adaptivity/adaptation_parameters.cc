@@ -1,0 +1,118 @@
+#include <ddcontact/adaptivity/adaptation_parameters.h>
+
+namespace ddcontact
+{
+  DDCONTACT_SELECTION(AdaptationMode,
+                      {"none", AdaptationMode::none},
+                      {"combined", AdaptationMode::combined},
+                      {"nested", AdaptationMode::nested},
+                      {"uniform", AdaptationMode::uniform})
+  DDCONTACT_SELECTION(EstimatorType,
+                      {"fem-bem", EstimatorType::fem_bem},
+                      {"fem-bem-scaled", EstimatorType::fem_bem_scaled},
+                      {"kelly", EstimatorType::kelly})
+  DDCONTACT_SELECTION(MarkingType,
+                      {"threshold", MarkingType::threshold},
+                      {"fraction", MarkingType::fraction},
+                      {"doerfler", MarkingType::doerfler})
+
+  std::string
+  to_string(const AdaptationMode value)
+  {
+    return selection_name(value);
+  }
+
+  std::string
+  to_string(const EstimatorType value)
+  {
+    return selection_name(value);
+  }
+
+  std::string
+  to_string(const MarkingType value)
+  {
+    return selection_name(value);
+  }
+
+  void
+  AdaptationParameters::declare(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Mode",
+      "none",
+      selection_pattern<AdaptationMode>(),
+      "none: the meshes stay as built; combined: the paper's algorithm "
+      "(Fig. 2), one DD step (20)-(21) then one adaptation step per cycle, "
+      "until the DD test holds and no cell is marked; nested: DD to "
+      "convergence on each mesh, then one adaptation step; uniform: DD to "
+      "convergence, then every cell of the adapted bodies is refined "
+      "(Max cycles times).");
+    prm.declare_entry("Bodies",
+                      "",
+                      Patterns::Anything(),
+                      "The adapted bodies (comma separated); the paper "
+                      "adapts Omega_2 only.");
+    prm.declare_entry(
+      "Estimator",
+      "fem-bem",
+      selection_pattern<EstimatorType>(),
+      "fem-bem: eta_FB of (27) as printed, ||sigma_B - sigma_F||_e/|e| over "
+      "||sigma_B||/|Omega|; fem-bem-scaled: the same with square roots of "
+      "the areas (local RMS stress error over global RMS stress, which "
+      "decreases with h); kelly: the Kelly gradient-jump estimator (no "
+      "BEM).");
+    prm.declare_entry("Marking",
+                      "threshold",
+                      selection_pattern<MarkingType>(),
+                      "threshold: refine cells with eta > delta (the "
+                      "paper); fraction: the Fraction of cells with the "
+                      "largest eta; doerfler: the fewest cells whose "
+                      "eta^2 sum to Fraction of the total.");
+    prm.declare_entry("Delta",
+                      "0.1",
+                      Patterns::Double(0),
+                      "Threshold delta of (27) (dimensionless).");
+    prm.declare_entry("Fraction",
+                      "0.3",
+                      Patterns::Double(0, 1),
+                      "Fraction for fraction and doerfler marking.");
+    prm.declare_entry("Max cycles",
+                      "50",
+                      Patterns::Integer(0),
+                      "combined: maximum number of adaptation steps; "
+                      "nested and uniform: number of meshes after the "
+                      "first.");
+    prm.declare_entry("Max level",
+                      "10",
+                      Patterns::Integer(0, 30),
+                      "Cells at this refinement level are not refined.");
+    prm.declare_entry("Max cells",
+                      "200000",
+                      Patterns::Integer(1),
+                      "No refinement beyond this many cells per body.");
+    prm.declare_entry("Write every mesh",
+                      "true",
+                      Patterns::Bool(),
+                      "Write VTU (with eta, D_e, d_e, K_e) and the mesh of "
+                      "every adaptation step; otherwise first and last.");
+  }
+
+  void
+  AdaptationParameters::parse(ParameterHandler &prm)
+  {
+    mode             = parse_selection<AdaptationMode>(prm.get("Mode"));
+    bodies           = parsing::split(prm.get("Bodies"), ',');
+    estimator        = parse_selection<EstimatorType>(prm.get("Estimator"));
+    marking          = parse_selection<MarkingType>(prm.get("Marking"));
+    delta            = prm.get_double("Delta");
+    fraction         = prm.get_double("Fraction");
+    max_cycles       = prm.get_integer("Max cycles");
+    max_level        = prm.get_integer("Max level");
+    max_cells        = prm.get_integer("Max cells");
+    write_every_mesh = prm.get_bool("Write every mesh");
+    if (enabled() && bodies.empty())
+      throw InputError("Adaptation/Bodies: Mode = " + to_string(mode) +
+                       " needs at least one adapted body");
+  }
+
+} // namespace ddcontact

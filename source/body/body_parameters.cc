@@ -1,0 +1,345 @@
+#include <deal.II/base/utilities.h>
+
+#include <ddcontact/body/body_parameters.h>
+
+#include <string>
+#include <vector>
+
+namespace ddcontact
+{
+  using parsing::parse_boundary_id;
+  using parsing::parse_double;
+  using parsing::split;
+
+  DDCONTACT_SELECTION(MeshType,
+                      {"rectangle", MeshType::rectangle},
+                      {"file", MeshType::file})
+  DDCONTACT_SELECTION(CellType,
+                      {"quadrilateral", CellType::quadrilateral},
+                      {"triangle", CellType::triangle})
+  DDCONTACT_SELECTION(VolumetricIntegration,
+                      {"full", VolumetricIntegration::full},
+                      {"reduced", VolumetricIntegration::reduced})
+  DDCONTACT_SELECTION(BodySolverType,
+                      {"direct", BodySolverType::direct},
+                      {"cg-amg", BodySolverType::cg_amg})
+
+  BoundaryConditions<2>
+  make_boundary_conditions(const BodyParameters &body,
+                           const Constants      &constants)
+  {
+    BoundaryConditions<2> bc;
+    const std::string     section = body.section() + "/";
+
+    for (const auto &item : split(body.dirichlet, '|'))
+    {
+      const std::string what = section + "Dirichlet";
+      const auto        c1   = item.find(':');
+      const auto c2 = (c1 == std::string::npos) ? c1 : item.find(':', c1 + 1);
+      if (c2 == std::string::npos)
+        throw InputError(what + ": '" + item +
+                         "' is not 'id: components: expr_x; expr_y'");
+      const auto id         = parse_boundary_id(item.substr(0, c1), what);
+      const auto components = Utilities::trim(item.substr(c1 + 1, c2 - c1 - 1));
+      if (components != "x" && components != "y" && components != "xy")
+        throw InputError(what + ": components '" + components +
+                         "' must be x, y or xy");
+      if (bc.dirichlet.count(id))
+        throw InputError(what + ": boundary id " + std::to_string(id) +
+                         " appears twice");
+      DirichletCondition<2> d;
+      d.mask = ComponentMask(
+        std::vector<bool>{components.find('x') != std::string::npos,
+                          components.find('y') != std::string::npos});
+      d.displacement   = make_function(item.substr(c2 + 1), 2, constants, what);
+      bc.dirichlet[id] = d;
+    }
+
+    for (const auto &item : split(body.neumann, '|'))
+    {
+      const std::string what = section + "Neumann";
+      const auto        c1   = item.find(':');
+      if (c1 == std::string::npos)
+        throw InputError(what + ": '" + item + "' is not 'id: expr_x; expr_y'");
+      const auto id = parse_boundary_id(item.substr(0, c1), what);
+      if (bc.neumann.count(id) || bc.dirichlet.count(id))
+        throw InputError(what + ": boundary id " + std::to_string(id) +
+                         " already has a boundary condition");
+      bc.neumann[id] = make_function(item.substr(c1 + 1), 2, constants, what);
+    }
+
+    for (const auto &item : split(body.contact_ids, ','))
+    {
+      const std::string what = section + "Contact ids";
+      const auto        id   = parse_boundary_id(item, what);
+      if (bc.neumann.count(id) || bc.dirichlet.count(id))
+        throw InputError(what + ": boundary id " + std::to_string(id) +
+                         " already has a Dirichlet or Neumann condition");
+      bc.contact.insert(id);
+    }
+
+    if (!Utilities::trim(body.body_force).empty())
+      bc.body_force =
+        make_function(body.body_force, 2, constants, section + "Body force");
+
+    // A body without any prescribed displacement can move rigidly: its
+    // stiffness matrix is singular and the body problem (20) has no
+    // unique solution.
+    if (bc.dirichlet.empty())
+      throw InputError(section +
+                       "Dirichlet: the body has no Dirichlet boundary, so its "
+                       "stiffness is singular; prescribe a displacement on at "
+                       "least one boundary id");
+    bool has_x = false, has_y = false;
+    for (const auto &[id, d] : bc.dirichlet)
+    {
+      has_x = has_x || d.mask[0];
+      has_y = has_y || d.mask[1];
+    }
+    if (!(has_x && has_y))
+      throw InputError(
+        section + "Dirichlet: only the " + (has_x ? "x" : "y") +
+        " component is prescribed anywhere, so the body can "
+        "slide rigidly; prescribe the other component somewhere");
+    return bc;
+  }
+
+  void
+  BodyParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    {
+      prm.declare_entry(
+        "Type",
+        "rectangle",
+        selection_pattern<MeshType>(),
+        "rectangle: a subdivided rectangle with boundary ids "
+        "0 (left), 1 (right), 2 (bottom), 3 (top); file: a Gmsh "
+        "mesh (.msh, or .geo meshed by the gmsh binary) whose "
+        "physical curve tags become boundary ids.");
+      prm.declare_entry(
+        "Corner 1",
+        "0, 0",
+        Patterns::Anything(),
+        "Lower left corner of the rectangle (x1, x2) [length].");
+      prm.declare_entry(
+        "Corner 2",
+        "1, 1",
+        Patterns::Anything(),
+        "Upper right corner of the rectangle (x1, x2) [length].");
+      prm.declare_entry("Subdivisions",
+                        "1, 1",
+                        Patterns::List(Patterns::Integer(1), 2, 2),
+                        "Cells of the rectangle in x1 and x2.");
+      prm.declare_entry("File",
+                        "",
+                        Patterns::Anything(),
+                        "Gmsh file (.msh or .geo), relative to the parameter "
+                        "file's directory or absolute.");
+      prm.declare_entry("Initial refinement",
+                        "0",
+                        Patterns::Integer(0, 20),
+                        "Number of global refinements of the initial mesh.");
+      prm.declare_entry("Refinement box",
+                        "",
+                        Patterns::Anything(),
+                        "'x0, y0, x1, y1': cells that touch this box are "
+                        "refined Box refinement more times after the global "
+                        "refinement (quadrilaterals; hanging nodes).");
+      prm.declare_entry(
+        "Box refinement",
+        "0",
+        Patterns::Integer(0, 20),
+        "Number of refinements of the cells in Refinement box.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Element");
+    {
+      prm.declare_entry("Cell type",
+                        "quadrilateral",
+                        selection_pattern<CellType>(),
+                        "quadrilateral: FE_Q with hanging-node constraints; "
+                        "triangle: FE_SimplexP (a rectangle is split into "
+                        "triangles; a Gmsh file must hold triangles).");
+      prm.declare_entry("Degree",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Polynomial degree of the displacement (1 or 2).");
+      prm.declare_entry(
+        "Volumetric integration",
+        "full",
+        selection_pattern<VolumetricIntegration>(),
+        "full: the bilinear form a_a (11) with (p+1)^2 Gauss points; "
+        "reduced: its volumetric part lambda div u div v with one Gauss "
+        "point per cell (selective reduced integration, B-bar on "
+        "parallelograms), which removes the volumetric locking of Q1 as "
+        "nu -> 1/2. Quadrilaterals of degree 1 only (Q2 locks far less).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry(
+        "Young's modulus", "2.1e5", Patterns::Double(), "E [stress], > 0.");
+      prm.declare_entry("Poisson's ratio",
+                        "0.3",
+                        Patterns::Double(),
+                        "nu, in (-1, 0.5) (plane strain).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    {
+      prm.declare_entry("Dirichlet",
+                        "",
+                        Patterns::Anything(),
+                        "Prescribed displacements (5) (Gamma_u): 'id: "
+                        "components: expr_x; expr_y | id: ...' with "
+                        "components x, y or xy; expressions in x, y and the "
+                        "scene's constants [length].");
+      prm.declare_entry("Neumann",
+                        "",
+                        Patterns::Anything(),
+                        "Prescribed tractions p (6) (Gamma_p): 'id: expr_x; "
+                        "expr_y | ...' [stress]. Ids with no condition are "
+                        "traction free.");
+      prm.declare_entry("Contact ids",
+                        "",
+                        Patterns::List(Patterns::Integer(0, 254)),
+                        "Boundary ids that form the possible contact zone S "
+                        "(comma separated).");
+      prm.declare_entry("Body force",
+                        "",
+                        Patterns::Anything(),
+                        "Body force 'expr_x; expr_y' [force/volume]; empty "
+                        "for none.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Solver");
+    {
+      prm.declare_entry("Type",
+                        "direct",
+                        selection_pattern<BodySolverType>(),
+                        "direct: UMFPACK factorization, computed once per "
+                        "mesh and reused for every right-hand side; cg-amg: "
+                        "conjugate gradients with Trilinos ML AMG (large "
+                        "meshes).");
+      prm.declare_entry("Tolerance",
+                        "1e-12",
+                        Patterns::Double(0),
+                        "Relative residual tolerance of cg-amg.");
+      prm.declare_entry("Max iterations",
+                        "10000",
+                        Patterns::Integer(1),
+                        "Iteration limit of cg-amg.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  BodyParameters::parse(ParameterHandler &prm)
+  {
+    const std::string section = this->section() + "/";
+    prm.enter_subsection("Mesh");
+    {
+      mesh_type = parse_selection<MeshType>(prm.get("Type"));
+      corner_1  = parse_point(prm.get("Corner 1"), section + "Mesh/Corner 1");
+      corner_2  = parse_point(prm.get("Corner 2"), section + "Mesh/Corner 2");
+      const auto n = Utilities::string_to_int(
+        Utilities::split_string_list(prm.get("Subdivisions")));
+      subdivisions       = {static_cast<unsigned int>(n[0]),
+                            static_cast<unsigned int>(n[1])};
+      mesh_file          = prm.get("File");
+      initial_refinement = prm.get_integer("Initial refinement");
+      box_refinement     = prm.get_integer("Box refinement");
+      // The cells these entries would make are checked against the
+      // machine's memory when the mesh is built (ElasticBody::make_mesh).
+      const std::string box = Utilities::trim(prm.get("Refinement box"));
+      refinement_box.clear();
+      for (const auto &c : Utilities::split_string_list(box))
+        refinement_box.push_back(
+          parse_double(c, section + "Mesh/Refinement box"));
+      if (!box.empty() && refinement_box.size() != 4)
+        throw InputError(section + "Mesh/Refinement box: '" + box +
+                         "' is not 'x0, y0, x1, y1'");
+      if (mesh_type == MeshType::rectangle &&
+          !(corner_1[0] < corner_2[0] && corner_1[1] < corner_2[1]))
+        throw InputError(section +
+                         "Mesh/Corner 2: must lie above and to the right of "
+                         "Corner 1");
+      if (mesh_type == MeshType::file && Utilities::trim(mesh_file).empty())
+        throw InputError(section + "Mesh/File: empty, but Mesh/Type = file");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Element");
+    {
+      cell_type              = parse_selection<CellType>(prm.get("Cell type"));
+      degree                 = prm.get_integer("Degree");
+      volumetric_integration = parse_selection<VolumetricIntegration>(
+        prm.get("Volumetric integration"));
+      if (volumetric_integration == VolumetricIntegration::reduced &&
+          !(cell_type == CellType::quadrilateral && degree == 1))
+        throw InputError(section +
+                         "Element/Volumetric integration: reduced needs Cell "
+                         "type = quadrilateral and Degree = 1 (for triangles "
+                         "or degree 2 use full; near nu = 1/2 use Degree = "
+                         "2)");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      material.youngs_modulus = prm.get_double("Young's modulus");
+      material.poisson_ratio  = prm.get_double("Poisson's ratio");
+      // Stiffness entries are E times O(1) factors summed over cells: at
+      // 1e300 they overflow. Any unit system fits within 1e-30..1e30.
+      if (!(material.youngs_modulus >= 1e-30 &&
+            material.youngs_modulus <= 1e30))
+        throw InputError(section + "Material/Young's modulus: E = " +
+                         prm.get("Young's modulus") +
+                         " must be positive and within 1e-30 .. 1e30");
+      if (!(material.poisson_ratio > -1. && material.poisson_ratio < 0.5))
+        throw InputError(section + "Material/Poisson's ratio: nu = " +
+                         prm.get("Poisson's ratio") + " must lie in (-1, 0.5)");
+      // Volumetric locking: with lambda/mu = 2 nu/(1 - 2 nu) >= 100 the
+      // fully integrated linear elements (Q1, P1) can only represent nearly
+      // divergence-free fields by moving almost nothing, and the answer is
+      // silently far too stiff (the contact force of the paper's scene is
+      // 30 % off at nu = 0.499, 200 % at 0.4999, on 4 cells across).
+      const double nu = material.poisson_ratio;
+      if (degree == 1 &&
+          volumetric_integration == VolumetricIntegration::full &&
+          2. * nu / (1. - 2. * nu) >= 100.)
+        throw InputError(
+          section +
+          "Material/Poisson's ratio: nu = " + prm.get("Poisson's ratio") +
+          " makes linear elements lock (lambda/mu >= 100); set Element/"
+          "Degree = 2" +
+          (cell_type == CellType::quadrilateral
+             ? " or Element/Volumetric integration = reduced"
+             : ""));
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    {
+      dirichlet   = prm.get("Dirichlet");
+      neumann     = prm.get("Neumann");
+      contact_ids = prm.get("Contact ids");
+      body_force  = prm.get("Body force");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Solver");
+    {
+      solver                = parse_selection<BodySolverType>(prm.get("Type"));
+      solver_tolerance      = prm.get_double("Tolerance");
+      solver_max_iterations = prm.get_integer("Max iterations");
+    }
+    prm.leave_subsection();
+  }
+
+} // namespace ddcontact

@@ -1,0 +1,86 @@
+#include <deal.II/base/utilities.h>
+
+#include <ddcontact/contact/contact_pair_parameters.h>
+
+namespace ddcontact
+{
+  DDCONTACT_SELECTION(GapType,
+                      {"expression", GapType::expression},
+                      {"geometric", GapType::geometric})
+  DDCONTACT_SELECTION(PenaltyType,
+                      {"relative", PenaltyType::relative},
+                      {"absolute", PenaltyType::absolute})
+
+  void
+  ContactPairParameters::declare(ParameterHandler &prm)
+  {
+    prm.declare_entry("Body 1",
+                      "",
+                      Patterns::Anything(),
+                      "Body whose zone S_1 carries the contact integral.");
+    prm.declare_entry("Boundary id 1",
+                      "0",
+                      Patterns::Integer(0, 254),
+                      "Boundary id of S_1 on body 1.");
+    prm.declare_entry("Body 2", "", Patterns::Anything(), "The opposite body.");
+    prm.declare_entry("Boundary id 2",
+                      "0",
+                      Patterns::Integer(0, 254),
+                      "Boundary id of S_2 on body 2.");
+    prm.declare_entry("Gap type",
+                      "expression",
+                      selection_pattern<GapType>(),
+                      "expression: f_n(x) given below (the paper's scene, "
+                      "both zones on one line); geometric: f_n(x) = (P(x) - "
+                      "x) . n_1, the distance to the orthogonal projection "
+                      "P(x) of x on S_2 (curved surfaces).");
+    prm.declare_entry("Gap",
+                      "0",
+                      Patterns::Anything(),
+                      "Initial normal gap f_n(x) [length], an expression in "
+                      "x, y and the constants (Gap type = expression).");
+    prm.declare_entry("Penalty type",
+                      "relative",
+                      selection_pattern<PenaltyType>(),
+                      "relative: theta = c H / E_1 as in the paper; "
+                      "absolute: theta = Penalty [length/stress].");
+    prm.declare_entry("Penalty",
+                      "0.05",
+                      Patterns::Double(),
+                      "c (relative) or theta (absolute) of the penalty (15); "
+                      "> 0.");
+    prm.declare_entry("Thickness",
+                      "0",
+                      Patterns::Double(0),
+                      "H of theta = c H / E_1 [length]; 0: the extent of "
+                      "body 1 along the contact normal.");
+    prm.declare_entry("Gauss points",
+                      "3",
+                      Patterns::Integer(1, 10),
+                      "Gauss points on each piece of the common refinement "
+                      "of S_1 and S_2.");
+  }
+
+  void
+  ContactPairParameters::parse(ParameterHandler &prm)
+  {
+    const std::string section = "Contact pair " + name + "/";
+    body_1                    = Utilities::trim(prm.get("Body 1"));
+    body_2                    = Utilities::trim(prm.get("Body 2"));
+    boundary_id_1             = prm.get_integer("Boundary id 1");
+    boundary_id_2             = prm.get_integer("Boundary id 2");
+    gap_type                  = parse_selection<GapType>(prm.get("Gap type"));
+    gap_expression            = prm.get("Gap");
+    penalty_type = parse_selection<PenaltyType>(prm.get("Penalty type"));
+    penalty      = prm.get_double("Penalty");
+    thickness    = prm.get_double("Thickness");
+    n_gauss      = prm.get_integer("Gauss points");
+    if (!(penalty > 0.))
+      throw InputError(section + "Penalty: " + prm.get("Penalty") +
+                       " must be positive");
+    if (body_1 == body_2)
+      throw InputError(section + "Body 2: '" + body_2 +
+                       "' is the same body as Body 1");
+  }
+
+} // namespace ddcontact

@@ -1,0 +1,128 @@
+#include <ddcontact/solvers/dd_parameters.h>
+
+namespace ddcontact
+{
+  DDCONTACT_SELECTION(ContactSolverType,
+                      {"dd", ContactSolverType::dd},
+                      {"monolithic", ContactSolverType::monolithic})
+  DDCONTACT_SELECTION(RelaxationType,
+                      {"fixed", RelaxationType::fixed},
+                      {"auto", RelaxationType::automatic},
+                      {"aitken", RelaxationType::aitken},
+                      {"anderson", RelaxationType::anderson})
+  DDCONTACT_SELECTION(StoppingTest,
+                      {"residual", StoppingTest::residual},
+                      {"paper", StoppingTest::paper},
+                      {"both", StoppingTest::both})
+  DDCONTACT_SELECTION(InitialGuess,
+                      {"zero", InitialGuess::zero},
+                      {"winkler", InitialGuess::elastic_layer})
+
+  std::string
+  to_string(const RelaxationType value)
+  {
+    return selection_name(value);
+  }
+
+  void
+  DDParameters::declare(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Solver",
+      "dd",
+      selection_pattern<ContactSolverType>(),
+      "dd: the parallel Neumann domain decomposition (20)-(21); "
+      "monolithic: semismooth Newton on the penalised problem "
+      "(16) for all bodies at once (the reference).");
+    prm.declare_entry("Relaxation",
+                      "fixed",
+                      selection_pattern<RelaxationType>(),
+                      "fixed: u^{k+1} = gamma u~ + (1-gamma) u^k (21); auto: "
+                      "fixed with the optimal gamma estimated from the "
+                      "contact-zone compliance; aitken: "
+                      "dynamic gamma (Aitken's delta^2); anderson: Anderson "
+                      "acceleration of the fixed-point map u^k -> u~^{k+1}.");
+    prm.declare_entry("Gamma",
+                      "0.02",
+                      Patterns::Double(),
+                      "Relaxation gamma of (21), in (0, 1]; the first gamma "
+                      "of aitken and the mixing of anderson.");
+    prm.declare_entry("Anderson depth",
+                      "8",
+                      Patterns::Integer(1, 50),
+                      "Number of previous iterates anderson combines.");
+    prm.declare_entry(
+      "Stopping test",
+      "residual",
+      selection_pattern<StoppingTest>(),
+      "residual: ||u~^{k+1}_n - u^k_n|| <= eps_r ||u~^{k+1}_n|| "
+      "on S; paper: ||u^{k+1}_an - u^k_an|| <= eps_u "
+      "||u^{k+1}_an|| for each body (weaker by a factor "
+      "gamma); both: either.");
+    prm.declare_entry("eps_u",
+                      "1.5e-3",
+                      Patterns::Double(0),
+                      "Tolerance of the paper's increment test.");
+    prm.declare_entry("eps_residual",
+                      "1e-8",
+                      Patterns::Double(0),
+                      "Tolerance of the residual test.");
+    prm.declare_entry("Max iterations",
+                      "5000",
+                      Patterns::Integer(1),
+                      "Maximum number of DD iterations.");
+    prm.declare_entry("Initial guess",
+                      "winkler",
+                      selection_pattern<InitialGuess>(),
+                      "zero, or the elastic-layer (Winkler) model: contact "
+                      "pressure from the contact-free solution with springs "
+                      "E'/H in series with the penalty (replaced by zero "
+                      "when one DD step moves it ten times more than the "
+                      "zero guess, e.g. a plate bending onto a base).");
+    prm.declare_entry("Augmented Lagrangian",
+                      "false",
+                      Patterns::Bool(),
+                      "Outer Uzawa update of the contact pressure, so that "
+                      "the penetration of the penalty goes to zero.");
+    prm.declare_entry("AL tolerance",
+                      "1e-3",
+                      Patterns::Double(0),
+                      "Stop the Uzawa updates when max penetration <= this "
+                      "times the largest normal displacement on S.");
+    prm.declare_entry("AL max updates",
+                      "30",
+                      Patterns::Integer(1),
+                      "Maximum number of Uzawa updates.");
+    prm.declare_entry("Write every iteration",
+                      "false",
+                      Patterns::Bool(),
+                      "Write contact_<pair>_<k>.csv at every iteration.");
+    prm.declare_entry("Max Newton iterations",
+                      "50",
+                      Patterns::Integer(1),
+                      "Iteration limit of the monolithic Newton solver.");
+  }
+
+  void
+  DDParameters::parse(ParameterHandler &prm)
+  {
+    solver         = parse_selection<ContactSolverType>(prm.get("Solver"));
+    relaxation     = parse_selection<RelaxationType>(prm.get("Relaxation"));
+    gamma          = prm.get_double("Gamma");
+    anderson_depth = prm.get_integer("Anderson depth");
+    stopping       = parse_selection<StoppingTest>(prm.get("Stopping test"));
+    eps_u          = prm.get_double("eps_u");
+    eps_residual   = prm.get_double("eps_residual");
+    max_iterations = prm.get_integer("Max iterations");
+    initial_guess  = parse_selection<InitialGuess>(prm.get("Initial guess"));
+    augmented_lagrangian  = prm.get_bool("Augmented Lagrangian");
+    al_tolerance          = prm.get_double("AL tolerance");
+    al_max_updates        = prm.get_integer("AL max updates");
+    write_every_iteration = prm.get_bool("Write every iteration");
+    n_newton              = prm.get_integer("Max Newton iterations");
+    if (!(gamma > 0. && gamma <= 1.))
+      throw InputError("Domain decomposition/Gamma: " + prm.get("Gamma") +
+                       " must lie in (0, 1]");
+  }
+
+} // namespace ddcontact
