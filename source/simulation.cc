@@ -45,7 +45,8 @@ namespace ddcontact
     : parameters(parameters)
     , pcout(screen, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
-    , report(parameters, timer, wall_clock, pcout)
+    // The member copy of the parameters, which outlives the argument.
+    , report(this->parameters, timer, wall_clock, pcout)
     , writes_files(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
   {
   }
