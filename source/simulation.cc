@@ -1,17 +1,9 @@
-#include <deal.II/base/thread_management.h>
-
-#include <deal.II/base/quadrature_lib.h>
-
-#include <deal.II/fe/fe_values.h>
-
 #include <ddcontact/simulation.h>
 #include <ddcontact/solvers/monolithic_solver.h>
 #include <ddcontact/tasks.h>
 #include <ddcontact/version.h>
 
-#include <array>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <iomanip>
 #include <sstream>
@@ -53,8 +45,22 @@ namespace ddcontact
     : parameters(parameters)
     , pcout(screen, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+    // The member copy of the parameters, which outlives the argument.
+    , report(this->parameters, timer, wall_clock, pcout)
     , writes_files(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
   {
+  }
+
+  RunReport::Results
+  Simulation::results() const
+  {
+    return {bodies,
+            *distribution,
+            contact_pairs,
+            dd_solver.get(),
+            adaptations,
+            n_adaptation_steps,
+            n_contact_iterations};
   }
 
   void
@@ -150,7 +156,7 @@ namespace ddcontact
         {
           std::ostringstream suffix;
           suffix << '_' << std::setw(4) << std::setfill('0') << k;
-          write_contact_profiles(suffix.str());
+          report.write_contact_profiles(results(), suffix.str());
         });
   }
 
@@ -185,18 +191,7 @@ namespace ddcontact
         if (body->name() == name)
           adaptations.push_back(
             std::make_unique<AdaptiveRefinement>(*body, parameters.adaptation));
-
-    if (!writes_files)
-      return;
-    statistics = std::make_unique<std::ofstream>(parameters.output_directory +
-                                                 "/statistics.csv");
-    auto &out  = *statistics;
-    out << "cycle,dd_iterations";
-    for (const auto &body : bodies)
-      out << ",cells_" << body->name() << ",dofs_" << body->name();
-    out << ",bem_unknowns,estimated,marked,capped,eta_max,eta_sum,"
-           "relative_error_estimate,dd_residual,dd_increment,contact_force,"
-           "t_dd_s,t_estimate_s,t_refine_s,wall_time_s\n";
+    report.open_statistics(bodies);
   }
 
   unsigned int
@@ -259,106 +254,25 @@ namespace ddcontact
     }
   }
 
+  unsigned int
+  Simulation::mark_cells(const bool may_refine)
+  {
+    unsigned int marked = estimate_and_mark();
+    if (!may_refine && marked > 0)
+    {
+      pcout << "  Adaptation/Max cycles reached: " << marked
+            << " marked cells stay unrefined" << std::endl;
+      marked = 0;
+    }
+    return marked;
+  }
+
   void
   Simulation::output_adaptation_step()
   {
     output_results(n_output_steps);
-    // The adapted meshes with the von Mises stress and eta per cell, for
-    // plots without ParaView (the paper's Figs. 4 and 7). The rows of a
-    // distributed mesh come from all processes, in their order.
-    for (const auto &a : adaptations)
-    {
-      const auto &body = a->get_body();
-      if (!writes_files && !body.is_mesh_distributed())
-        continue;
-      std::ostringstream rows;
-      rows << std::setprecision(8);
-      const auto &eta    = a->indicators();
-      const auto  stress = body.stresses().at_cell_centres();
-      for (const auto &cell : body.get_dof_handler().active_cell_iterators())
-      {
-        if (!body.computes(cell))
-          continue;
-        // Counter-clockwise corners (deal.II numbers those of a
-        // quadrilateral lexicographically; a triangle repeats its last).
-        const std::array<unsigned int, 4> corners =
-          (cell->n_vertices() == 3) ? std::array<unsigned int, 4>{{0, 1, 2, 2}}
-                                    : std::array<unsigned int, 4>{{0, 1, 3, 2}};
-        for (const unsigned int v : corners)
-          rows << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ',';
-        const unsigned int c = cell->active_cell_index();
-        rows << cell->level() << ',' << body.get_material().von_mises(stress[c])
-             << ','
-             << (eta.size() == body.get_triangulation().n_active_cells()
-                   ? eta(c)
-                   : 0.)
-             << '\n';
-      }
-      std::string text = rows.str();
-      if (body.is_mesh_distributed())
-      {
-        const auto pieces = Utilities::MPI::gather(
-          body.get_triangulation().get_communicator(), text, 0);
-        text.clear();
-        for (const auto &piece : pieces)
-          text += piece;
-      }
-      if (!writes_files)
-        continue;
-      std::ostringstream name;
-      name << parameters.output_directory << "/cells_" << body.name() << '-'
-           << std::setw(4) << std::setfill('0') << n_output_steps << ".csv";
-      std::ofstream out(name.str());
-      out << "x0,y0,x1,y1,x2,y2,x3,y3,level,von_mises,eta\n" << text;
-    }
+    report.write_cells(results(), n_output_steps);
     ++n_output_steps;
-  }
-
-  void
-  Simulation::write_statistics_row(const unsigned int marked,
-                                   const bool         estimated)
-  {
-    if (!writes_files)
-      return;
-    auto &out = *statistics;
-    out << std::setprecision(10) << n_adaptation_steps << ','
-        << (dd_solver ? dd_solver->history().size() : 0);
-    for (const auto &body : bodies)
-      out << ',' << body->n_active_cells() << ',' << body->n_dofs();
-    unsigned int bem_unknowns = 0;
-    double       eta_max = 0, eta_sum = 0, error2 = 0, norm2 = 0;
-    for (const auto &a : adaptations)
-    {
-      if (a->fem_bem())
-      {
-        bem_unknowns += a->fem_bem()->bem_unknowns();
-        error2 += std::pow(a->fem_bem()->global_error(), 2);
-        norm2 += std::pow(a->fem_bem()->stress_norm(), 2);
-      }
-      eta_max = std::max(eta_max, a->eta_max());
-      eta_sum += a->eta_sum();
-    }
-    unsigned int capped = 0;
-    for (const auto &a : adaptations)
-      capped += a->n_capped();
-    const IterationRecord last = (dd_solver && !dd_solver->history().empty())
-                                   ? dd_solver->history().back()
-                                   : IterationRecord();
-    const auto sections = timer.get_summary_data(TimerOutput::total_wall_time);
-    const auto seconds  = [&](const std::string &section)
-    {
-      const auto it = sections.find(section);
-      return it == sections.end() ? 0. : it->second;
-    };
-    out << ',' << bem_unknowns << ',' << estimated << ',' << marked << ','
-        << capped << ',' << eta_max << ',' << eta_sum << ','
-        << (norm2 > 0 ? std::sqrt(error2 / norm2) : 0.) << ',' << last.residual
-        << ',' << last.increment << ',' << last.force << ','
-        << seconds("contact solve") + seconds("solve") << ','
-        << seconds("adaptation: estimate and mark") << ','
-        << seconds("adaptation: refine and transfer") << ','
-        << wall_clock.wall_time() << '\n';
-    out.flush();
   }
 
   unsigned int
@@ -370,19 +284,15 @@ namespace ddcontact
     for (unsigned int cycle = 0;; ++cycle)
     {
       n_iterations += solve_on_current_mesh();
-      const bool   last   = (cycle == parameters.adaptation.max_cycles);
-      unsigned int marked = 0;
-      if (!last || parameters.adaptation.mode != AdaptationMode::uniform)
-        marked = estimate_and_mark();
-      if (last && marked > 0)
-      {
-        pcout << "  Adaptation/Max cycles reached: " << marked
-              << " marked cells stay unrefined" << std::endl;
-        marked = 0;
-      }
+      const bool last = (cycle == parameters.adaptation.max_cycles);
+      // The last uniform mesh is not marked at all.
+      const unsigned int marked =
+        (last && parameters.adaptation.mode == AdaptationMode::uniform)
+          ? 0
+          : mark_cells(!last);
       pcout << "  adaptation cycle " << cycle << ": " << marked
             << " cells marked" << std::endl;
-      write_statistics_row(marked, true);
+      report.write_statistics_row(results(), marked, true);
       if (parameters.adaptation.write_every_mesh || marked == 0 || last)
         output_adaptation_step();
       if (marked == 0 || last)
@@ -419,17 +329,11 @@ namespace ddcontact
       if ((frozen || !may_refine) && !converged)
         continue;
 
-      unsigned int marked = estimate_and_mark();
-      if (!may_refine && marked > 0)
-      {
-        pcout << "  Adaptation/Max cycles reached: " << marked
-              << " marked cells stay unrefined" << std::endl;
-        marked = 0;
-      }
+      const unsigned int marked = mark_cells(may_refine);
       pcout << "  cycle " << n_adaptation_steps << " (DD iteration "
             << dd_solver->history().size() << "): " << marked << " cells marked"
             << std::endl;
-      write_statistics_row(marked, true);
+      report.write_statistics_row(results(), marked, true);
       if (parameters.adaptation.write_every_mesh ||
           (marked == 0 && converged) || n_output_steps == 0)
         output_adaptation_step();
@@ -446,40 +350,6 @@ namespace ddcontact
         frozen = true;
     }
     return dd_solver->history().size();
-  }
-
-  void
-  Simulation::write_history() const
-  {
-    if (!writes_files)
-      return;
-    std::ofstream out(parameters.output_directory + "/history.csv");
-    out << "k,residual,increment,gamma,contact_force,active_length,"
-           "max_penetration,time_s\n";
-    out << std::setprecision(10);
-    for (const auto &r : dd_solver->history())
-      out << r.iteration << ',' << r.residual << ',' << r.increment << ','
-          << r.gamma << ',' << r.force << ',' << r.active_length << ','
-          << r.max_penetration << ',' << r.time << '\n';
-  }
-
-  void
-  Simulation::write_contact_profiles(const std::string &suffix) const
-  {
-    if (!writes_files)
-      return;
-    for (unsigned int p = 0; p < contact_pairs.size(); ++p)
-    {
-      const auto    state = dd_solver->contact_state(p);
-      const auto   &pts   = contact_pairs[p]->points();
-      std::ofstream out(parameters.output_directory + "/contact_" +
-                        contact_pairs[p]->name() + suffix + ".csv");
-      out << "x1,x2,pressure,u_1n,u_2n,gap,weight\n" << std::setprecision(12);
-      for (unsigned int q = 0; q < pts.size(); ++q)
-        out << pts[q].x[0] << ',' << pts[q].x[1] << ',' << -state.sigma_n[q]
-            << ',' << state.u_1n[q] << ',' << state.u_2n[q] << ',' << pts[q].gap
-            << ',' << pts[q].JxW << '\n';
-    }
   }
 
   void
@@ -509,162 +379,19 @@ namespace ddcontact
     output_writer->write_step(step, step, body_pointers, solutions, cell_data);
   }
 
-  void
-  Simulation::write_summary(const std::string &status)
+  unsigned int
+  Simulation::solve()
   {
-    std::map<std::string, double> timings_extra; // phases timed elsewhere
-    Json                          json = Json::object();
-    json.set("scene", parameters.scene_name);
-    json.set("status", status);
-
-    Json body_list = Json::array();
-    for (const auto &body : bodies)
+    if (!parameters.adaptation.enabled())
     {
-      Json b = Json::object();
-      b.set("name", body->name());
-      b.set("cells", body->n_active_cells());
-      b.set("distributed_mesh", body->is_mesh_distributed());
-      // What the mesh, its dofs and constraints take on the process that
-      // holds the most of them (a distributed mesh: its share).
-      const double mesh_mb = (body->get_triangulation().memory_consumption() +
-                              body->get_dof_handler().memory_consumption() +
-                              body->get_constraints().memory_consumption()) /
-                             1048576.;
-      b.set("mesh_memory_mb", Utilities::MPI::max(mesh_mb, MPI_COMM_WORLD));
-      b.set("dofs", static_cast<unsigned long>(body->n_dofs()));
-      b.set("min_cell_diameter", body->get_mesh().min_cell_diameter());
-      b.set("strain_energy", body->stresses().strain_energy());
-      body_list.push_back(b);
+      // The fixed meshes of the input.
+      if (!contact_pairs.empty())
+        dd_solver->initialize();
+      return solve_on_current_mesh();
     }
-    json.set("bodies", body_list);
-    json.set("mpi_processes", distribution->n_processes());
-    json.set("body_owners", distribution->describe());
-
-    Json points = Json::array();
-    for (const auto &point : parameters.points)
-    {
-      const auto it =
-        std::find_if(bodies.begin(),
-                     bodies.end(),
-                     [&](const auto &b) { return b->name() == point.body; });
-      const auto values = (*it)->stresses().at_point(point.x);
-      Json       p      = Json::object();
-      p.set("body", point.body);
-      p.set("x", json_array({point.x[0], point.x[1]}));
-      p.set("u", json_array({values.displacement[0], values.displacement[1]}));
-      p.set("stress",
-            json_array(
-              {values.stress[0][0], values.stress[1][1], values.stress[0][1]}));
-      p.set("von_mises", values.von_mises);
-      points.push_back(p);
-      pcout << "  point " << point.body << " (" << point.x << "): u = ("
-            << std::scientific << std::setprecision(6) << values.displacement[0]
-            << ", " << values.displacement[1]
-            << "), von Mises = " << values.von_mises << std::defaultfloat
-            << std::endl;
-    }
-    json.set("points", points);
-
-    if (!contact_pairs.empty())
-    {
-      json.set("dd_iterations", n_contact_iterations);
-      json.set("gamma", parameters.dd.gamma);
-      json.set("relaxation", to_string(parameters.dd.relaxation));
-      json.set("uzawa_updates", dd_solver->n_uzawa_updates());
-      Json thetas  = Json::array();
-      Json contact = Json::array();
-      for (unsigned int p = 0; p < contact_pairs.size(); ++p)
-      {
-        const auto state = dd_solver->contact_state(p);
-        thetas.push_back(contact_pairs[p]->penalty());
-        Json c = Json::object();
-        c.set("pair", contact_pairs[p]->name());
-        Json forces = Json::array();
-        forces.push_back(json_array({state.force_1[0], state.force_1[1]}));
-        forces.push_back(json_array({state.force_2[0], state.force_2[1]}));
-        c.set("force", forces);
-        c.set("max_pressure", state.max_pressure);
-        c.set("contact_length", state.contact_length);
-        c.set("half_width", state.half_width);
-        c.set("max_penetration", state.max_penetration);
-        contact.push_back(c);
-      }
-      json.set("theta", thetas);
-      json.set("contact", contact);
-      if (!dd_solver->history().empty())
-      {
-        const auto &last = dd_solver->history().back();
-        json.set("dd_residual", last.residual);
-        json.set("dd_increment", last.increment);
-      }
-    }
-    if (parameters.adaptation.enabled())
-    {
-      json.set("adaptation_cycles", n_adaptation_steps);
-      unsigned int bem_unknowns = 0;
-      Json         estimator    = Json::object();
-      estimator.set("mode", to_string(parameters.adaptation.mode));
-      estimator.set("type", to_string(parameters.adaptation.estimator));
-      estimator.set("marking", to_string(parameters.adaptation.marking));
-      estimator.set("delta", parameters.adaptation.delta);
-      Json per_body = Json::array();
-      for (const auto &a : adaptations)
-      {
-        Json e = Json::object();
-        e.set("body", a->get_body().name());
-        e.set("eta_max", a->eta_max());
-        e.set("eta_sum", a->eta_sum());
-        e.set("capped_cells", a->n_capped());
-        if (const auto *fb = a->fem_bem())
-        {
-          bem_unknowns += fb->bem_unknowns();
-          e.set("bem_unknowns", fb->bem_unknowns());
-          e.set("stress_error_estimate", fb->global_error());
-          e.set("bem_stress_norm", fb->stress_norm());
-          e.set("relative_error_estimate",
-                fb->stress_norm() > 0 ? fb->global_error() / fb->stress_norm()
-                                      : 0.);
-          const auto &t = fb->timings();
-          timings_extra["BEM setup (assembly, LU)"] += t.bem_setup;
-          timings_extra["BEM solve"] += t.bem_solve;
-          timings_extra["BEM interior stresses"] += t.bem_interior;
-        }
-        per_body.push_back(e);
-      }
-      estimator.set("bodies", per_body);
-      json.set("bem_unknowns", bem_unknowns);
-      json.set("estimator", estimator);
-    }
-    json.set("wall_time_s", wall_clock.wall_time());
-
-    Json timings = Json::object();
-    for (const auto &[section, seconds] :
-         timer.get_summary_data(TimerOutput::total_wall_time))
-      timings.set(section, seconds);
-    for (const auto &[section, seconds] : timings_extra)
-      timings.set(section, seconds);
-    // The body solves and the exchange of their solutions (on process 0;
-    // the exchange includes waiting for the slowest process).
-    timings.set("body solves", distribution->solve_seconds());
-    if (distribution->n_processes() > 1)
-      timings.set("exchange between processes",
-                  distribution->exchange_seconds());
-    json.set("timings", timings);
-
-    // Peak resident memory (VmHWM) of the processes: what a distributed
-    // mesh saves.
-    Utilities::System::MemoryStats memory;
-    Utilities::System::get_memory_stats(memory);
-    const double peak_mb = memory.VmHWM / 1024.;
-    Json         peak    = Json::object();
-    peak.set("largest_process_mb",
-             Utilities::MPI::max(peak_mb, MPI_COMM_WORLD));
-    peak.set("all_processes_mb", Utilities::MPI::sum(peak_mb, MPI_COMM_WORLD));
-    json.set("peak_memory", peak);
-
-    summary_json = json;
-    if (writes_files)
-      json.write_file(parameters.output_directory + "/summary.json");
+    if (parameters.adaptation.mode == AdaptationMode::combined)
+      return solve_combined();
+    return solve_nested();
   }
 
   void
@@ -679,58 +406,40 @@ namespace ddcontact
     setup_bodies();
     if (parameters.adaptation.enabled())
       setup_adaptation();
-    if (parameters.contact_pairs.empty())
-    {
-      if (parameters.adaptation.enabled())
-        solve_nested();
-      else
-      {
-        solve_bodies();
-        output_results(0);
-      }
-      write_summary("completed");
-    }
-    else
-    {
+    if (!parameters.contact_pairs.empty())
       setup_contact();
-      try
-      {
-        if (!parameters.adaptation.enabled())
-        {
-          dd_solver->initialize();
-          n_contact_iterations = solve_contact();
-        }
-        else if (parameters.adaptation.mode == AdaptationMode::combined)
-          n_contact_iterations = solve_combined();
-        else
-          n_contact_iterations = solve_nested();
-      }
-      catch (const DivergenceError &)
+
+    try
+    {
+      n_contact_iterations = solve();
+    }
+    catch (const DivergenceError &)
+    {
+      // What the DD did until it gave up.
+      if (dd_solver)
       {
         n_contact_iterations = dd_solver->history().size();
-        write_history();
-        write_summary("diverged");
-        throw;
+        report.write_history(dd_solver->history());
+        report.write_summary(results(), "diverged");
       }
-      write_history();
-      write_contact_profiles("");
-      for (unsigned int p = 0; p < contact_pairs.size(); ++p)
-      {
-        const auto state = dd_solver->contact_state(p);
-        pcout << std::setprecision(6) << "  contact "
-              << contact_pairs[p]->name() << ": force " << state.force_1.norm()
-              << ", peak pressure " << state.max_pressure << ", half-width "
-              << state.half_width << ", max penetration "
-              << state.max_penetration << std::endl;
-      }
-      if (!parameters.adaptation.enabled())
-        output_results(0);
-      // "converged" only if the augmented Lagrangian met its tolerance too.
-      const std::string shortfall = dd_solver->augmented_lagrangian_shortfall();
-      write_summary(shortfall.empty() ? "converged" : "stalled");
-      if (!shortfall.empty())
-        throw DivergenceError(shortfall);
+      throw;
     }
+
+    std::string status = "completed", shortfall;
+    if (dd_solver)
+    {
+      report.write_history(dd_solver->history());
+      report.write_contact_profiles(results(), "");
+      report.print_contact_states(results());
+      // "converged" only if the augmented Lagrangian met its tolerance too.
+      shortfall = dd_solver->augmented_lagrangian_shortfall();
+      status    = shortfall.empty() ? "converged" : "stalled";
+    }
+    if (!parameters.adaptation.enabled())
+      output_results(0);
+    report.write_summary(results(), status);
+    if (!shortfall.empty())
+      throw DivergenceError(shortfall);
 
     timer.print_summary();
     pcout << "wall time " << std::fixed << std::setprecision(2)

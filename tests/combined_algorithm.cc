@@ -33,8 +33,7 @@ namespace
   double
   u2_at_point(const Simulation &sim)
   {
-    const auto &points = sim.summary().get("points");
-    return points.at(0).get("u").at(1).as_number();
+    return sim.summary().at("points").at(0).at("u").at(1).get<double>();
   }
 } // namespace
 
@@ -64,11 +63,11 @@ main(int argc, char **argv)
     const double u2   = u2_at_point(*sim);
     errors.push_back(std::abs(u2 - u_ref));
     std::cout << "delta = " << delta << ": " << tria.n_active_cells()
-              << " cells, " << json.get("adaptation_cycles").as_number()
-              << " adaptation steps, " << json.get("dd_iterations").as_number()
+              << " cells, " << json.at("adaptation_cycles").get<double>()
+              << " adaptation steps, " << json.at("dd_iterations").get<double>()
               << " DD iterations, u_2 = " << u2 << std::endl;
 
-    check(json.get("adaptation_cycles").as_number() > 0,
+    check(json.at("adaptation_cycles").get<double>() > 0,
           "the mesh was adapted");
     check(one_irregular(tria), "adapted mesh is one-irregular");
 
@@ -78,7 +77,7 @@ main(int argc, char **argv)
     // Neumann junction makes the exact stress singular; most at the
     // contact edges. "At" means within 0.4 (1.6 cells of the start mesh)
     // on S and within 0.3 of the clamped corners.
-    const double a = json.get("contact").at(0).get("half_width").as_number();
+    const double a = json.at("contact").at(0).at("half_width").get<double>();
     int          max_level = 0;
     for (const auto &cell : tria.active_cell_iterators())
       max_level = std::max(max_level, cell->level());
@@ -125,11 +124,11 @@ main(int argc, char **argv)
     check(sim->get_adaptations().size() == 1 &&
             sim->get_adaptations()[0]->fem_bem() == nullptr,
           "Kelly adaptation has no BEM");
-    check(!sim->summary().get("timings").has("BEM setup (assembly, LU)"),
+    check(!sim->summary().at("timings").contains("BEM setup (assembly, LU)"),
           "and no BEM timings");
     const auto plain = run(source_dir, {"Adaptation/Mode=none"});
     check(plain->get_adaptations().empty() &&
-            !plain->summary().has("adaptation_cycles"),
+            !plain->summary().contains("adaptation_cycles"),
           "a scene that does not adapt keeps no estimator");
   }
 

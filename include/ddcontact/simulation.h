@@ -8,12 +8,11 @@
 #include <ddcontact/body/body_distribution.h>
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/contact/contact_pair.h>
-#include <ddcontact/io/json.h>
 #include <ddcontact/io/output_writer.h>
+#include <ddcontact/io/run_report.h>
 #include <ddcontact/parameters.h>
 #include <ddcontact/solvers/neumann_dd_solver.h>
 
-#include <fstream>
 #include <memory>
 #include <vector>
 
@@ -23,8 +22,10 @@ namespace ddcontact
 
   /**
    * The driver of one run of a scene: builds the bodies from the
-   * parameters, solves, reports the requested point values, writes VTU/PVD
-   * for ParaView and summary.json into the output directory.
+   * parameters and solves, on the fixed meshes, by the combined algorithm
+   * of Fig. 2 or by the nested loop; writes VTU/PVD for ParaView, and its
+   * RunReport writes the CSV files and summary.json into the output
+   * directory.
    */
   class Simulation
   {
@@ -40,7 +41,7 @@ namespace ddcontact
     const Json &
     summary() const
     {
-      return summary_json;
+      return report.summary();
     }
 
     const std::vector<std::unique_ptr<ElasticBody<2>>> &
@@ -76,12 +77,21 @@ namespace ddcontact
     }
 
   private:
+    /** What the run has computed so far, for the report. */
+    RunReport::Results
+    results() const;
+
     void
     setup_bodies();
 
     /** One AdaptiveRefinement per adapted body. */
     void
     setup_adaptation();
+
+    /** Solve by the algorithm of Adaptation/Mode (the contact problem or
+     * the body problems alone); returns the number of DD iterations. */
+    unsigned int
+    solve();
 
     /**
      * The combined algorithm of Fig. 2: each cycle does one DD step
@@ -114,18 +124,20 @@ namespace ddcontact
     unsigned int
     estimate_and_mark();
 
+    /** estimate_and_mark(), but marking nothing (and saying so) unless
+     * @p may_refine: the last cycle allowed by Adaptation/Max cycles. */
+    unsigned int
+    mark_cells(bool may_refine);
+
     /** Refine the marked cells, transfer the iterates, rebuild the
      * contact pairs and the DD's vectors. */
     void
     refine_and_transfer();
 
-    /** Write VTU (with the estimator fields) and the adapted meshes. */
+    /** Write VTU (with the estimator fields) and the adapted meshes'
+     * cells_<body>-NNNN.csv. */
     void
     output_adaptation_step();
-
-    /** One row of statistics.csv. */
-    void
-    write_statistics_row(unsigned int marked, bool estimated);
 
     /** Solve every body problem at once (one task per body). */
     void
@@ -142,21 +154,13 @@ namespace ddcontact
     solve_contact();
 
     void
-    write_history() const;
-
-    void
-    write_contact_profiles(const std::string &suffix) const;
-
-    void
     output_results(unsigned int step);
-
-    void
-    write_summary(const std::string &status);
 
     const SceneParameters parameters;
     ConditionalOStream    pcout;
     TimerOutput           timer;
     Timer                 wall_clock;
+    RunReport             report;
 
     std::vector<std::unique_ptr<ElasticBody<2>>> bodies;
     std::unique_ptr<BodyDistribution>            distribution;
@@ -170,8 +174,6 @@ namespace ddcontact
     std::vector<std::unique_ptr<AdaptiveRefinement>> adaptations;
     unsigned int                                     n_adaptation_steps = 0;
     unsigned int                                     n_output_steps     = 0;
-    std::unique_ptr<std::ofstream>                   statistics;
-    Json                                             summary_json;
   };
 } // namespace ddcontact
 

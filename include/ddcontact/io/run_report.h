@@ -1,0 +1,142 @@
+#ifndef ddcontact_io_run_report_h
+#define ddcontact_io_run_report_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <ddcontact/adaptivity/adaptive_refinement.h>
+#include <ddcontact/body/body_distribution.h>
+#include <ddcontact/body/elastic_body.h>
+#include <ddcontact/contact/contact_pair.h>
+#include <ddcontact/io/json.h>
+#include <ddcontact/parameters.h>
+#include <ddcontact/solvers/neumann_dd_solver.h>
+
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * The files of a run besides the VTU output, written into the output
+   * directory from the results the driver (Simulation) passes in:
+   *
+   * - history.csv: one row per DD iteration (20)-(21);
+   * - statistics.csv: one row per adaptation step (mesh sizes, estimator,
+   *   DD state, phase times);
+   * - cells_<body>-NNNN.csv: the adapted meshes with the von Mises stress
+   *   and eta per cell, for plots without ParaView (Figs. 4 and 7);
+   * - contact_<pair>.csv: the contact pressure and displacements at the
+   *   contact points;
+   * - summary.json: the run's numbers (point values, contact forces,
+   *   estimator, timings, memory), also kept for the tests.
+   *
+   * Process 0 writes the files (every process holds all results); the
+   * writers that gather from all processes (write_cells(), write_summary())
+   * are collective and called on every process.
+   */
+  class RunReport
+  {
+  public:
+    /** What a run has computed, as the driver holds it; only read here. */
+    struct Results
+    {
+      const std::vector<std::unique_ptr<ElasticBody<2>>> &bodies;
+      const BodyDistribution                             &distribution;
+      const std::vector<std::unique_ptr<ContactPair>>    &contact_pairs;
+      /** The contact solver; nullptr in a scene without contact. */
+      const NeumannDDSolver                                  *dd_solver;
+      const std::vector<std::unique_ptr<AdaptiveRefinement>> &adaptations;
+      /** Refinement steps done so far. */
+      unsigned int n_adaptation_steps;
+      /** DD iterations of the whole solve. */
+      unsigned int n_contact_iterations;
+    };
+
+    /** The report of a run of @p parameters, timed by @p timer and
+     * @p wall_clock; the point values are also printed on @p pcout. */
+    RunReport(const SceneParameters    &parameters,
+              const TimerOutput        &timer,
+              const Timer              &wall_clock,
+              const ConditionalOStream &pcout);
+
+    /** Open statistics.csv and write its header (a cell and a dof column
+     * per body). */
+    void
+    open_statistics(const std::vector<std::unique_ptr<ElasticBody<2>>> &bodies);
+
+    /** One row of statistics.csv, after an adaptation step that marked
+     * @p marked cells. */
+    void
+    write_statistics_row(const Results &results,
+                         unsigned int   marked,
+                         bool           estimated);
+
+    /** history.csv: one row per DD iteration. */
+    void
+    write_history(const std::vector<IterationRecord> &history) const;
+
+    /** contact_<pair><suffix>.csv for every contact pair. */
+    void
+    write_contact_profiles(const Results     &results,
+                           const std::string &suffix) const;
+
+    /** Force, peak pressure, half-width and penetration of every contact
+     * pair, on the screen. */
+    void
+    print_contact_states(const Results &results) const;
+
+    /** cells_<body>-NNNN.csv (NNNN = @p step) for every adapted body.
+     * Collective over the processes of a distributed mesh. */
+    void
+    write_cells(const Results &results, unsigned int step) const;
+
+    /** Build summary.json with the run's @p status ("completed",
+     * "converged", "stalled", "diverged") and write it. Collective. */
+    void
+    write_summary(const Results &results, const std::string &status);
+
+    /** The summary last written (also for tests). */
+    const Json &
+    summary() const
+    {
+      return summary_json;
+    }
+
+  private:
+    /** Name, size, memory and strain energy of every body. */
+    Json
+    bodies_json(const Results &results) const;
+
+    /** The values at the requested points, also printed on the screen. */
+    Json
+    points_json(const Results &results) const;
+
+    /** DD iterations, penalties and contact forces of every pair. */
+    void
+    add_contact(const Results &results, Json &json) const;
+
+    /** The estimator's settings and results per adapted body. */
+    void
+    add_adaptation(const Results &results, Json &json) const;
+
+    /** Wall time of every phase, the BEM's included. */
+    Json
+    timings_json(const Results &results) const;
+
+    const SceneParameters    &parameters;
+    const TimerOutput        &timer;
+    const Timer              &wall_clock;
+    const ConditionalOStream &pcout;
+    /** Process 0 writes the files. */
+    const bool    writes_files;
+    std::ofstream statistics;
+    Json          summary_json;
+  };
+} // namespace ddcontact
+
+#endif

@@ -1,0 +1,369 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <ddcontact/io/run_report.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace ddcontact
+{
+  RunReport::RunReport(const SceneParameters    &parameters,
+                       const TimerOutput        &timer,
+                       const Timer              &wall_clock,
+                       const ConditionalOStream &pcout)
+    : parameters(parameters)
+    , timer(timer)
+    , wall_clock(wall_clock)
+    , pcout(pcout)
+    , writes_files(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+  {
+  }
+
+  void
+  RunReport::open_statistics(
+    const std::vector<std::unique_ptr<ElasticBody<2>>> &bodies)
+  {
+    if (!writes_files)
+      return;
+    statistics.open(parameters.output_directory + "/statistics.csv");
+    statistics << "cycle,dd_iterations";
+    for (const auto &body : bodies)
+      statistics << ",cells_" << body->name() << ",dofs_" << body->name();
+    statistics << ",bem_unknowns,estimated,marked,capped,eta_max,eta_sum,"
+                  "relative_error_estimate,dd_residual,dd_increment,"
+                  "contact_force,t_dd_s,t_estimate_s,t_refine_s,wall_time_s\n";
+  }
+
+  void
+  RunReport::write_statistics_row(const Results     &results,
+                                  const unsigned int marked,
+                                  const bool         estimated)
+  {
+    if (!writes_files)
+      return;
+    const NeumannDDSolver *dd_solver = results.dd_solver;
+    auto                  &out       = statistics;
+    out << std::setprecision(10) << results.n_adaptation_steps << ','
+        << (dd_solver ? dd_solver->history().size() : 0);
+    for (const auto &body : results.bodies)
+      out << ',' << body->n_active_cells() << ',' << body->n_dofs();
+    unsigned int bem_unknowns = 0, capped = 0;
+    double       eta_max = 0, eta_sum = 0, error2 = 0, norm2 = 0;
+    for (const auto &a : results.adaptations)
+    {
+      if (a->fem_bem())
+      {
+        bem_unknowns += a->fem_bem()->bem_unknowns();
+        error2 += std::pow(a->fem_bem()->global_error(), 2);
+        norm2 += std::pow(a->fem_bem()->stress_norm(), 2);
+      }
+      eta_max = std::max(eta_max, a->eta_max());
+      eta_sum += a->eta_sum();
+      capped += a->n_capped();
+    }
+    const IterationRecord last = (dd_solver && !dd_solver->history().empty())
+                                   ? dd_solver->history().back()
+                                   : IterationRecord();
+    const auto sections = timer.get_summary_data(TimerOutput::total_wall_time);
+    const auto seconds  = [&](const std::string &section)
+    {
+      const auto it = sections.find(section);
+      return it == sections.end() ? 0. : it->second;
+    };
+    // The relative error estimate is that of all adapted bodies together.
+    out << ',' << bem_unknowns << ',' << estimated << ',' << marked << ','
+        << capped << ',' << eta_max << ',' << eta_sum << ','
+        << (norm2 > 0 ? std::sqrt(error2 / norm2) : 0.) << ',' << last.residual
+        << ',' << last.increment << ',' << last.force << ','
+        << seconds("contact solve") + seconds("solve") << ','
+        << seconds("adaptation: estimate and mark") << ','
+        << seconds("adaptation: refine and transfer") << ','
+        << wall_clock.wall_time() << '\n';
+    out.flush();
+  }
+
+  void
+  RunReport::write_history(const std::vector<IterationRecord> &history) const
+  {
+    if (!writes_files)
+      return;
+    std::ofstream out(parameters.output_directory + "/history.csv");
+    out << "k,residual,increment,gamma,contact_force,active_length,"
+           "max_penetration,time_s\n";
+    out << std::setprecision(10);
+    for (const auto &r : history)
+      out << r.iteration << ',' << r.residual << ',' << r.increment << ','
+          << r.gamma << ',' << r.force << ',' << r.active_length << ','
+          << r.max_penetration << ',' << r.time << '\n';
+  }
+
+  void
+  RunReport::write_contact_profiles(const Results     &results,
+                                    const std::string &suffix) const
+  {
+    if (!writes_files)
+      return;
+    for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
+    {
+      const auto    state = results.dd_solver->contact_state(p);
+      const auto   &pair  = *results.contact_pairs[p];
+      const auto   &pts   = pair.points();
+      std::ofstream out(parameters.output_directory + "/contact_" +
+                        pair.name() + suffix + ".csv");
+      out << "x1,x2,pressure,u_1n,u_2n,gap,weight\n" << std::setprecision(12);
+      for (unsigned int q = 0; q < pts.size(); ++q)
+        out << pts[q].x[0] << ',' << pts[q].x[1] << ',' << -state.sigma_n[q]
+            << ',' << state.u_1n[q] << ',' << state.u_2n[q] << ',' << pts[q].gap
+            << ',' << pts[q].JxW << '\n';
+    }
+  }
+
+  void
+  RunReport::print_contact_states(const Results &results) const
+  {
+    for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
+    {
+      const auto state = results.dd_solver->contact_state(p);
+      pcout << std::setprecision(6) << "  contact "
+            << results.contact_pairs[p]->name() << ": force "
+            << state.force_1.norm() << ", peak pressure " << state.max_pressure
+            << ", half-width " << state.half_width << ", max penetration "
+            << state.max_penetration << std::endl;
+    }
+  }
+
+  void
+  RunReport::write_cells(const Results &results, const unsigned int step) const
+  {
+    // The rows of a distributed mesh come from all processes, in their
+    // order.
+    for (const auto &a : results.adaptations)
+    {
+      const auto &body = a->get_body();
+      if (!writes_files && !body.is_mesh_distributed())
+        continue;
+      std::ostringstream rows;
+      rows << std::setprecision(8);
+      // The von Mises stress at the cell's centre.
+      const auto &eta    = a->indicators();
+      const auto  stress = body.stresses().at_cell_centres();
+      for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      {
+        if (!body.computes(cell))
+          continue;
+        // Counter-clockwise corners (deal.II numbers those of a
+        // quadrilateral lexicographically; a triangle repeats its last).
+        const std::array<unsigned int, 4> corners =
+          (cell->n_vertices() == 3) ? std::array<unsigned int, 4>{{0, 1, 2, 2}}
+                                    : std::array<unsigned int, 4>{{0, 1, 3, 2}};
+        for (const unsigned int v : corners)
+          rows << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ',';
+        const unsigned int c = cell->active_cell_index();
+        rows << cell->level() << ',' << body.get_material().von_mises(stress[c])
+             << ','
+             << (eta.size() == body.get_triangulation().n_active_cells()
+                   ? eta(c)
+                   : 0.)
+             << '\n';
+      }
+      std::string text = rows.str();
+      if (body.is_mesh_distributed())
+      {
+        const auto pieces = Utilities::MPI::gather(
+          body.get_triangulation().get_communicator(), text, 0);
+        text.clear();
+        for (const auto &piece : pieces)
+          text += piece;
+      }
+      if (!writes_files)
+        continue;
+      std::ostringstream name;
+      name << parameters.output_directory << "/cells_" << body.name() << '-'
+           << std::setw(4) << std::setfill('0') << step << ".csv";
+      std::ofstream out(name.str());
+      out << "x0,y0,x1,y1,x2,y2,x3,y3,level,von_mises,eta\n" << text;
+    }
+  }
+
+  Json
+  RunReport::bodies_json(const Results &results) const
+  {
+    Json list = Json::array();
+    for (const auto &body : results.bodies)
+    {
+      Json b;
+      b["name"]             = body->name();
+      b["cells"]            = body->n_active_cells();
+      b["distributed_mesh"] = body->is_mesh_distributed();
+      // What the mesh, its dofs and constraints take on the process that
+      // holds the most of them (a distributed mesh: its share).
+      const double mesh_mb = (body->get_triangulation().memory_consumption() +
+                              body->get_dof_handler().memory_consumption() +
+                              body->get_constraints().memory_consumption()) /
+                             1048576.;
+      b["mesh_memory_mb"]    = Utilities::MPI::max(mesh_mb, MPI_COMM_WORLD);
+      b["dofs"]              = body->n_dofs();
+      b["min_cell_diameter"] = body->get_mesh().min_cell_diameter();
+      b["strain_energy"]     = body->stresses().strain_energy();
+      list.push_back(b);
+    }
+    return list;
+  }
+
+  Json
+  RunReport::points_json(const Results &results) const
+  {
+    Json points = Json::array();
+    for (const auto &point : parameters.points)
+    {
+      const auto it =
+        std::find_if(results.bodies.begin(),
+                     results.bodies.end(),
+                     [&](const auto &b) { return b->name() == point.body; });
+      const auto v = (*it)->stresses().at_point(point.x);
+      Json       p;
+      p["body"] = point.body;
+      p["x"]    = Json::array({point.x[0], point.x[1]});
+      p["u"]    = Json::array({v.displacement[0], v.displacement[1]});
+      p["stress"] =
+        Json::array({v.stress[0][0], v.stress[1][1], v.stress[0][1]});
+      p["von_mises"] = v.von_mises;
+      points.push_back(p);
+      pcout << "  point " << point.body << " (" << point.x << "): u = ("
+            << std::scientific << std::setprecision(6) << v.displacement[0]
+            << ", " << v.displacement[1] << "), von Mises = " << v.von_mises
+            << std::defaultfloat << std::endl;
+    }
+    return points;
+  }
+
+  void
+  RunReport::add_contact(const Results &results, Json &json) const
+  {
+    const NeumannDDSolver &dd_solver = *results.dd_solver;
+    json["dd_iterations"]            = results.n_contact_iterations;
+    json["gamma"]                    = parameters.dd.gamma;
+    json["relaxation"]               = to_string(parameters.dd.relaxation);
+    json["uzawa_updates"]            = dd_solver.n_uzawa_updates();
+    Json thetas = Json::array(), contact = Json::array();
+    for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
+    {
+      const auto state = dd_solver.contact_state(p);
+      thetas.push_back(results.contact_pairs[p]->penalty());
+      Json c;
+      c["pair"] = results.contact_pairs[p]->name();
+      c["force"] =
+        Json::array({Json::array({state.force_1[0], state.force_1[1]}),
+                     Json::array({state.force_2[0], state.force_2[1]})});
+      c["max_pressure"]    = state.max_pressure;
+      c["contact_length"]  = state.contact_length;
+      c["half_width"]      = state.half_width;
+      c["max_penetration"] = state.max_penetration;
+      contact.push_back(c);
+    }
+    json["theta"]   = thetas;
+    json["contact"] = contact;
+    if (!dd_solver.history().empty())
+    {
+      json["dd_residual"]  = dd_solver.history().back().residual;
+      json["dd_increment"] = dd_solver.history().back().increment;
+    }
+  }
+
+  void
+  RunReport::add_adaptation(const Results &results, Json &json) const
+  {
+    json["adaptation_cycles"] = results.n_adaptation_steps;
+    unsigned int bem_unknowns = 0;
+    Json         estimator;
+    estimator["mode"]    = to_string(parameters.adaptation.mode);
+    estimator["type"]    = to_string(parameters.adaptation.estimator);
+    estimator["marking"] = to_string(parameters.adaptation.marking);
+    estimator["delta"]   = parameters.adaptation.delta;
+    Json per_body        = Json::array();
+    for (const auto &a : results.adaptations)
+    {
+      Json e;
+      e["body"]         = a->get_body().name();
+      e["eta_max"]      = a->eta_max();
+      e["eta_sum"]      = a->eta_sum();
+      e["capped_cells"] = a->n_capped();
+      if (const auto *fb = a->fem_bem())
+      {
+        bem_unknowns += fb->bem_unknowns();
+        e["bem_unknowns"]          = fb->bem_unknowns();
+        e["stress_error_estimate"] = fb->global_error();
+        e["bem_stress_norm"]       = fb->stress_norm();
+        e["relative_error_estimate"] =
+          fb->stress_norm() > 0 ? fb->global_error() / fb->stress_norm() : 0.;
+      }
+      per_body.push_back(e);
+    }
+    estimator["bodies"]  = per_body;
+    json["bem_unknowns"] = bem_unknowns;
+    json["estimator"]    = estimator;
+  }
+
+  Json
+  RunReport::timings_json(const Results &results) const
+  {
+    Json timings = Json::object();
+    for (const auto &[section, seconds] :
+         timer.get_summary_data(TimerOutput::total_wall_time))
+      timings[section] = seconds;
+    // The BEM's phases, timed by the estimators.
+    std::map<std::string, double> bem;
+    for (const auto &a : results.adaptations)
+      if (const auto *fb = a->fem_bem())
+      {
+        bem["BEM setup (assembly, LU)"] += fb->timings().bem_setup;
+        bem["BEM solve"] += fb->timings().bem_solve;
+        bem["BEM interior stresses"] += fb->timings().bem_interior;
+      }
+    for (const auto &[section, seconds] : bem)
+      timings[section] = seconds;
+    // The body solves and the exchange of their solutions (on process 0;
+    // the exchange includes waiting for the slowest process).
+    timings["body solves"] = results.distribution.solve_seconds();
+    if (results.distribution.n_processes() > 1)
+      timings["exchange between processes"] =
+        results.distribution.exchange_seconds();
+    return timings;
+  }
+
+  void
+  RunReport::write_summary(const Results &results, const std::string &status)
+  {
+    Json json;
+    json["scene"]         = parameters.scene_name;
+    json["status"]        = status;
+    json["bodies"]        = bodies_json(results);
+    json["mpi_processes"] = results.distribution.n_processes();
+    json["body_owners"]   = results.distribution.describe();
+    json["points"]        = points_json(results);
+    if (!results.contact_pairs.empty())
+      add_contact(results, json);
+    if (parameters.adaptation.enabled())
+      add_adaptation(results, json);
+    json["wall_time_s"] = wall_clock.wall_time();
+    json["timings"]     = timings_json(results);
+
+    // Peak resident memory (VmHWM) of the processes: what a distributed
+    // mesh saves.
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    const double peak_mb = memory.VmHWM / 1024.;
+    json["peak_memory"]  = {
+       {"largest_process_mb", Utilities::MPI::max(peak_mb, MPI_COMM_WORLD)},
+       {"all_processes_mb", Utilities::MPI::sum(peak_mb, MPI_COMM_WORLD)}};
+
+    summary_json = json;
+    if (writes_files)
+      write_json_file(json, parameters.output_directory + "/summary.json");
+  }
+} // namespace ddcontact
