@@ -70,19 +70,17 @@ namespace ddcontact
     bodies.clear();
     // With process groups every mesh is partitioned over the world (and
     // its refinement is collective); otherwise each body is serial.
-    const bool partitioned = parameters.parallel.process_groups(
-      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
-      parameters.bodies.size());
+    const unsigned int n_processes =
+      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const bool partitioned =
+      parameters.parallel.process_groups(n_processes, parameters.bodies.size());
     for (const auto &body_parameters : parameters.bodies)
     {
-      // A p4est mesh where the body allows it (Parallel/Mesh).
       bodies.push_back(std::make_unique<ElasticBody<2>>(
         body_parameters,
         parameters.constants,
-        partitioned ? MPI_COMM_WORLD : MPI_COMM_SELF,
-        partitioned &&
-          parameters.parallel.distributed_mesh(
-            body_parameters, Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD))));
+        parameters.parallel.mesh_kind(
+          body_parameters, n_processes, parameters.bodies.size())));
       // Assembled and factorized only where it is solved, below.
       bodies.back()->set_solved_here(false);
       bodies.back()->make_mesh(parameters.output_directory);

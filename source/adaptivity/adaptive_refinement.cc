@@ -1,14 +1,7 @@
-#include <deal.II/base/quadrature_lib.h>
 
-#include <deal.II/distributed/grid_refinement.h>
-#include <deal.II/distributed/tria.h>
-#include <deal.II/distributed/tria_base.h>
-
-#include <deal.II/grid/grid_refinement.h>
-
-#include <deal.II/numerics/error_estimator.h>
 
 #include <ddcontact/adaptivity/adaptive_refinement.h>
+#include <ddcontact/adaptivity/marking.h>
 
 #include <algorithm>
 #include <array>
@@ -29,36 +22,6 @@ namespace ddcontact
         return {std::numeric_limits<double>::infinity(), 0.};
       // R = ab bc ca / (4 area), r = area / s with s the half perimeter.
       return {ab * bc * ca / (2. * area), 4. * area / (ab + bc + ca)};
-    }
-    /**
-     * Flag the cells with the largest @p criteria: a fixed fraction of the
-     * cells (@p by_number) or of the sum of the criteria. On a distributed
-     * mesh over all processes' cells (deal.II searches the threshold in
-     * parallel).
-     */
-    void
-    refine_fixed(Triangulation<2>     &tria,
-                 const Vector<double> &criteria,
-                 const double          fraction,
-                 const bool            by_number)
-    {
-      namespace distributed = parallel::distributed::GridRefinement;
-      if (auto *forest =
-            dynamic_cast<parallel::distributed::Triangulation<2> *>(&tria))
-      {
-        if (by_number)
-          distributed::refine_and_coarsen_fixed_number(
-            *forest, criteria, fraction, 0.);
-        else
-          distributed::refine_and_coarsen_fixed_fraction(
-            *forest, criteria, fraction, 0.);
-      }
-      else if (by_number)
-        GridRefinement::refine_and_coarsen_fixed_number(
-          tria, criteria, fraction, 0.);
-      else
-        GridRefinement::refine_and_coarsen_fixed_fraction(
-          tria, criteria, fraction, 0.);
     }
   } // namespace
 
@@ -104,29 +67,23 @@ namespace ddcontact
       throw InputError("Adaptation/Bodies: body '" + body.name() +
                        "' has triangles, which deal.II 9.4 refines only "
                        "globally; use quadrilaterals or Mode = uniform");
-    if (parameters.mode != AdaptationMode::uniform &&
-        parameters.estimator == EstimatorType::kelly &&
-        parameters.marking == MarkingType::threshold)
+    if (parameters.mode == AdaptationMode::uniform)
+      return;
+    estimator = ErrorEstimator::create(parameters.estimator, body);
+    if (parameters.marking == MarkingType::threshold &&
+        !estimator->comparable_with_delta())
       throw InputError("Adaptation/Marking: threshold compares eta with the "
                        "dimensionless delta of (27) and needs a fem-bem "
                        "estimator; use fraction or doerfler with kelly");
-    if (parameters.mode != AdaptationMode::uniform &&
-        parameters.estimator != EstimatorType::kelly)
-      fem_bem_estimator =
-        std::make_unique<FemBemEstimator>(body, parameters.estimator);
   }
 
   void
   AdaptiveRefinement::estimate(const Vector<double>          &u_fem,
                                const BoundaryTractionSamples &contact)
   {
-    if (fem_bem_estimator)
-    {
-      fem_bem_estimator->estimate(u_fem, contact);
-      eta = fem_bem_estimator->indicators();
-    }
-    else
-      estimate_kelly(u_fem);
+    AssertThrow(estimator, ExcMessage("uniform refinement estimates nothing"));
+    estimator->estimate(u_fem, contact);
+    eta = estimator->indicators();
     // A distributed mesh holds eta on its own cells (zero elsewhere).
     eta_maximum = eta.linfty_norm();
     eta_total   = eta.l1_norm();
@@ -138,57 +95,10 @@ namespace ddcontact
     }
   }
 
-  void
-  AdaptiveRefinement::estimate_kelly(const Vector<double> &u_fem)
-  {
-    Vector<float> kelly(body.get_triangulation().n_active_cells());
-    KellyErrorEstimator<2>::estimate(body.get_mapping(),
-                                     body.get_dof_handler(),
-                                     QGauss<1>(body.get_fe().degree + 1),
-                                     {},
-                                     u_fem,
-                                     kelly);
-    // On a partitioned mesh every process estimates only its own cells;
-    // each cell has one owner, so on a shared mesh the sum is the whole
-    // estimate. A distributed one keeps the owned cells' values.
-    if (const auto *tria = dynamic_cast<const parallel::TriangulationBase<2> *>(
-          &body.get_triangulation());
-        tria && !body.is_mesh_distributed())
-      Utilities::MPI::sum(kelly, tria->get_communicator(), kelly);
-    eta = kelly;
-    if (body.is_mesh_distributed())
-      for (const auto &cell : body.get_triangulation().active_cell_iterators())
-        if (!cell->is_locally_owned())
-          eta(cell->active_cell_index()) = 0.;
-  }
-
   unsigned int
   AdaptiveRefinement::mark()
   {
-    auto &tria = body.get_triangulation();
-    AssertDimension(eta.size(), tria.n_active_cells());
-    for (const auto &cell : tria.active_cell_iterators())
-      cell->clear_refine_flag();
-
-    if (parameters.marking == MarkingType::threshold)
-    {
-      for (const auto &cell : tria.active_cell_iterators())
-        if (body.computes(cell) &&
-            eta(cell->active_cell_index()) > parameters.delta)
-          cell->set_refine_flag();
-    }
-    else if (parameters.marking == MarkingType::fraction)
-      refine_fixed(tria, eta, parameters.fraction, true);
-    else
-    {
-      // Doerfler (bulk) marking on eta^2: the error is the l2 sum of the
-      // cell contributions.
-      Vector<double> eta2(eta.size());
-      for (unsigned int c = 0; c < eta.size(); ++c)
-        eta2(c) = eta(c) * eta(c);
-      refine_fixed(tria, eta2, parameters.fraction, false);
-    }
-
+    mark_cells(body.get_triangulation(), eta, parameters);
     return apply_caps();
   }
 

@@ -376,11 +376,9 @@ namespace ddcontact
   }
 
   template <int dim>
-  BodyMesh<dim>::BodyMesh(const BodyParameters &parameters,
-                          const MPI_Comm        communicator,
-                          const bool            distributed)
+  BodyMesh<dim>::BodyMesh(const BodyParameters &parameters, const MeshKind kind)
     : parameters(parameters)
-    , distributed(distributed)
+    , distributed(kind == MeshKind::distributed)
   {
     // Mesh smoothing keeps adapted quadrilateral meshes graded; deal.II 9.4
     // refines triangles only globally and without smoothing.
@@ -389,28 +387,33 @@ namespace ddcontact
                    : Triangulation<dim>::limit_level_difference_at_vertices;
     AssertThrow(!distributed || !is_simplex(),
                 ExcMessage("p4est meshes hold quadrilaterals only"));
-    if (distributed)
-      // p4est partitions the cells between all processes of the
-      // communicator (z-order of the forest) and again after every
-      // refinement.
-      tria = std::make_unique<parallel::distributed::Triangulation<dim>>(
-        communicator, smoothing);
-    else if (Utilities::MPI::n_mpi_processes(communicator) > 1)
+    switch (kind)
     {
-      // Every process keeps every cell (no artificial cells); the
-      // subdomain ids say which process of the group assembles a cell.
-      auto shared = std::make_unique<parallel::shared::Triangulation<dim>>(
-        communicator,
-        smoothing,
-        false,
-        parallel::shared::Triangulation<dim>::partition_custom_signal);
-      shared->signals.create.connect([this]() { partition_between_group(); });
-      shared->signals.post_refinement.connect([this]()
-                                              { partition_between_group(); });
-      tria = std::move(shared);
+      case MeshKind::distributed:
+        // p4est partitions the cells between all processes (z-order of
+        // the forest) and again after every refinement.
+        tria = std::make_unique<parallel::distributed::Triangulation<dim>>(
+          MPI_COMM_WORLD, smoothing);
+        break;
+      case MeshKind::shared:
+      {
+        // Every process keeps every cell (no artificial cells); the
+        // subdomain ids say which process of the group assembles a cell.
+        auto shared = std::make_unique<parallel::shared::Triangulation<dim>>(
+          MPI_COMM_WORLD,
+          smoothing,
+          false,
+          parallel::shared::Triangulation<dim>::partition_custom_signal);
+        shared->signals.create.connect([this]() { partition_between_group(); });
+        shared->signals.post_refinement.connect([this]()
+                                                { partition_between_group(); });
+        tria = std::move(shared);
+        break;
+      }
+      case MeshKind::serial:
+        tria = std::make_unique<Triangulation<dim>>(smoothing);
+        break;
     }
-    else
-      tria = std::make_unique<Triangulation<dim>>(smoothing);
 
     if (is_simplex())
       cell_mapping = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));

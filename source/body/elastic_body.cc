@@ -27,12 +27,11 @@ namespace ddcontact
   template <int dim>
   ElasticBody<dim>::ElasticBody(const BodyParameters &parameters,
                                 const Constants      &constants,
-                                const MPI_Comm        mesh_communicator,
-                                const bool            distributed_mesh)
+                                const MeshKind        mesh_kind)
     : parameters(parameters)
     , material(parameters.material)
     , boundary_conditions(make_boundary_conditions(parameters, constants))
-    , mesh(this->parameters, mesh_communicator, distributed_mesh)
+    , mesh(this->parameters, mesh_kind)
   {
     static_assert(dim == 2, "ddcontact bodies are two-dimensional");
     const unsigned int p = parameters.degree;

@@ -60,6 +60,17 @@ namespace ddcontact
     return on_every_process && body.cell_type == CellType::quadrilateral;
   }
 
+  MeshKind
+  ParallelParameters::mesh_kind(const BodyParameters &body,
+                                const unsigned int    n_processes,
+                                const unsigned int    n_bodies) const
+  {
+    if (!process_groups(n_processes, n_bodies))
+      return MeshKind::serial;
+    return distributed_mesh(body, n_processes) ? MeshKind::distributed
+                                               : MeshKind::shared;
+  }
+
   bool
   ParallelParameters::process_groups(const unsigned int n_processes,
                                      const unsigned int n_bodies) const

@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <ddcontact/adaptivity/error_estimator.h>
 #include <ddcontact/adaptivity/fem_bem_estimator.h>
 #include <ddcontact/body/boundary_conditions.h>
 #include <ddcontact/body/elastic_body.h>
@@ -112,7 +113,7 @@ namespace ddcontact
     const FemBemEstimator *
     fem_bem() const
     {
-      return fem_bem_estimator.get();
+      return dynamic_cast<const FemBemEstimator *>(estimator.get());
     }
 
     /** eta, D_e, d_e, K_e of the current mesh for the VTU output (eta
@@ -127,16 +128,13 @@ namespace ddcontact
     unsigned int
     apply_caps();
 
-    /** Kelly's indicator of @p u_fem into eta (the baseline estimator). */
-    void
-    estimate_kelly(const Vector<double> &u_fem);
-
-    ElasticBody<2>                  &body;
-    const AdaptationParameters       parameters;
-    std::unique_ptr<FemBemEstimator> fem_bem_estimator;
-    Vector<double>                   eta;
-    double                           eta_maximum = 0, eta_total = 0;
-    unsigned int                     capped = 0;
+    ElasticBody<2>            &body;
+    const AdaptationParameters parameters;
+    // Null with uniform refinement.
+    std::unique_ptr<ErrorEstimator> estimator;
+    Vector<double>                  eta;
+    double                          eta_maximum = 0, eta_total = 0;
+    unsigned int                    capped = 0;
   };
 } // namespace ddcontact
 

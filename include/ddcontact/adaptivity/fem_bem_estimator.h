@@ -6,6 +6,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ddcontact/adaptivity/adaptation_parameters.h>
+#include <ddcontact/adaptivity/error_estimator.h>
 #include <ddcontact/bem/boundary_element_solver.h>
 #include <ddcontact/body/boundary_conditions.h>
 #include <ddcontact/body/elastic_body.h>
@@ -43,14 +44,14 @@ namespace ddcontact
    * estimator watches its body's triangulation and rebuilds it after any
    * change.
    */
-  class FemBemEstimator
+  class FemBemEstimator : public ErrorEstimator
   {
   public:
     /** @p variant is EstimatorType::fem_bem (printed) or
      * EstimatorType::fem_bem_scaled (scaled). */
     FemBemEstimator(const ElasticBody<2> &body, EstimatorType variant);
 
-    ~FemBemEstimator();
+    ~FemBemEstimator() override;
 
     /**
      * Estimate the error of @p u_fem, the FEM solution of the body problem
@@ -59,13 +60,20 @@ namespace ddcontact
      */
     void
     estimate(const Vector<double>          &u_fem,
-             const BoundaryTractionSamples &contact);
+             const BoundaryTractionSamples &contact) override;
 
     /** eta per active cell (printed or scaled, by the variant). */
     const Vector<double> &
-    indicators() const
+    indicators() const override
     {
       return eta;
+    }
+
+    /** Both forms are relative to the body's stress: dimensionless. */
+    bool
+    comparable_with_delta() const override
+    {
+      return true;
     }
 
     /** ||sigma_B - sigma_F||_e per active cell. */

@@ -41,11 +41,9 @@ namespace ddcontact
   class BodyMesh
   {
   public:
-    /** @p communicator: MPI_COMM_SELF for a serial mesh; with several
-     * processes a shared mesh, or a p4est forest if @p distributed. */
-    BodyMesh(const BodyParameters &parameters,
-             const MPI_Comm        communicator,
-             const bool            distributed);
+    /** A serial mesh lives on MPI_COMM_SELF, the other kinds on
+     * MPI_COMM_WORLD. */
+    BodyMesh(const BodyParameters &parameters, const MeshKind kind);
 
     ~BodyMesh();
 

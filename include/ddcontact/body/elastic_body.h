@@ -54,13 +54,10 @@ namespace ddcontact
   class ElasticBody
   {
   public:
-    /** @p mesh_communicator: MPI_COMM_SELF for a serial triangulation, or
-     * MPI_COMM_WORLD for a mesh partitioned over process groups (a p4est
-     * forest if @p distributed_mesh). */
+    /** @p mesh_kind: see BodyMesh and ParallelParameters::mesh_kind(). */
     ElasticBody(const BodyParameters &parameters,
                 const Constants      &constants,
-                const MPI_Comm        mesh_communicator = MPI_COMM_SELF,
-                const bool            distributed_mesh  = false);
+                const MeshKind        mesh_kind = MeshKind::serial);
 
     ElasticBody(const ElasticBody &) = delete;
     ElasticBody &

@@ -32,6 +32,17 @@ namespace ddcontact
     distributed
   };
 
+  /** The kind of triangulation a body gets (BodyMesh): whole on the
+   * process that solves it (serial), every cell on every process and
+   * partitioned between the body's group (shared), or a p4est forest of
+   * which each process keeps its own cells (distributed). */
+  enum class MeshKind
+  {
+    serial,
+    shared,
+    distributed
+  };
+
   DDCONTACT_DECLARE_SELECTION(BodyOwners)
   DDCONTACT_DECLARE_SELECTION(MeshPartition)
 
@@ -72,6 +83,14 @@ namespace ddcontact
     bool
     distributed_mesh(const BodyParameters &body,
                      unsigned int          n_processes) const;
+
+    /** The kind of mesh of @p body on @p n_processes processes solving
+     * @p n_bodies bodies: the one place that decides it, from
+     * process_groups() and distributed_mesh(). */
+    MeshKind
+    mesh_kind(const BodyParameters &body,
+              unsigned int          n_processes,
+              unsigned int          n_bodies) const;
 
     static void
     declare(ParameterHandler &prm);
