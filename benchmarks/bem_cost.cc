@@ -7,11 +7,11 @@
 // stdout). Run in Release: scripts/bem_benchmark.sh.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
+#include <deal.II/base/timer.h>
 
 #include <ddcontact/bem/boundary_element_solver.h>
 #include <ddcontact/body/elastic_body.h>
 
-#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -56,16 +56,12 @@ main(int argc, char **argv)
     ElasticBody<2> body(p, Constants());
     body.make_mesh();
 
-    using Clock      = std::chrono::steady_clock;
-    const auto since = [](const Clock::time_point &t)
-    { return std::chrono::duration<double>(Clock::now() - t).count(); };
-
-    auto start = Clock::now();
+    Timer timer;
     body.setup_and_factorize();
-    const double fem_setup = since(start);
-    start                  = Clock::now();
+    const double fem_setup = timer.wall_time();
+    timer.restart();
     body.solve();
-    const double fem_solve = since(start);
+    const double fem_solve = timer.wall_time();
 
     BoundaryElementSolver bem(body.get_material(),
                               body.get_boundary_conditions());

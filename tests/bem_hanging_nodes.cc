@@ -6,12 +6,7 @@
 // carries a hanging-node constraint and every BEM node is a vertex DoF
 #include <deal.II/base/function.h>
 
-#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
-
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
@@ -20,7 +15,7 @@
 
 #include <ddcontact/bem/boundary_element_solver.h>
 
-#include "test_tools.h"
+#include "bem_test_tools.h"
 
 #include <iomanip>
 #include <iostream>
@@ -60,15 +55,6 @@ namespace
     return bc;
   }
 
-  Material
-  steel()
-  {
-    Material m;
-    m.youngs_modulus = 2.1e5;
-    m.poisson_ratio  = 0.3;
-    return m;
-  }
-
   void
   make_coarse(Triangulation<2> &tria)
   {
@@ -90,10 +76,9 @@ namespace
   Result
   solve(const Triangulation<2> &tria, const std::vector<Point<2>> &points)
   {
-    FESystem<2>   fe(FE_Q<2>(1), 2);
-    DoFHandler<2> dof_handler(tria);
-    dof_handler.distribute_dofs(fe);
-    MappingQ<2> mapping(1);
+    const Q1Displacement space(tria);
+    const auto          &dof_handler = space.dof_handler;
+    const auto          &mapping     = space.mapping;
 
     AffineConstraints<double> hanging;
     DoFTools::make_hanging_node_constraints(dof_handler, hanging);

@@ -5,19 +5,13 @@
 // the rigid-body trick produces in the assembled BEM system
 #include <deal.II/base/quadrature_lib.h>
 
-#include <deal.II/dofs/dof_handler.h>
-
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
 #include <ddcontact/bem/boundary_element_solver.h>
 #include <ddcontact/bem/kelvin_solution.h>
 
-#include "test_tools.h"
+#include "bem_test_tools.h"
 
 #include <iomanip>
 #include <iostream>
@@ -41,12 +35,9 @@ namespace
     // not depend on the boundary conditions.
     BoundaryConditions<2> bc;
 
-    FESystem<2>   fe(FE_Q<2>(1), 2);
-    DoFHandler<2> dof_handler(tria);
-    dof_handler.distribute_dofs(fe);
-    MappingQ<2>           mapping(1);
+    const Q1Displacement  space(tria);
     BoundaryElementSolver bem(material, bc);
-    bem.setup(dof_handler, mapping);
+    bem.setup(space.dof_handler, space.mapping);
 
     const KelvinSolution kelvin(1., nu);
     const double         a = (1. - 2. * nu) / (4. * numbers::PI * (1. - nu));

@@ -23,7 +23,7 @@
 #include <ddcontact/bem/boundary_element_solver.h>
 #include <ddcontact/parameters.h>
 
-#include "test_tools.h"
+#include "bem_test_tools.h"
 
 #include <iomanip>
 #include <iostream>
@@ -114,9 +114,7 @@ namespace
            const Mapping<2>    &mapping,
            const Quadrature<2> &cell_quadrature)
   {
-    Material material;
-    material.youngs_modulus = 2.1e5;
-    material.poisson_ratio  = 0.3;
+    const Material        material = steel();
     SymmetricTensor<2, 2> sigma;
     sigma[0][0] = 120.;
     sigma[1][1] = -75.;
@@ -173,34 +171,7 @@ namespace
       u_max         = std::max(u_max, u_exact.norm());
     }
     if (bem.n_rigid_modes() > 0)
-    {
-      // Fit a + omega (-y, x) by least squares (3x3 normal equations).
-      FullMatrix<double> m(3, 3);
-      Vector<double>     rhs(3), coefficients(3);
-      for (unsigned int i = 0; i < bem.n_nodes(); ++i)
-      {
-        const Point<2> x = bem.node_position(i);
-        for (unsigned int c = 0; c < 2; ++c)
-        {
-          const double r[3] = {
-            c == 0 ? 1. : 0., c == 1 ? 1. : 0., c == 0 ? -x[1] : x[0]};
-          for (unsigned int p = 0; p < 3; ++p)
-          {
-            rhs(p) += r[p] * difference[i][c];
-            for (unsigned int q = 0; q < 3; ++q)
-              m(p, q) += r[p] * r[q];
-          }
-        }
-      }
-      m.gauss_jordan();
-      m.vmult(coefficients, rhs);
-      for (unsigned int i = 0; i < bem.n_nodes(); ++i)
-      {
-        const Point<2> x = bem.node_position(i);
-        difference[i][0] -= coefficients(0) - coefficients(2) * x[1];
-        difference[i][1] -= coefficients(1) + coefficients(2) * x[0];
-      }
-    }
+      remove_rigid_motion(bem, difference);
     double u_error = 0;
     for (const auto &d : difference)
       u_error = std::max(u_error, d.norm() / u_max);
@@ -309,12 +280,9 @@ main()
           cell->set_refine_flag();
       tria.execute_coarsening_and_refinement();
     }
-    FESystem<2>   fe(FE_Q<2>(1), 2);
-    DoFHandler<2> dof_handler(tria);
-    dof_handler.distribute_dofs(fe);
-    MappingQ<2> mapping(1);
+    const Q1Displacement space(tria);
     for (const auto &c : cases)
-      run_case(c, dof_handler, mapping, QGauss<2>(2));
+      run_case(c, space.dof_handler, space.mapping, QGauss<2>(2));
   }
 
   {

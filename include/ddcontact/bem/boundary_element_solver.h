@@ -13,9 +13,9 @@
 
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
-
 #include <deal.II/lac/vector.h>
 
+#include <ddcontact/bem/boundary_mesh.h>
 #include <ddcontact/bem/kelvin_solution.h>
 #include <ddcontact/body/boundary_conditions.h>
 #include <ddcontact/body/material.h>
@@ -49,6 +49,11 @@ namespace ddcontact
    * Boundary data are those of the body: Dirichlet (5) by id and component,
    * Neumann tractions (6) by id, ids not listed are traction free, and the
    * contact ids carry the traction given to solve().
+   *
+   * The boundary mesh, its unknowns and the boundary solution are a
+   * BoundaryMesh, the element integrals are in BoundaryIntegration, and
+   * the hierarchical evaluation at many points is FarFieldStresses; this
+   * class assembles the collocation system, factorizes and solves it.
    */
   class BoundaryElementSolver
   {
@@ -181,154 +186,21 @@ namespace ddcontact
     /** @} */
 
   private:
-    /** A boundary node = a boundary vertex of the mesh. Coordinates and
-     * displacements are scaled by length_scale(). */
-    struct Node
-    {
-      Point<2>                               x;
-      Point<2>                               x_physical;
-      std::array<types::global_dof_index, 2> dofs;
-      unsigned int element_in  = numbers::invalid_unsigned_int;
-      unsigned int element_out = numbers::invalid_unsigned_int;
-      // Per component: prescribed value (scaled) or index of the unknown.
-      std::array<bool, 2>         known{{false, false}};
-      std::array<unsigned int, 2> unknown{
-        {numbers::invalid_unsigned_int, numbers::invalid_unsigned_int}};
-      Tensor<1, 2> displacement;
-      Tensor<2, 2> diagonal_block;
-    };
-
-    /** A straight 2-node boundary element = an active boundary face (25),
-     * scaled coordinates. */
-    struct Element
-    {
-      std::array<unsigned int, 2> nodes;
-      Point<2>                    x_a, x_b;
-      Tensor<1, 2>                tangent, normal;
-      double                      length;
-      types::boundary_id          boundary_id;
-      // Per component: is the displacement prescribed on this element?
-      std::array<bool, 2> dirichlet{{false, false}};
-      bool                is_contact = false;
-      // Column of the element in contact_matrix, if it is a contact element.
-      unsigned int contact_index = numbers::invalid_unsigned_int;
-      // [end][component]: index of the unknown traction (ends may be tied).
-      std::array<std::array<unsigned int, 2>, 2> unknown;
-      // Tractions (scaled by mu) at the two ends: prescribed or solved for.
-      std::array<Tensor<1, 2>, 2> traction;
-    };
-
-    /** A collocation point xi with the BIE components collocated there:
-     * a node, or an extra point inside an element (BEM.md §2.7). */
-    struct CollocationPoint
-    {
-      Point<2>                  x;
-      unsigned int              node    = numbers::invalid_unsigned_int;
-      unsigned int              element = numbers::invalid_unsigned_int;
-      double                    s0      = 0;
-      std::vector<unsigned int> components;
-      std::vector<unsigned int> rows;
-    };
-
-    /** One 2x2 block per node (H) and per element end (G) of the BIE row
-     * at one collocation point. */
-    struct RowBlocks
-    {
-      std::vector<Tensor<2, 2>>                h;
-      std::vector<std::array<Tensor<2, 2>, 2>> g;
-    };
-
-    void
-    build_boundary_mesh(const DoFHandler<2> &dof_handler,
-                        const Mapping<2>    &mapping);
-
-    void
-    number_unknowns();
-
-    void
-    find_rigid_modes();
-
     void
     assemble_system();
 
     void
-    compute_row_blocks(const CollocationPoint &point, RowBlocks &blocks) const;
-
-    void
     project_contact_traction(const BoundaryTractionSamples &contact,
                              Vector<double> &contact_values) const;
-
-    SymmetricTensor<2, 2>
-    scaled_stress(const Point<2> &xi) const;
-
-    /**
-     * Integrate over element @p e with the distance-dependent rule for the
-     * point @p xi, calling f(x, n, t(x), u(x), w) at each quadrature point
-     * with the boundary solution interpolated there.
-     */
-    template <typename Integrand>
-    void
-    integrate_boundary_solution(const Point<2> &xi,
-                                unsigned int    e,
-                                Integrand     &&f) const;
-
-    /** Add the contribution of element @p e to the Somigliana stress at
-     * @p xi (scaled units) to @p sigma. */
-    void
-    add_element_stress(const Point<2>        &xi,
-                       unsigned int           e,
-                       SymmetricTensor<2, 2> &sigma) const;
-
-    /** The contribution of the elements @p subset to the Somigliana
-     * stress at @p xi (scaled units). */
-    SymmetricTensor<2, 2>
-    scaled_stress(const Point<2>                  &xi,
-                  const std::vector<unsigned int> &subset) const;
-
-    /** A square box of the target tree of stresses_by_tree(). */
-    struct TargetBox
-    {
-      Point<2> lower;
-      double   side;
-    };
-
-    /**
-     * One box of the hierarchical evaluation of the Somigliana stresses at
-     * many points: @p points (indices into @p x) lie in @p box; @p
-     * candidates are the elements not yet accounted for by an ancestor;
-     * @p parent and @p parent_values the Chebyshev interpolant of what the
-     * ancestors accounted for (none at the root).
-     */
-    void
-    stresses_in_box(const std::vector<Point<2>>              &x,
-                    std::vector<std::size_t>                &&points,
-                    const TargetBox                          &box,
-                    std::vector<unsigned int>               &&candidates,
-                    const TargetBox                          *parent,
-                    const std::vector<SymmetricTensor<2, 2>> *parent_values,
-                    std::vector<SymmetricTensor<2, 2>>       &stress,
-                    unsigned int                              depth) const;
-
-    Tensor<1, 2>
-    scaled_displacement(const Point<2> &xi) const;
 
     const Material              material;
     const BoundaryConditions<2> boundary_conditions;
     // Kernels with mu = 1: tractions and stresses are scaled by mu.
     const KelvinSolution kelvin;
 
-    double   reference_length = 1;
-    Point<2> reference_center;
-
-    std::vector<Node>             nodes;
-    std::vector<Element>          elements;
-    std::vector<CollocationPoint> collocation_points;
-    unsigned int                  n_boundary_unknowns = 0;
-    unsigned int                  n_extra_rows        = 0;
-    // Free rigid modes as coefficients of (translation x, translation y,
-    // rotation about reference_center), scaled coordinates.
-    std::vector<Tensor<1, 3>> rigid_modes;
-    unsigned int              n_contact_elements = 0;
+    BoundaryMesh mesh;
+    // The 2x2 diagonal block of the BIE at every node, for diagnostics.
+    std::vector<Tensor<2, 2>> diagonal_blocks;
 
     LAPACKFullMatrix<double> system_matrix;
     // Right-hand side of the body's own Dirichlet and Neumann data, and

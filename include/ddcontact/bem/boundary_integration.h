@@ -1,0 +1,85 @@
+#ifndef ddcontact_boundary_integration_h
+#define ddcontact_boundary_integration_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <ddcontact/bem/boundary_mesh.h>
+#include <ddcontact/bem/kelvin_solution.h>
+
+#include <array>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * Integration over the straight elements of a BoundaryMesh (scaled
+   * coordinates, kernels with mu = 1, BEM.md §2.4, §4.2):
+   *  - regular and nearly singular element integrals by Gauss rules whose
+   *    number of points grows as the source point approaches the element,
+   *    with adaptive bisection close to it;
+   *  - the singular integrals on the elements adjacent to a collocation
+   *    point in closed form, and the free term by the rigid-body trick;
+   *  - the Somigliana identities for interior points (BEM.md §1.3, §4.1).
+   */
+  namespace BoundaryIntegration
+  {
+    /** Distance from @p p to the segment (a, b). */
+    double
+    point_segment_distance(const Point<2> &p,
+                           const Point<2> &a,
+                           const Point<2> &b);
+
+    /** Local coordinate in [0,1] of the point of segment (a, b) closest to
+     * @p p. */
+    double
+    segment_coordinate(const Point<2> &p, const Point<2> &a, const Point<2> &b);
+
+    /** One 2x2 block per node (H) and per element end (G) of the BIE row
+     * at one collocation point. */
+    struct RowBlocks
+    {
+      std::vector<Tensor<2, 2>>                h;
+      std::vector<std::array<Tensor<2, 2>, 2>> g;
+    };
+
+    /**
+     * The H and G blocks of the boundary integral equation collocated at
+     * @p point: closed forms on the elements through the point, the
+     * distance-dependent rule on the others, and at a node the diagonal
+     * block from the rigid-body trick (BEM.md §2.3, §2.4, §2.7).
+     */
+    void
+    collocation_row_blocks(const BoundaryMesh                   &mesh,
+                           const KelvinSolution                 &kelvin,
+                           const BoundaryMesh::CollocationPoint &point,
+                           RowBlocks                            &blocks);
+
+    /** Somigliana stress identity at the interior point @p xi, summed over
+     * all elements of @p mesh with their boundary solution (scaled). */
+    SymmetricTensor<2, 2>
+    somigliana_stress(const BoundaryMesh   &mesh,
+                      const KelvinSolution &kelvin,
+                      const Point<2>       &xi);
+
+    /** The contribution of the elements @p subset to the Somigliana
+     * stress at @p xi (scaled). */
+    SymmetricTensor<2, 2>
+    somigliana_stress(const BoundaryMesh              &mesh,
+                      const KelvinSolution            &kelvin,
+                      const Point<2>                  &xi,
+                      const std::vector<unsigned int> &subset);
+
+    /** Somigliana displacement identity at the interior point @p xi
+     * (scaled). */
+    Tensor<1, 2>
+    somigliana_displacement(const BoundaryMesh   &mesh,
+                            const KelvinSolution &kelvin,
+                            const Point<2>       &xi);
+  } // namespace BoundaryIntegration
+} // namespace ddcontact
+
+#endif

@@ -1,0 +1,185 @@
+#ifndef ddcontact_boundary_mesh_h
+#define ddcontact_boundary_mesh_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/mapping.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <ddcontact/body/boundary_conditions.h>
+
+#include <array>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * The boundary mesh of one FEM body for the direct boundary element
+   * method (BEM.md §2), with its boundary data and the numbering of the
+   * unknowns:
+   *  - one node per boundary vertex, one straight 2-node element per active
+   *    boundary face (25), oriented so that the body lies on the left
+   *    (outer boundaries counter-clockwise); on a distributed mesh (p4est)
+   *    the faces of all processes are gathered on every process;
+   *  - coordinates scaled by the bounding-box diagonal of the boundary
+   *    (BEM.md §3.3), tractions by mu;
+   *  - the unknowns: nodal displacement components that are not prescribed,
+   *    element-end traction components where the displacement is
+   *    (BEM.md §2.2, §2.7), the collocation points and rows, and the rigid
+   *    modes left free by the Dirichlet data (§5.1);
+   *  - the boundary solution, prescribed or solved for, stored on the nodes
+   *    and element ends.
+   */
+  class BoundaryMesh
+  {
+  public:
+    /** A boundary node = a boundary vertex of the mesh. Coordinates and
+     * displacements are scaled by length_scale(). */
+    struct Node
+    {
+      Point<2>                               x;
+      Point<2>                               x_physical;
+      std::array<types::global_dof_index, 2> dofs;
+      unsigned int element_in  = numbers::invalid_unsigned_int;
+      unsigned int element_out = numbers::invalid_unsigned_int;
+      // Per component: prescribed value (scaled) or index of the unknown.
+      std::array<bool, 2>         known{{false, false}};
+      std::array<unsigned int, 2> unknown{
+        {numbers::invalid_unsigned_int, numbers::invalid_unsigned_int}};
+      Tensor<1, 2> displacement;
+    };
+
+    /** A straight 2-node boundary element = an active boundary face (25),
+     * scaled coordinates. */
+    struct Element
+    {
+      std::array<unsigned int, 2> nodes;
+      Point<2>                    x_a, x_b;
+      Tensor<1, 2>                tangent, normal;
+      double                      length;
+      types::boundary_id          boundary_id;
+      // Per component: is the displacement prescribed on this element?
+      std::array<bool, 2> dirichlet{{false, false}};
+      bool                is_contact = false;
+      // Index of the element among the contact elements, if it is one.
+      unsigned int contact_index = numbers::invalid_unsigned_int;
+      // [end][component]: index of the unknown traction (ends may be tied).
+      std::array<std::array<unsigned int, 2>, 2> unknown;
+      // Tractions (scaled by mu) at the two ends: prescribed or solved for.
+      std::array<Tensor<1, 2>, 2> traction;
+    };
+
+    /** A collocation point xi with the BIE components collocated there:
+     * a node, or an extra point inside an element (BEM.md §2.7). */
+    struct CollocationPoint
+    {
+      Point<2>                  x;
+      unsigned int              node    = numbers::invalid_unsigned_int;
+      unsigned int              element = numbers::invalid_unsigned_int;
+      double                    s0      = 0;
+      std::vector<unsigned int> components;
+      std::vector<unsigned int> rows;
+    };
+
+    /** Build the nodes and elements from the active boundary faces of the
+     * mesh of @p dof_handler (Q1 or P1 vertex dofs) and scale them. */
+    void
+    reinit(const DoFHandler<2> &dof_handler, const Mapping<2> &mapping);
+
+    /** Apply the body's Dirichlet (5) and Neumann (6) data (tractions
+     * divided by the shear modulus @p mu), number the unknowns, set up
+     * the collocation points and find the free rigid modes. */
+    void
+    number_unknowns(const BoundaryConditions<2> &boundary_conditions,
+                    const double                 mu);
+
+    /** Store the solution @p x of the collocation system and the contact
+     * element-end tractions @p contact_values (4 per contact element,
+     * scaled by mu) on the nodes and element ends. */
+    void
+    set_solution(const Vector<double> &x, const Vector<double> &contact_values);
+
+    /** Scaled coordinates of the physical point @p x. */
+    Point<2>
+    scaled(const Point<2> &x) const
+    {
+      return Point<2>((x - reference_center) / reference_length);
+    }
+
+    /** Length scale L_ref (bounding-box diagonal of the boundary). */
+    double
+    length_scale() const
+    {
+      return reference_length;
+    }
+
+    const std::vector<Node> &
+    get_nodes() const
+    {
+      return nodes;
+    }
+
+    const std::vector<Element> &
+    get_elements() const
+    {
+      return elements;
+    }
+
+    const std::vector<CollocationPoint> &
+    get_collocation_points() const
+    {
+      return collocation_points;
+    }
+
+    /** Number of BEM unknowns (= collocation rows). */
+    unsigned int
+    n_unknowns() const
+    {
+      return n_boundary_unknowns;
+    }
+
+    /** Number of off-node collocation rows at D-D corners (BEM.md §2.7). */
+    unsigned int
+    n_extra_collocation_rows() const
+    {
+      return n_extra_rows;
+    }
+
+    unsigned int
+    n_contact_elements() const
+    {
+      return n_contact;
+    }
+
+    /** Free rigid modes as coefficients of (translation x, translation y,
+     * rotation about the centre of the bounding box), scaled coordinates. */
+    const std::vector<Tensor<1, 3>> &
+    get_rigid_modes() const
+    {
+      return rigid_modes;
+    }
+
+  private:
+    void
+    find_rigid_modes();
+
+    double   reference_length = 1;
+    Point<2> reference_center;
+
+    std::vector<Node>             nodes;
+    std::vector<Element>          elements;
+    std::vector<CollocationPoint> collocation_points;
+    unsigned int                  n_boundary_unknowns = 0;
+    unsigned int                  n_extra_rows        = 0;
+    unsigned int                  n_contact           = 0;
+    std::vector<Tensor<1, 3>>     rigid_modes;
+  };
+} // namespace ddcontact
+
+#endif

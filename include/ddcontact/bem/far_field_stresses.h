@@ -1,0 +1,66 @@
+#ifndef ddcontact_far_field_stresses_h
+#define ddcontact_far_field_stresses_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <ddcontact/bem/boundary_mesh.h>
+#include <ddcontact/bem/kelvin_solution.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * The Somigliana stresses of a solved BoundaryMesh at many interior
+   * points by a hierarchy of boxes: a quadtree over the points, in which
+   * the elements well separated from a box act on it through a Chebyshev
+   * interpolant of their (smooth) field, accurate to about 1e-8 of it,
+   * and only the nearby elements are integrated at every point. The cost
+   * is about linear in the points instead of points x elements.
+   */
+  class FarFieldStresses
+  {
+  public:
+    /** Evaluate the field of the boundary solution of @p mesh with the
+     * kernels of @p kelvin (mu = 1); both must outlive this object. */
+    FarFieldStresses(const BoundaryMesh &mesh, const KelvinSolution &kelvin);
+
+    /** The stresses (divided by mu) at the interior @p points (scaled
+     * coordinates, BoundaryMesh::scaled()). */
+    std::vector<SymmetricTensor<2, 2>>
+    evaluate(const std::vector<Point<2>> &points) const;
+
+  private:
+    /** A square box of the target tree. */
+    struct TargetBox
+    {
+      Point<2> lower;
+      double   side;
+    };
+
+    /**
+     * One box of the hierarchy: @p points (indices into @p x) lie in
+     * @p box; @p candidates are the elements not yet accounted for by an
+     * ancestor; @p parent and @p parent_values the Chebyshev interpolant of
+     * what the ancestors accounted for (none at the root).
+     */
+    void
+    stresses_in_box(const std::vector<Point<2>>              &x,
+                    std::vector<std::size_t>                &&points,
+                    const TargetBox                          &box,
+                    std::vector<unsigned int>               &&candidates,
+                    const TargetBox                          *parent,
+                    const std::vector<SymmetricTensor<2, 2>> *parent_values,
+                    std::vector<SymmetricTensor<2, 2>>       &stress,
+                    unsigned int                              depth) const;
+
+    const BoundaryMesh   &mesh;
+    const KelvinSolution &kelvin;
+  };
+} // namespace ddcontact
+
+#endif

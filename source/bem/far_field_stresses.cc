@@ -1,0 +1,234 @@
+#include <deal.II/base/thread_management.h>
+
+#include <ddcontact/bem/boundary_integration.h>
+#include <ddcontact/bem/far_field_stresses.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+namespace ddcontact
+{
+  namespace
+  {
+    /**
+     * Tensor-product interpolation at the n x n Chebyshev points (first
+     * kind) of a square box, in barycentric form (Berrut & Trefethen):
+     * stable for any n, exact at the nodes.
+     */
+    struct ChebyshevRule
+    {
+      static constexpr unsigned int n = 8;
+      std::array<double, n>         t, w; // nodes on [0, 1], weights
+
+      ChebyshevRule()
+      {
+        for (unsigned int k = 0; k < n; ++k)
+        {
+          const double angle = (2. * k + 1.) * M_PI / (2. * n);
+          t[k]               = 0.5 * (1. + std::cos(angle));
+          w[k]               = ((k % 2) ? -1. : 1.) * std::sin(angle);
+        }
+      }
+
+      /** The n Lagrange basis values at s (in box units). */
+      std::array<double, n>
+      basis(const double s) const
+      {
+        std::array<double, n> l;
+        double                sum = 0;
+        for (unsigned int k = 0; k < n; ++k)
+        {
+          if (s == t[k])
+          {
+            l.fill(0.);
+            l[k] = 1.;
+            return l;
+          }
+          l[k] = w[k] / (s - t[k]);
+          sum += l[k];
+        }
+        for (auto &v : l)
+          v /= sum;
+        return l;
+      }
+
+      /** The interpolant of @p values (node (kx, ky) at kx n + ky) of the
+       * box [lower, lower + side]^2 at y. */
+      SymmetricTensor<2, 2>
+      interpolate(const Point<2>                           &lower,
+                  const double                              side,
+                  const std::vector<SymmetricTensor<2, 2>> &values,
+                  const Point<2>                           &y) const
+      {
+        const auto            lx = basis((y[0] - lower[0]) / side);
+        const auto            ly = basis((y[1] - lower[1]) / side);
+        SymmetricTensor<2, 2> result;
+        for (unsigned int kx = 0; kx < n; ++kx)
+        {
+          SymmetricTensor<2, 2> column;
+          for (unsigned int ky = 0; ky < n; ++ky)
+            column += ly[ky] * values[kx * n + ky];
+          result += lx[kx] * column;
+        }
+        return result;
+      }
+    };
+
+    const ChebyshevRule &
+    chebyshev_rule()
+    {
+      static const ChebyshevRule rule;
+      return rule;
+    }
+  } // namespace
+
+  FarFieldStresses::FarFieldStresses(const BoundaryMesh   &mesh,
+                                     const KelvinSolution &kelvin)
+    : mesh(mesh)
+    , kelvin(kelvin)
+  {
+  }
+
+  std::vector<SymmetricTensor<2, 2>>
+  FarFieldStresses::evaluate(const std::vector<Point<2>> &points) const
+  {
+    std::vector<SymmetricTensor<2, 2>> stress(points.size());
+    if (points.empty())
+      return stress;
+    Point<2> lo = points[0], hi = points[0];
+    for (const auto &y : points)
+      for (unsigned int d = 0; d < 2; ++d)
+      {
+        lo[d] = std::min(lo[d], y[d]);
+        hi[d] = std::max(hi[d], y[d]);
+      }
+    const double side = 1.001 * std::max(hi[0] - lo[0], hi[1] - lo[1]) + 1e-12;
+    const TargetBox root{lo - Tensor<1, 2>({5e-4 * side, 5e-4 * side}), side};
+    std::vector<std::size_t> all_points(points.size());
+    std::iota(all_points.begin(), all_points.end(), std::size_t(0));
+    std::vector<unsigned int> all_elements(mesh.get_elements().size());
+    std::iota(all_elements.begin(), all_elements.end(), 0u);
+    stresses_in_box(points,
+                    std::move(all_points),
+                    root,
+                    std::move(all_elements),
+                    nullptr,
+                    nullptr,
+                    stress,
+                    0);
+    return stress;
+  }
+
+  void
+  FarFieldStresses::stresses_in_box(
+    const std::vector<Point<2>>              &x,
+    std::vector<std::size_t>                &&points,
+    const TargetBox                          &box,
+    std::vector<unsigned int>               &&candidates,
+    const TargetBox                          *parent,
+    const std::vector<SymmetricTensor<2, 2>> *parent_values,
+    std::vector<SymmetricTensor<2, 2>>       &stress,
+    const unsigned int                        depth) const
+  {
+    const ChebyshevRule &cheb = chebyshev_rule();
+    // What the ancestors' far elements contribute at y: their Chebyshev
+    // interpolant (y lies in the parent box).
+    const auto inherited = [&](const Point<2> &y)
+    {
+      return parent ? cheb.interpolate(
+                        parent->lower, parent->side, *parent_values, y)
+                    : SymmetricTensor<2, 2>();
+    };
+
+    // A box with few points: integrating its remaining elements at the
+    // points is cheaper than at the interpolation nodes.
+    const unsigned int n_nodes = ChebyshevRule::n * ChebyshevRule::n;
+    if (points.size() <= 2 * n_nodes || depth >= 30)
+    {
+      for (const std::size_t i : points)
+        stress[i] = inherited(x[i]) + BoundaryIntegration::somigliana_stress(
+                                        mesh, kelvin, x[i], candidates);
+      return;
+    }
+
+    // Elements at least 4 half-diagonals r from the centre are well
+    // separated from the box: in it their field is analytic, with its
+    // singularities (in each coordinate, complexified) at least 3 r = 4.2
+    // half-sides from the box centre. Chebyshev interpolation of degree 7
+    // then converges like rho^-8 with rho = 4.2 + sqrt(4.2^2 - 1) = 8.3
+    // (the Bernstein ellipse through the nearest singularity), i.e. to
+    // about 5e-8 of the far field per level.
+    const double   radius = box.side / std::sqrt(2.);
+    const Point<2> centre =
+      box.lower + Tensor<1, 2>({0.5 * box.side, 0.5 * box.side});
+    const auto               &elements = mesh.get_elements();
+    std::vector<unsigned int> far, near;
+    for (const unsigned int e : candidates)
+      (BoundaryIntegration::point_segment_distance(
+         centre, elements[e].x_a, elements[e].x_b) >= 4. * radius
+         ? far
+         : near)
+        .push_back(e);
+    candidates.clear();
+
+    // With no new far element the children interpolate the ancestors'
+    // field directly (their points lie in the ancestor's box too).
+    std::vector<SymmetricTensor<2, 2>>        values;
+    const TargetBox                          *child_parent = parent;
+    const std::vector<SymmetricTensor<2, 2>> *child_values = parent_values;
+    if (!far.empty())
+    {
+      values.resize(n_nodes);
+      for (unsigned int kx = 0; kx < ChebyshevRule::n; ++kx)
+        for (unsigned int ky = 0; ky < ChebyshevRule::n; ++ky)
+        {
+          const Point<2> node =
+            box.lower +
+            Tensor<1, 2>({box.side * cheb.t[kx], box.side * cheb.t[ky]});
+          values[kx * ChebyshevRule::n + ky] =
+            inherited(node) +
+            BoundaryIntegration::somigliana_stress(mesh, kelvin, node, far);
+        }
+      child_parent = &box;
+      child_values = &values;
+    }
+
+    // Quadrants; a point on a dividing line goes to the upper one.
+    const double                            half = 0.5 * box.side;
+    std::array<std::vector<std::size_t>, 4> quadrant_points;
+    for (const std::size_t i : points)
+      quadrant_points[2 * (x[i][0] >= box.lower[0] + half) +
+                      (x[i][1] >= box.lower[1] + half)]
+        .push_back(i);
+    points.clear();
+
+    const auto child = [&](const unsigned int q)
+    {
+      if (quadrant_points[q].empty())
+        return;
+      const TargetBox sub{
+        box.lower + Tensor<1, 2>({half * (q / 2), half * (q % 2)}), half};
+      stresses_in_box(x,
+                      std::move(quadrant_points[q]),
+                      sub,
+                      std::vector<unsigned int>(near),
+                      child_parent,
+                      child_values,
+                      stress,
+                      depth + 1);
+    };
+    // The top levels spread over the threads; below, one task per subtree.
+    if (depth < 3)
+    {
+      Threads::TaskGroup<void> tasks;
+      for (unsigned int q = 0; q < 4; ++q)
+        tasks += Threads::new_task([&, q]() { child(q); });
+      tasks.join_all();
+    }
+    else
+      for (unsigned int q = 0; q < 4; ++q)
+        child(q);
+  }
+} // namespace ddcontact
