@@ -17,6 +17,7 @@
 #include <deal.II/numerics/solution_transfer.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <ddcontact/body/boundary_data_checks.h>
 #include <ddcontact/body/elastic_body.h>
 
 #include <iomanip>
@@ -55,114 +56,6 @@ namespace ddcontact
   ElasticBody<dim>::make_mesh(const std::string &work_directory)
   {
     mesh.make(boundary_conditions, work_directory);
-  }
-
-  namespace
-  {
-    /** Whether every entry of @p v is finite (Vector::l2_norm() asserts
-     * that in Debug builds instead of answering). */
-    bool
-    finite(const Vector<double> &v)
-    {
-      return std::all_of(
-        v.begin(), v.end(), [](const double x) { return std::isfinite(x); });
-    }
-
-  } // namespace
-
-  template <int dim>
-  void
-  ElasticBody<dim>::check_dirichlet_values() const
-  {
-    // The prescribed displacements at the vertices and midpoints of the
-    // Dirichlet faces (where interpolation evaluates them for degree 1
-    // and 2): a NaN would enter the constraints and every solution.
-    Vector<double> value(dim);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-          {
-            const auto it =
-              boundary_conditions.dirichlet.find(cell->face(f)->boundary_id());
-            if (it == boundary_conditions.dirichlet.end())
-              continue;
-            for (const auto &x : {cell->face(f)->vertex(0),
-                                  cell->face(f)->vertex(1),
-                                  cell->face(f)->center()})
-            {
-              it->second.displacement->vector_value(x, value);
-              if (!finite(value))
-              {
-                std::ostringstream s;
-                s << parameters.section()
-                  << "/Boundary conditions/Dirichlet: the displacement on "
-                     "boundary id "
-                  << it->first << " is not finite at (" << x[0] << ", " << x[1]
-                  << "); give expressions finite on the whole "
-                  << "boundary";
-                throw InputError(s.str());
-              }
-            }
-          }
-  }
-
-  template <int dim>
-  void
-  ElasticBody<dim>::throw_non_finite_load() const
-  {
-    // Which expression, and where: the body force at the cells'
-    // quadrature points, then the tractions on their Neumann faces.
-    const auto where = [](const Point<dim> &x)
-    {
-      std::ostringstream s;
-      s << std::setprecision(6) << " at (" << x[0] << ", " << x[1] << ")";
-      return s.str();
-    };
-    const std::string section = parameters.section() + "/Boundary conditions/";
-    Vector<double>    value(dim);
-    FEValues<dim>     fe_values(
-      get_mapping(), *fe, *cell_quadrature, update_quadrature_points);
-    FEFaceValues<dim> fe_face(
-      get_mapping(), *fe, *face_quadrature, update_quadrature_points);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-    {
-      if (!computes(cell))
-        continue;
-      if (boundary_conditions.body_force)
-      {
-        fe_values.reinit(cell);
-        for (const auto &x : fe_values.get_quadrature_points())
-        {
-          boundary_conditions.body_force->vector_value(x, value);
-          if (!finite(value))
-            throw InputError(section + "Body force: not finite" + where(x) +
-                             "; give expressions finite in the whole body");
-        }
-      }
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary())
-        {
-          const auto it =
-            boundary_conditions.neumann.find(cell->face(f)->boundary_id());
-          if (it == boundary_conditions.neumann.end())
-            continue;
-          fe_face.reinit(cell, f);
-          for (const auto &x : fe_face.get_quadrature_points())
-          {
-            it->second->vector_value(x, value);
-            if (!finite(value))
-              throw InputError(section +
-                               "Neumann: the traction on boundary "
-                               "id " +
-                               std::to_string(it->first) + " is not finite" +
-                               where(x) +
-                               "; give expressions finite on the whole "
-                               "boundary");
-          }
-        }
-    }
-    throw InputError(section + "the load vector is not finite");
   }
 
   template <int dim>
@@ -251,7 +144,7 @@ namespace ddcontact
       constraints.reinit(relevant);
     }
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    check_dirichlet_values();
+    check_dirichlet_values(*this);
     for (const auto &[id, d] : boundary_conditions.dirichlet)
       VectorTools::interpolate_boundary_values(
         get_mapping(), dof_handler, id, *d.displacement, constraints, d.mask);
@@ -394,7 +287,7 @@ namespace ddcontact
                           boundary_worker);
 
     if (non_finite_load)
-      throw_non_finite_load();
+      throw_non_finite_load(*this);
     if ((volumetric_quadrature != nullptr))
       assemble_reduced_volumetric_term(copier);
     linear_solver->compress();

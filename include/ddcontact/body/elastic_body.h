@@ -309,16 +309,6 @@ namespace ddcontact
     }
 
   private:
-    /** Throw an InputError naming the load expression (Body force or
-     * Neumann) that is not finite, and where (after assembly found a
-     * non-finite load). */
-    [[noreturn]] void
-    throw_non_finite_load() const;
-
-    /** Refuse Dirichlet expressions that are not finite on their faces. */
-    void
-    check_dirichlet_values() const;
-
     /** The lambda div u div v term of a_a (11) on one Gauss point per cell
      * (see get_volumetric_quadrature()), through @p copier. */
     void

@@ -162,11 +162,6 @@ namespace ddcontact
     reinit_after_refinement();
 
   private:
-    /** The elastic-layer initial guess (Winkler), or zero where it would
-     * start worse than zero. */
-    ContactProblem::Iterate
-    elastic_layer_guess() const;
-
     /** Throw, naming the cause, if the pressure last_sigma_n[p] computed
      * from @p u is not finite: a DivergenceError if @p u is not finite, an
      * InputError naming the penalty if g/theta overflowed. */
