@@ -314,10 +314,7 @@ namespace ddcontact
       {
         TimerOutput::Scope t(timer, "contact solve");
         if (dd_solver->history().size() >= parameters.dd.max_iterations)
-          throw DivergenceError(
-            "the combined algorithm did not converge in " +
-            std::to_string(parameters.dd.max_iterations) +
-            " DD iterations; raise Domain decomposition/Max iterations");
+          dd_solver->stop_at_iteration_limit("the combined algorithm");
         converged = dd_solver->step(); // (20)-(21)
       }
       // A frozen mesh, or one that may not be refined any more, is only
@@ -393,6 +390,26 @@ namespace ddcontact
   }
 
   void
+  Simulation::write_failed_run(const std::string &status)
+  {
+    n_contact_iterations = dd_solver->history().size();
+    report.write_history(dd_solver->history());
+    report.write_contact_profiles(results(), "");
+    // The last iterate as the next output step, for diagnosis; a failure
+    // to write it must not hide why the run stopped.
+    try
+    {
+      output_results(n_output_steps);
+    }
+    catch (const std::exception &e)
+    {
+      pcout << "  the last iterate could not be written: " << e.what()
+            << std::endl;
+    }
+    report.write_summary(results(), status);
+  }
+
+  void
   Simulation::run()
   {
     wall_clock.restart();
@@ -411,15 +428,12 @@ namespace ddcontact
     {
       n_contact_iterations = solve();
     }
-    catch (const DivergenceError &)
+    catch (const DivergenceError &error)
     {
-      // What the DD did until it gave up.
       if (dd_solver)
-      {
-        n_contact_iterations = dd_solver->history().size();
-        report.write_history(dd_solver->history());
-        report.write_summary(results(), "diverged");
-      }
+        write_failed_run(dynamic_cast<const NotConvergedError *>(&error)
+                           ? "not_converged"
+                           : "diverged");
       throw;
     }
 
@@ -436,6 +450,7 @@ namespace ddcontact
     if (!parameters.adaptation.enabled())
       output_results(0);
     report.write_summary(results(), status);
+    report.print_warnings();
     if (!shortfall.empty())
       throw DivergenceError(shortfall);
 

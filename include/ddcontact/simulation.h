@@ -14,6 +14,7 @@
 #include <ddcontact/solvers/neumann_dd_solver.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace ddcontact
@@ -33,7 +34,9 @@ namespace ddcontact
     Simulation(const SceneParameters &parameters, std::ostream &screen);
 
     /** Run the scene; returns normally on success, throws InputError on
-     * bad input. */
+     * bad input and DivergenceError (NotConvergedError at Max iterations
+     * with a falling residual) when the contact iteration fails, after
+     * writing what it reached. */
     void
     run();
 
@@ -155,6 +158,12 @@ namespace ddcontact
 
     void
     output_results(unsigned int step);
+
+    /** After a DivergenceError: history.csv, the contact profiles, the
+     * VTU/PVD of the last iterate (if Output/Write vtu) and summary.json
+     * with @p status ("diverged" or "not_converged"). */
+    void
+    write_failed_run(const std::string &status);
 
     const SceneParameters parameters;
     ConditionalOStream    pcout;

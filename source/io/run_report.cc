@@ -7,11 +7,71 @@
 #include <array>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <sstream>
 
 namespace ddcontact
 {
+  namespace
+  {
+    /** The smallest diameter of the cells of @p body with a face on the
+     * boundary @p id (all processes' cells). */
+    double
+    zone_cell_diameter(const ElasticBody<2> &body, const unsigned int id)
+    {
+      double h = std::numeric_limits<double>::max();
+      for (const auto &cell : body.get_triangulation().active_cell_iterators())
+        if (body.computes(cell) && cell->at_boundary())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == id)
+            {
+              h = std::min(h, cell->diameter(body.get_mapping()));
+              break;
+            }
+      return body.is_mesh_distributed()
+               ? Utilities::MPI::min(
+                   h, body.get_triangulation().get_communicator())
+               : h;
+    }
+
+    /** The warning of a pair that penetrates too far, or "". */
+    std::string
+    penetration_warning(const std::string     &pair,
+                        const double           penetration,
+                        const double           approach,
+                        const double           h,
+                        const SceneParameters &parameters)
+    {
+      const bool of_approach =
+        approach > 0 &&
+        penetration > RunReport::penetration_per_approach * approach;
+      // (h is the largest double if the zone has no cells here.)
+      const bool of_cell = penetration > RunReport::penetration_per_cell * h;
+      if (!of_approach && !of_cell)
+        return "";
+      std::ostringstream s;
+      s << std::setprecision(2) << "contact pair " << pair
+        << ": the penalty leaves a penetration of " << penetration << ", ";
+      if (approach > 0)
+        s << 100 * penetration / approach << " % of the approach " << approach
+          << " (limit " << 100 * RunReport::penetration_per_approach << " %), ";
+      if (h < std::numeric_limits<double>::max())
+        s << 100 * penetration / h << " % of the smallest cell " << h
+          << " along the contact zone (limit "
+          << 100 * RunReport::penetration_per_cell << " %), ";
+      s << "an error of the penalty that mesh refinement does not remove; ";
+      if (parameters.dd.augmented_lagrangian)
+        s << "lower Domain decomposition/AL tolerance or raise AL max updates";
+      else
+        s << "for exact contact set Domain decomposition/Augmented "
+             "Lagrangian = true, or lower Contact pair "
+          << pair << "/Penalty";
+      return s.str();
+    }
+  } // namespace
+
   RunReport::RunReport(const SceneParameters    &parameters,
                        const TimerOutput        &timer,
                        const Timer              &wall_clock,
@@ -243,7 +303,9 @@ namespace ddcontact
   }
 
   void
-  RunReport::add_contact(const Results &results, Json &json) const
+  RunReport::add_contact(const Results &results,
+                         const bool     judge_penetration,
+                         Json          &json) const
   {
     const NeumannDDSolver &dd_solver = *results.dd_solver;
     json["dd_iterations"]            = results.n_contact_iterations;
@@ -264,7 +326,33 @@ namespace ddcontact
       c["contact_length"]  = state.contact_length;
       c["half_width"]      = state.half_width;
       c["max_penetration"] = state.max_penetration;
+      // max_penetration is the largest u_1n + u_2n - f_n (at least 0), with
+      // u_an the displacement of body a along its outward normal. The
+      // approach is the largest |u_1n| + |u_2n|, the measure of the AL
+      // tolerance (ContactProblem::penetration()): u_1n + u_2n itself is
+      // the penetration on a zero gap, not how far the bodies were pressed
+      // together. |u_1n| + |u_2n| is that distance for two blocks pressed
+      // against each other, and twice it for a rigid punch on a soft body.
+      double approach = 0;
+      for (unsigned int q = 0; q < state.u_1n.size(); ++q)
+        approach =
+          std::max(approach, std::abs(state.u_1n[q]) + std::abs(state.u_2n[q]));
+      const auto  &pair_parameters = parameters.contact_pairs[p];
+      const auto  &pair            = *results.contact_pairs[p];
+      const double h               = std::min(
+        zone_cell_diameter(pair.get_body_1(), pair_parameters.boundary_id_1),
+        zone_cell_diameter(pair.get_body_2(), pair_parameters.boundary_id_2));
+      c["approach"] = approach;
+      if (h < std::numeric_limits<double>::max())
+        c["min_zone_cell_diameter"] = h;
       contact.push_back(c);
+      const std::string warning =
+        judge_penetration
+          ? penetration_warning(
+              pair.name(), state.max_penetration, approach, h, parameters)
+          : "";
+      if (!warning.empty())
+        json["warnings"].push_back(warning);
     }
     json["theta"]   = thetas;
     json["contact"] = contact;
@@ -340,14 +428,21 @@ namespace ddcontact
   RunReport::write_summary(const Results &results, const std::string &status)
   {
     Json json;
-    json["scene"]         = parameters.scene_name;
-    json["status"]        = status;
-    json["bodies"]        = bodies_json(results);
+    json["scene"]  = parameters.scene_name;
+    json["status"] = status;
+    // The code takes any consistent system of units; the scene's comments
+    // say which one it uses (e.g. cm and MPa).
+    json["units"]    = "consistent units of the scene; forces and energies "
+                       "per unit thickness (plane strain)";
+    json["warnings"] = Json::array();
+    json["bodies"]   = bodies_json(results);
     json["mpi_processes"] = results.distribution.n_processes();
     json["body_owners"]   = results.distribution.describe();
     json["points"]        = points_json(results);
+    // The penetration is judged only where the contact iteration converged
+    // (also "stalled": the DD converged, the Uzawa loop did not).
     if (!results.contact_pairs.empty())
-      add_contact(results, json);
+      add_contact(results, status == "converged" || status == "stalled", json);
     if (parameters.adaptation.enabled())
       add_adaptation(results, json);
     json["wall_time_s"] = wall_clock.wall_time();
@@ -365,5 +460,12 @@ namespace ddcontact
     summary_json = json;
     if (writes_files)
       write_json_file(json, parameters.output_directory + "/summary.json");
+  }
+
+  void
+  RunReport::print_warnings() const
+  {
+    for (const auto &warning : summary_json.at("warnings"))
+      pcout << "warning: " << warning.get<std::string>() << std::endl;
   }
 } // namespace ddcontact

@@ -214,7 +214,11 @@ namespace ddcontact
     record.iteration          = iteration;
     record.residual           = std::numeric_limits<double>::quiet_NaN();
     const auto [best, best_k] = best_of_phase();
-    throw DivergenceError(divergence_message(record, best, best_k));
+    throw DivergenceError(
+      divergence_message("diverged at iteration " + std::to_string(iteration),
+                         record,
+                         best,
+                         best_k));
   }
 
   std::pair<double, unsigned int>
@@ -315,12 +319,17 @@ namespace ddcontact
             << std::fixed << std::setprecision(2) << "  t " << record.time
             << "s" << std::defaultfloat << std::endl;
     if (diverged)
-      throw DivergenceError(divergence_message(record, best, best_k));
+      throw DivergenceError(divergence_message(
+        "diverged at iteration " + std::to_string(record.iteration),
+        record,
+        best,
+        best_k));
     return converged;
   }
 
   std::string
-  NeumannDDSolver::divergence_message(const IterationRecord &record,
+  NeumannDDSolver::divergence_message(const std::string     &event,
+                                      const IterationRecord &record,
                                       const double           best,
                                       const unsigned int     best_k) const
   {
@@ -332,8 +341,8 @@ namespace ddcontact
     const double       limit      = estimate_gamma_limit();
     const double       lambda_max = 2. / limit - 1.;
     std::ostringstream s;
-    s << std::setprecision(3) << "the domain decomposition diverged at "
-      << "iteration " << record.iteration << " (residual ";
+    s << std::setprecision(3) << "the domain decomposition " << event
+      << " (residual ";
     if (std::isfinite(record.residual))
       s << record.residual;
     else
@@ -464,20 +473,74 @@ namespace ddcontact
       while (!converged)
       {
         if (records.size() >= parameters.max_iterations)
-        {
-          std::ostringstream s;
-          s << "the domain decomposition did not converge in "
-            << parameters.max_iterations << " iterations (residual "
-            << std::setprecision(3) << records.back().residual
-            << ", eps_residual " << parameters.eps_residual
-            << "); raise Domain decomposition/Max iterations, or use "
-               "Relaxation = anderson";
-          throw DivergenceError(s.str());
-        }
+          stop_at_iteration_limit("the domain decomposition");
         converged = step();
       }
     } while (start_uzawa_phase());
     return records.size();
+  }
+
+  void
+  NeumannDDSolver::stop_at_iteration_limit(const std::string &what) const
+  {
+    // Judged on the current phase (a new mesh or Uzawa update makes the
+    // residual jump), or on the whole history if the phase is too short.
+    const unsigned int n     = records.size();
+    const unsigned int first = (n >= phase_start + 2) ? phase_start : 0;
+    std::ostringstream s;
+    s << std::setprecision(3) << what << " has not converged in " << n
+      << " iterations (residual ";
+    if (n < first + 2)
+    {
+      // One iteration: no trend to judge, only a limit set too low.
+      s << (n > 0 ? records.back().residual : 0.) << ", eps_residual "
+        << parameters.eps_residual
+        << "); raise Domain decomposition/Max iterations";
+      throw NotConvergedError(s.str());
+    }
+    // Falling: the last (at most 10) iterations reached a new best of the
+    // phase and ended below where they started. Anderson's residual is not
+    // monotone, hence the best of the window rather than every step.
+    const unsigned int window      = std::min(10u, n - 1 - first);
+    const unsigned int start       = n - 1 - window;
+    double             best_before = std::numeric_limits<double>::max();
+    double             best_window = best_before;
+    for (unsigned int i = first; i <= start; ++i)
+      best_before = std::min(best_before, records[i].residual);
+    for (unsigned int i = start + 1; i < n; ++i)
+      best_window = std::min(best_window, records[i].residual);
+    const double r_start = records[start].residual;
+    const double r       = records.back().residual;
+    if (!(std::isfinite(r) && best_window < best_before && r < r_start))
+    {
+      // Grown or stagnated: a divergence, with its advice.
+      const auto [best, best_k] = best_of_phase();
+      throw DivergenceError(divergence_message(
+        "made no progress in its last " + std::to_string(window) +
+          " iterations before Max iterations = " + std::to_string(n),
+        records.back(),
+        best,
+        best_k));
+    }
+    s << r << ", falling: " << r_start / r << " times lower than " << window
+      << " iterations before; eps_residual " << parameters.eps_residual
+      << "); raise Domain decomposition/Max iterations";
+    // At the rate of the window, log(eps/r)/log(rate) more iterations
+    // reach the residual test (not the paper's increment test).
+    if (parameters.stopping != StoppingTest::paper &&
+        parameters.eps_residual < r)
+    {
+      const double rate = std::pow(r / r_start, 1. / window);
+      s << " (about "
+        << static_cast<long long>(
+             std::ceil(std::log(parameters.eps_residual / r) / std::log(rate)))
+        << " more at this rate)";
+    }
+    if (parameters.relaxation == RelaxationType::anderson)
+      s << " or Domain decomposition/Anderson depth";
+    else
+      s << " or use Relaxation = anderson";
+    throw NotConvergedError(s.str());
   }
 
   ContactState

@@ -96,9 +96,21 @@ namespace ddcontact
     write_cells(const Results &results, unsigned int step) const;
 
     /** Build summary.json with the run's @p status ("completed",
-     * "converged", "stalled", "diverged") and write it. Collective. */
+     * "converged", "stalled", "not_converged", "diverged") and its
+     * warnings, and write it. Collective. */
     void
     write_summary(const Results &results, const std::string &status);
+
+    /** Each warning of the summary last written, one line each. */
+    void
+    print_warnings() const;
+
+    /** An accurate penalty solution penetrates by at most this fraction of
+     * the approach of its pair (the largest u_1n + u_2n)... */
+    static constexpr double penetration_per_approach = 0.05;
+    /** ... and by at most this fraction of the smallest cell diameter
+     * along the contact zone (see README, summary.json `warnings`). */
+    static constexpr double penetration_per_cell = 0.1;
 
     /** The summary last written (also for tests). */
     const Json &
@@ -116,9 +128,16 @@ namespace ddcontact
     Json
     points_json(const Results &results) const;
 
-    /** DD iterations, penalties and contact forces of every pair. */
+    /** DD iterations, penalties and contact forces of every pair; after a
+     * converged contact iteration (@p judge_penetration), a warning in
+     * json["warnings"] for every pair that penetrates more than
+     * penetration_per_approach of its approach or penetration_per_cell of
+     * the smallest cell along its zone, naming the remedy. Collective (the
+     * cell sizes of distributed meshes). */
     void
-    add_contact(const Results &results, Json &json) const;
+    add_contact(const Results &results,
+                bool           judge_penetration,
+                Json          &json) const;
 
     /** The estimator's settings and results per adapted body. */
     void

@@ -5,12 +5,23 @@
 
 namespace ddcontact
 {
-  /** An iteration diverged or stopped short of its tolerance; the message
-   * says what to change. The executable exits with code 4. */
+  /** An iteration diverged (its residual grew or stagnated) or stopped
+   * short of its tolerance; the message says what to change. The
+   * executable exits with code 4. */
   class DivergenceError : public std::runtime_error
   {
   public:
     using std::runtime_error::runtime_error;
+  };
+
+  /** The iteration reached Domain decomposition/Max iterations while its
+   * residual still fell: not diverged, only stopped too early (summary.json
+   * `status` "not_converged"). Also exit code 4, so it is a
+   * DivergenceError to every handler that does not tell the two apart. */
+  class NotConvergedError : public DivergenceError
+  {
+  public:
+    using DivergenceError::DivergenceError;
   };
 } // namespace ddcontact
 

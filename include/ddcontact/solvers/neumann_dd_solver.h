@@ -71,9 +71,22 @@ namespace ddcontact
     step();
 
     /** Iterate until converged (with Uzawa updates if requested); returns
-     * the number of DD iterations. Throws DivergenceError. */
+     * the number of DD iterations. Throws DivergenceError, or
+     * NotConvergedError at Max iterations with a falling residual. */
     unsigned int
     run();
+
+    /**
+     * Domain decomposition/Max iterations is reached: throw
+     * NotConvergedError if the residual still falls (a new best within the
+     * last iterations, and below where it stood then), saying by how much
+     * and roughly how many more iterations would reach eps_residual;
+     * otherwise (grown or stagnated) a DivergenceError with the advice of
+     * divergence_message(). @p what names the loop in the message ("the
+     * domain decomposition", "the combined algorithm").
+     */
+    [[noreturn]] void
+    stop_at_iteration_limit(const std::string &what) const;
 
     /** Contact state of pair @p p for the current iterate. */
     ContactState
@@ -184,11 +197,12 @@ namespace ddcontact
     std::pair<double, unsigned int>
     best_of_phase() const;
 
-    /** The message of a DivergenceError: what diverged, and which
-     * parameter to change (Gamma, the penalty c, or eps_residual), judged
-     * from the estimated gamma*. */
+    /** The message of a DivergenceError: what diverged (@p event, e.g.
+     * "diverged at iteration 12"), and which parameter to change (Gamma,
+     * the penalty c, or eps_residual), judged from the estimated gamma*. */
     std::string
-    divergence_message(const IterationRecord &record,
+    divergence_message(const std::string     &event,
+                       const IterationRecord &record,
                        double                 best,
                        unsigned int           best_k) const;
 
