@@ -92,6 +92,7 @@ case_ "Corner 1 = -inf, 0" "Mesh/Corner 1: '-inf'" "$base" --set "Body lower/Mes
 case_ "empty Output directory" "Output directory: empty" "$base" --output ""
 case_ "contact zone not among the Contact ids" "Boundary id 2: 2 is not among" "$paper" --set "Contact pair S/Boundary id 2=2"
 case_ "FEM-BEM estimator with degree 2" "Adaptation/Estimator" "$paper" --set "Body omega2/Element/Degree=2"
+case_ "Kelly on a triangle body" "Adaptation/Estimator: kelly cannot adapt body 'omega1'" "$paper" --set "Adaptation/Bodies=omega1, omega2" --set "Adaptation/Estimator=kelly" --set "Adaptation/Marking=fraction"
 case_ "gap NaN on part of S" "Contact pair S/Gap" "$paper" $flat --set "Contact pair S/Gap=sqrt(x)"
 case_ "gap overlap deeper than the bodies" "Contact pair S/Gap" "$paper" $flat --set "Contact pair S/Gap=-1e308"
 case_ "Neumann load NaN on part of the boundary" "Body lower/Boundary conditions/Neumann" "$base" --set "Body lower/Boundary conditions/Neumann=3: 0; sqrt(x)"

@@ -63,12 +63,18 @@ namespace ddcontact
     : body(body)
     , parameters(parameters)
   {
-    if (parameters.mode != AdaptationMode::uniform && body.is_simplex())
-      throw InputError("Adaptation/Bodies: body '" + body.name() +
-                       "' has triangles, which deal.II 9.4 refines only "
-                       "globally; use quadrilaterals or Mode = uniform");
     if (parameters.mode == AdaptationMode::uniform)
       return;
+    // Triangles refine locally like quadrilaterals, but deal.II 9.4's
+    // KellyErrorEstimator aborts on a triangle with a refined neighbour
+    // (QProjector has no subfaces for simplices); the FEM-BEM estimators
+    // need only cell stresses and boundary faces.
+    if (parameters.estimator == EstimatorType::kelly && body.is_simplex())
+      throw InputError("Adaptation/Estimator: kelly cannot adapt body '" +
+                       body.name() +
+                       "', which has triangles (deal.II 9.4 has no Kelly "
+                       "face jumps on refined triangle neighbours); use "
+                       "fem-bem-scaled or fem-bem");
     estimator = ErrorEstimator::create(parameters.estimator, body);
     if (parameters.marking == MarkingType::threshold &&
         !estimator->comparable_with_delta())
@@ -124,8 +130,8 @@ namespace ddcontact
       marked = Utilities::MPI::sum(marked, tria.get_communicator());
       capped = Utilities::MPI::sum(capped, tria.get_communicator());
     }
-    // Each refined quadrilateral becomes four cells (the one-irregularity
-    // closure adds a few more, not counted here).
+    // Each refined cell, quadrilateral or triangle, becomes four (the
+    // one-irregularity closure adds a few more, not counted here).
     if (body.n_active_cells() + 3 * marked > parameters.max_cells)
     {
       for (const auto &cell : tria.active_cell_iterators())

@@ -289,19 +289,19 @@ namespace ddcontact
   void
   BodyMesh<dim>::refine_box()
   {
-    if (is_simplex())
-      throw InputError(parameters.section() +
-                       "/Mesh/Refinement box: local refinement needs "
-                       "quadrilaterals (deal.II 9.4 refines triangles "
-                       "only globally)");
     const auto      &c = parameters.refinement_box;
     const Point<dim> lo(c[0], c[1]);
     const Point<dim> hi(c[2], c[3]);
     if (parameters.mesh_type == MeshType::rectangle)
     {
       // Before any cell is made: at step k the cells of size h_k that
-      // touch the box (clipped to the body) are refined, each into four.
-      double cells = tria->n_global_active_cells();
+      // touch the box (clipped to the body) are refined, each into four;
+      // a square of the grid holds one quadrilateral or two triangles.
+      double       cells = tria->n_global_active_cells();
+      const double per_square =
+        cells /
+        (double(parameters.subdivisions[0]) * parameters.subdivisions[1] *
+         std::pow(4., parameters.initial_refinement));
       for (unsigned int k = 0; k < parameters.box_refinement; ++k)
       {
         double flagged = 1;
@@ -316,7 +316,7 @@ namespace ddcontact
           flagged *=
             std::min(n_across, std::max(0., width) / length * n_across + 2);
         }
-        cells += 3 * flagged;
+        cells += 3 * per_square * flagged;
       }
       check_size(cells, "Mesh/Box refinement");
     }
@@ -380,8 +380,11 @@ namespace ddcontact
     : parameters(parameters)
     , distributed(kind == MeshKind::distributed)
   {
-    // Mesh smoothing keeps adapted quadrilateral meshes graded; deal.II 9.4
-    // refines triangles only globally and without smoothing.
+    // Mesh smoothing keeps adapted quadrilateral meshes graded. Triangles
+    // refine locally without it: deal.II 9.4's vertex-patch smoothing
+    // (limit_level_difference_at_vertices, maximum_smoothing) reads a
+    // fourth vertex and aborts on them, and the one-irregularity closure
+    // of prepare_coarsening_and_refinement() needs no smoothing flag.
     const auto smoothing =
       is_simplex() ? Triangulation<dim>::none
                    : Triangulation<dim>::limit_level_difference_at_vertices;

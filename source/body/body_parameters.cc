@@ -145,7 +145,7 @@ namespace ddcontact
                         Patterns::Anything(),
                         "'x0, y0, x1, y1': cells that touch this box are "
                         "refined Box refinement more times after the global "
-                        "refinement (quadrilaterals; hanging nodes).");
+                        "refinement (hanging nodes).");
       prm.declare_entry(
         "Box refinement",
         "0",

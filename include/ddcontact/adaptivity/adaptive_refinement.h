@@ -41,8 +41,12 @@ namespace ddcontact
    * adapts with Kelly or uniformly never builds one.
    *
    * The adapted mesh stays one-irregular (at most one hanging node per
-   * face, the paper's fix for spurious refinement): deal.II enforces this
-   * for every refinement of a quadrilateral mesh.
+   * face, the paper's fix for spurious refinement): deal.II 9.4's
+   * prepare_coarsening_and_refinement() adds the flags that keep it so on
+   * quadrilateral and triangle meshes alike (no smoothing flag needed; a
+   * random refinement of triangle meshes never left it, and
+   * tests/triangle_adaptivity checks it). Triangles adapt with the FEM-BEM
+   * estimators; Kelly is refused on them.
    */
   class AdaptiveRefinement
   {
