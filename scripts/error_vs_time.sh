@@ -133,8 +133,8 @@ for r in $U_AUTO; do lv $r; run "uni-dd-auto-r$r" uniform-DD-auto penalty 1 1 "r
 for r in $U_AL; do lv $r; run "uni-dd-anderson-al-r$r" uniform-DD-anderson-AL exact 1 1 "r=$r" "${none[@]}" "${LV[@]}" --set "$(relax anderson)" "${AL[@]}"; done
 for r in $U_AL_FIXED; do lv $r; run "uni-dd-fixed-al-r$r" uniform-DD-fixed-AL exact 1 1 "r=$r" "${none[@]}" "${LV[@]}" --set "$(relax fixed)" "${AL[@]}"; done
 
-# Kelly-adaptive DD of Omega_2 (Omega_1 stays the paper's uniform mesh;
-# deal.II 9.4 refines triangles only globally): nested (DD to convergence,
+# Kelly-adaptive DD of Omega_2 (Omega_1 stays the paper's uniform mesh:
+# Kelly is refused on triangles): nested (DD to convergence,
 # then refine the 30 % largest) and combined with Doerfler marking (50 %).
 kelly_n=(--set "Adaptation/Mode=nested" --set "Adaptation/Estimator=kelly" --set "Adaptation/Marking=fraction" --set "Adaptation/Fraction=0.3")
 kelly_c=(--set "Adaptation/Mode=combined" --set "Adaptation/Estimator=kelly" --set "Adaptation/Marking=doerfler" --set "Adaptation/Fraction=0.5")

@@ -88,10 +88,11 @@ namespace ddcontact
 
     /**
      * Refine (and coarsen) the cells flagged on the triangulation, carry
-     * the body's current solution over to the new mesh (SolutionTransfer;
-     * the transferred field is made conforming again by the new
-     * constraints), and rebuild the system and its factorization: the
-     * adaptive step of Fig. 2 transfers the current iterate to the new mesh.
+     * the body's current solution over to the new mesh (SolutionTransfer, or
+     * RefinementTransfer on triangles; the transferred field is made
+     * conforming again by the new constraints), and rebuild the system and its
+     * factorization: the adaptive step of Fig. 2 transfers the current iterate
+     * to the new mesh.
      */
     void
     refine_and_transfer();
