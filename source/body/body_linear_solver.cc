@@ -36,16 +36,6 @@ namespace ddcontact
       }
 
       void
-      add(const AffineConstraints<double>            &constraints,
-          const FullMatrix<double>                   &cell_matrix,
-          const Vector<double>                       &cell_load,
-          const std::vector<types::global_dof_index> &dof_indices)
-      {
-        constraints.distribute_local_to_global(
-          cell_matrix, cell_load, dof_indices, matrix, load);
-      }
-
-      void
       compress()
       {
       }
@@ -112,16 +102,6 @@ namespace ddcontact
         sp.compress();
         matrix.reinit(sp);
         load.reinit(owned, communicator);
-      }
-
-      void
-      add(const AffineConstraints<double>            &constraints,
-          const FullMatrix<double>                   &cell_matrix,
-          const Vector<double>                       &cell_load,
-          const std::vector<types::global_dof_index> &dof_indices)
-      {
-        constraints.distribute_local_to_global(
-          cell_matrix, cell_load, dof_indices, matrix, load);
       }
 
       void
@@ -206,7 +186,8 @@ namespace ddcontact
           const Vector<double>                       &cell_load,
           const std::vector<types::global_dof_index> &dof_indices) override
       {
-        system.add(constraints, cell_matrix, cell_load, dof_indices);
+        constraints.distribute_local_to_global(
+          cell_matrix, cell_load, dof_indices, system.matrix, system.load);
       }
 
       void
@@ -342,6 +323,8 @@ namespace ddcontact
         data.aggregation_threshold = 0.02;
         DoFTools::extract_constant_modes(
           dof_handler, ComponentMask(dim, true), data.constant_modes);
+        if constexpr (std::is_same_v<System, SerialSystem>)
+          copy.reinit(this->system.matrix);
         amg.initialize(trilinos_matrix(), data);
       }
 
@@ -372,19 +355,7 @@ namespace ddcontact
 
     private:
       /** The matrix ML works on: the distributed one as it is, a serial
-       * one copied (its SparseMatrix stays for the monolithic solver). */
-      const TrilinosWrappers::SparseMatrix &
-      trilinos_matrix()
-      {
-        if constexpr (std::is_same_v<System, SerialSystem>)
-        {
-          copy.reinit(this->system.matrix);
-          return copy;
-        }
-        else
-          return this->system.matrix;
-      }
-
+       * one's copy (its SparseMatrix stays for the monolithic solver). */
       const TrilinosWrappers::SparseMatrix &
       trilinos_matrix() const
       {
