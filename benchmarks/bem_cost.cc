@@ -1,8 +1,11 @@
 // Cost of the BEM reference solution of the FEM-BEM estimator (22)-(27)
 // against the FEM solve of the same body: the paper's Omega_2 = (-2,2) x
 // (0,1), bottom clamped, unit pressure on top, uniform Q1 meshes of 1e3 to
-// 1e5 cells. Times BEM assembly, LU, solve and the Somigliana stresses at
-// all cell quadrature points, and FEM setup + factorization and solve.
+// 5e5 cells (1e3 to 1e6 dofs). Times BEM assembly, factorization (dense
+// LU, or the near-field preconditioner of GMRES), solve and the Somigliana
+// stresses at all cell quadrature points, and FEM setup + factorization
+// and solve. A second argument gives one size; a third, "lu" or "gmres",
+// forces the BEM's solver.
 // Writes one CSV row per mesh to the file given as first argument (or to
 // stdout). Run in Release: scripts/bem_benchmark.sh.
 #include <deal.II/base/mpi.h>
@@ -29,13 +32,15 @@ main(int argc, char **argv)
     file.open(argv[1]);
   std::ostream &csv = (argc > 1) ? file : std::cout;
 
-  std::vector<unsigned int> target_cells = {1000, 3000, 10000, 30000, 100000};
+  std::vector<unsigned int> target_cells = {
+    1000, 3000, 10000, 30000, 100000, 250000, 500000};
   if (argc > 2)
     target_cells = {static_cast<unsigned int>(std::stoul(argv[2]))};
 
   csv << "cells,fem_dofs,bem_elements,bem_unknowns,interior_points,"
          "fem_setup_factorize_s,fem_solve_s,bem_assembly_s,bem_lu_s,"
-         "bem_solve_s,bem_interior_s,threads,rms_stress_difference"
+         "bem_solve_s,bem_interior_s,bem_method,gmres_iterations,threads,"
+         "rms_stress_difference"
       << std::endl;
   std::cerr << "threads: " << MultithreadInfo::n_threads() << std::endl;
 
@@ -65,6 +70,10 @@ main(int argc, char **argv)
 
     BoundaryElementSolver bem(body.get_material(),
                               body.get_boundary_conditions());
+    if (argc > 3)
+      bem.set_solver_method(std::string(argv[3]) == "lu"
+                              ? CollocationSystem::Method::dense_lu
+                              : CollocationSystem::Method::hierarchical);
     bem.setup(body.get_dof_handler(), body.get_mapping());
     bem.solve();
     const auto sigma_b = bem.stress_at_quadrature_points(
@@ -89,7 +98,8 @@ main(int argc, char **argv)
         << ',' << bem.n_elements() << ',' << bem.n_unknowns() << ',' << n_points
         << ',' << std::setprecision(4) << fem_setup << ',' << fem_solve << ','
         << t.assembly << ',' << t.factorization << ',' << t.solve << ','
-        << t.interior << ',' << MultithreadInfo::n_threads() << ','
+        << t.interior << ',' << (bem.uses_dense_lu() ? "lu" : "gmres") << ','
+        << t.iterations << ',' << MultithreadInfo::n_threads() << ','
         << std::sqrt(difference / norm) << std::endl;
     std::cerr << body.get_triangulation().n_active_cells()
               << " cells done: BEM interior " << t.interior << " s"

@@ -256,6 +256,21 @@ namespace ddcontact
   Simulation::mark_cells(const bool may_refine)
   {
     unsigned int marked = estimate_and_mark();
+    // Adaptation/Target error: the estimate of the relative energy-norm
+    // error decides, whatever the marking rule flagged.
+    const double target   = parameters.adaptation.target_error;
+    const double estimate = relative_energy_error_estimate(adaptations);
+    if (target > 0 && estimate >= 0 && estimate <= target)
+    {
+      if (marked > 0)
+        pcout << "  Adaptation/Target error reached: estimated relative "
+                 "energy-norm error "
+              << estimate << " <= " << target << std::endl;
+      marked = 0;
+    }
+    else if (target > 0 && estimate >= 0)
+      pcout << "  estimated relative energy-norm error " << estimate
+            << " (target " << target << ")" << std::endl;
     if (!may_refine && marked > 0)
     {
       pcout << "  Adaptation/Max cycles reached: " << marked

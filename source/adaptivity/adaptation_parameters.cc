@@ -76,6 +76,14 @@ namespace ddcontact
                       "0.3",
                       Patterns::Double(0, 1),
                       "Fraction for fraction and doerfler marking.");
+    prm.declare_entry("Target error",
+                      "none",
+                      Patterns::Anything(),
+                      "none, or a number in (0, 1): the adaptive loop stops "
+                      "once the FEM-BEM estimate of the relative "
+                      "energy-norm error of the adapted bodies, "
+                      "||sigma_B - sigma_F||_E / ||sigma_B||_E, is at most "
+                      "this (FEM-BEM estimators only).");
     prm.declare_entry("Max cycles",
                       "50",
                       Patterns::Integer(0),
@@ -110,6 +118,21 @@ namespace ddcontact
     max_level        = prm.get_integer("Max level");
     max_cells        = prm.get_integer("Max cells");
     write_every_mesh = prm.get_bool("Write every mesh");
+    const std::string target = prm.get("Target error");
+    target_error             = 0;
+    if (Utilities::trim(target) != "none")
+    {
+      target_error = parsing::parse_double(target, "Adaptation/Target error");
+      if (!(target_error > 0 && target_error < 1))
+        throw InputError("Adaptation/Target error: " + target +
+                         " is not in (0, 1); give a relative error such as "
+                         "0.01, or none");
+      if (estimator == EstimatorType::kelly || mode == AdaptationMode::uniform)
+        throw InputError("Adaptation/Target error: needs Estimator = "
+                         "fem-bem or fem-bem-scaled and Mode = combined or "
+                         "nested (only the FEM-BEM estimate is a relative "
+                         "error)");
+    }
     if (enabled() && bodies.empty())
       throw InputError("Adaptation/Bodies: Mode = " + to_string(mode) +
                        " needs at least one adapted body");

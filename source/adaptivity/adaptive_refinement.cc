@@ -172,4 +172,20 @@ namespace ddcontact
       data["eta"] = eta;
     return data;
   }
+  double
+  relative_energy_error_estimate(
+    const std::vector<std::unique_ptr<AdaptiveRefinement>> &adaptations)
+  {
+    double error2 = 0, norm2 = 0;
+    bool   any = false;
+    for (const auto &a : adaptations)
+      if (const auto *estimator = a->fem_bem())
+      {
+        any = true;
+        error2 += std::pow(estimator->energy_norm_error(), 2);
+        norm2 += std::pow(estimator->energy_norm_of_stress(), 2);
+      }
+    return (!any) ? -1. : (norm2 > 0 ? std::sqrt(error2 / norm2) : 0.);
+  }
+
 } // namespace ddcontact

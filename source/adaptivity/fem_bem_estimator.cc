@@ -60,7 +60,14 @@ namespace ddcontact
     const auto    &tria    = body.get_triangulation();
     Vector<double> area(tria.n_active_cells());
     local_error.reinit(tria.n_active_cells());
-    double      total_area = 0, bem_norm2 = 0, error2 = 0;
+    double total_area = 0, bem_norm2 = 0, error2 = 0;
+    double energy_error2 = 0, energy_norm2 = 0;
+    // sigma : C^{-1} sigma in plane strain, (sigma:sigma - nu tr^2) / 2 mu:
+    // the energy norm of the stress error, for the global estimate.
+    const double mu     = body.get_material().mu();
+    const double nu     = body.get_material().poisson_ratio;
+    const auto   energy = [&](const SymmetricTensor<2, 2> &s)
+    { return (s * s - nu * trace(s) * trace(s)) / (2 * mu); };
     FEValues<2> fe_values(body.get_mapping(),
                           body.get_fe(),
                           body.get_cell_quadrature(),
@@ -78,6 +85,8 @@ namespace ddcontact
         // sum_ij z_ij^2: the double contraction counts z_12 twice.
         e2 += (d * d) * fe_values.JxW(q);
         bem_norm2 += (sigma_B[c][q] * sigma_B[c][q]) * fe_values.JxW(q);
+        energy_error2 += energy(d) * fe_values.JxW(q);
+        energy_norm2 += energy(sigma_B[c][q]) * fe_values.JxW(q);
         area(c) += fe_values.JxW(q);
       }
       local_error(c) = std::sqrt(e2);
@@ -91,8 +100,12 @@ namespace ddcontact
       error2              = Utilities::MPI::sum(error2, comm);
       bem_norm2           = Utilities::MPI::sum(bem_norm2, comm);
       total_area          = Utilities::MPI::sum(total_area, comm);
+      energy_error2       = Utilities::MPI::sum(energy_error2, comm);
+      energy_norm2        = Utilities::MPI::sum(energy_norm2, comm);
     }
     error_norm      = std::sqrt(error2);
+    energy_error    = std::sqrt(energy_error2);
+    energy_norm     = std::sqrt(energy_norm2);
     bem_stress_norm = std::sqrt(bem_norm2);
 
     eta.reinit(tria.n_active_cells());

@@ -57,16 +57,87 @@ namespace ddcontact
 
     mesh.reinit(dof_handler, mapping);
     mesh.number_unknowns(boundary_conditions, material.mu());
-    assemble_system();
+
+    // Refinement inside the body leaves the boundary mesh (25) alone: the
+    // collocation system is then the same, and so is its factorization.
+    auto signature = boundary_signature();
+    if (signature == current_signature && system.initialized())
+      return;
+    current_signature = std::move(signature);
+    ++system_setups;
+
+    FullMatrix<double> system_matrix;
+    assemble_system(system_matrix);
     timing_data.assembly = timer.wall_time();
 
     timer.restart();
-    system_matrix.compute_lu_factorization();
+    const auto [row_keys, column_keys] = boundary_order_keys();
+    system.initialize(std::move(system_matrix), row_keys, column_keys, method);
     timing_data.factorization = timer.wall_time();
   }
 
+  std::vector<double>
+  BoundaryElementSolver::boundary_signature() const
+  {
+    // The element end points and boundary ids determine the boundary mesh
+    // and, with the body's fixed boundary data, the whole system.
+    std::vector<double> signature;
+    signature.reserve(5 * mesh.get_elements().size() + 2);
+    signature.push_back(mesh.length_scale());
+    signature.push_back(mesh.get_rigid_modes().size());
+    for (const auto &element : mesh.get_elements())
+      signature.insert(signature.end(),
+                       {element.x_a[0],
+                        element.x_a[1],
+                        element.x_b[0],
+                        element.x_b[1],
+                        double(element.boundary_id)});
+    return signature;
+  }
+
+  std::array<std::vector<double>, 2>
+  BoundaryElementSolver::boundary_order_keys() const
+  {
+    const auto &nodes    = mesh.get_nodes();
+    const auto &elements = mesh.get_elements();
+    // A system bordered with rigid modes keeps the dense LU: no keys.
+    if (!mesh.get_rigid_modes().empty())
+      return {};
+
+    // Number the nodes along each closed boundary curve in turn, so that
+    // contiguous keys are contiguous pieces of the boundary.
+    std::vector<double> node_key(nodes.size(), -1.);
+    double              counter = 0;
+    for (unsigned int start = 0; start < nodes.size(); ++start)
+      for (unsigned int i = start; node_key[i] < 0;
+           i              = elements[nodes[i].element_out].nodes[1])
+        node_key[i] = counter++;
+
+    // Element-end tractions sit just inside their element.
+    std::array<std::vector<double>, 2> keys;
+    auto &[row_keys, column_keys] = keys;
+    row_keys.assign(mesh.n_unknowns(), 0.);
+    column_keys.assign(mesh.n_unknowns(), 0.);
+    for (unsigned int m = 0; m < nodes.size(); ++m)
+      for (unsigned int j = 0; j < 2; ++j)
+        if (!nodes[m].known[j])
+          column_keys[nodes[m].unknown[j]] = node_key[m];
+    for (const auto &element : elements)
+      for (unsigned int k = 0; k < 2; ++k)
+        for (unsigned int j = 0; j < 2; ++j)
+          if (element.dirichlet[j])
+            column_keys[element.unknown[k][j]] =
+              node_key[element.nodes[k]] + (k == 0 ? 0.25 : -0.25);
+    for (const auto &point : mesh.get_collocation_points())
+      for (const unsigned int row : point.rows)
+        row_keys[row] = point.node != numbers::invalid_unsigned_int
+                          ? node_key[point.node]
+                          : node_key[elements[point.element].nodes[0]] + 0.25;
+    return keys;
+  }
+
   void
-  BoundaryElementSolver::assemble_system()
+  BoundaryElementSolver::assemble_system(FullMatrix<double> &system_matrix)
   {
     const auto        &nodes               = mesh.get_nodes();
     const auto        &elements            = mesh.get_elements();
@@ -219,7 +290,7 @@ namespace ddcontact
   void
   BoundaryElementSolver::solve(const BoundaryTractionSamples &contact)
   {
-    Assert(system_matrix.m() > 0, ExcMessage("Call setup() first."));
+    Assert(system.initialized(), ExcMessage("Call setup() first."));
     Timer timer;
 
     Vector<double> contact_values;
@@ -233,11 +304,12 @@ namespace ddcontact
       for (unsigned int i = 0; i < mesh.n_unknowns(); ++i)
         x(i) += contact_rhs(i);
     }
-    system_matrix.solve(x);
+    system.solve(x);
 
     mesh.set_solution(x, contact_values);
-    is_solved         = true;
-    timing_data.solve = timer.wall_time();
+    is_solved              = true;
+    timing_data.solve      = timer.wall_time();
+    timing_data.iterations = system.last_iterations();
   }
 
   std::vector<SymmetricTensor<2, 2>>

@@ -96,7 +96,8 @@ namespace ddcontact
       statistics << ",cells_" << body->name() << ",dofs_" << body->name();
     statistics << ",bem_unknowns,estimated,marked,capped,eta_max,eta_sum,"
                   "relative_error_estimate,dd_residual,dd_increment,"
-                  "contact_force,t_dd_s,t_estimate_s,t_refine_s,wall_time_s\n";
+                  "contact_force,t_dd_s,t_estimate_s,t_refine_s,wall_time_s,"
+                  "relative_energy_error_estimate\n";
   }
 
   void
@@ -143,7 +144,9 @@ namespace ddcontact
         << seconds("contact solve") + seconds("solve") << ','
         << seconds("adaptation: estimate and mark") << ','
         << seconds("adaptation: refine and transfer") << ','
-        << wall_clock.wall_time() << '\n';
+        << wall_clock.wall_time() << ','
+        << std::max(0., relative_energy_error_estimate(results.adaptations))
+        << '\n';
     out.flush();
   }
 
@@ -395,6 +398,15 @@ namespace ddcontact
     estimator["bodies"]  = per_body;
     json["bem_unknowns"] = bem_unknowns;
     json["estimator"]    = estimator;
+    // The global estimate of the adapted bodies and the target it was
+    // held against (null: none, or no FEM-BEM estimator).
+    const double estimate = relative_energy_error_estimate(results.adaptations);
+    const double target   = parameters.adaptation.target_error;
+    json["relative_energy_error_estimate"] =
+      estimate >= 0 ? Json(estimate) : Json();
+    json["target_error"] = target > 0 ? Json(target) : Json();
+    json["target_reached"] =
+      (target > 0 && estimate >= 0) ? Json(estimate <= target) : Json();
   }
 
   Json

@@ -71,6 +71,9 @@ namespace ddcontact
     unsigned int             max_level        = 10;
     unsigned int             max_cells        = 200000;
     bool                     write_every_mesh = true;
+    // Stop when the relative energy-norm estimate is below this (0: no
+    // target).
+    double target_error = 0;
 
     bool
     enabled() const

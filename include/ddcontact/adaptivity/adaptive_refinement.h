@@ -140,6 +140,16 @@ namespace ddcontact
     double                          eta_maximum = 0, eta_total = 0;
     unsigned int                    capped = 0;
   };
+  /**
+   * The relative energy-norm error of all bodies adapted with a FEM-BEM
+   * estimator, (sum ||sigma_B - sigma_F||_E^2 / sum ||sigma_B||_E^2)^(1/2):
+   * the global estimate that Adaptation/Target error is compared with.
+   * Negative if no body has a FEM-BEM estimate (Kelly, uniform).
+   */
+  double
+  relative_energy_error_estimate(
+    const std::vector<std::unique_ptr<AdaptiveRefinement>> &adaptations);
+
 } // namespace ddcontact
 
 #endif

@@ -90,6 +90,21 @@ namespace ddcontact
       return error_norm;
     }
 
+    /** ||sigma_B - sigma_F||_E = (int (sigma_B - sigma_F) : C^{-1}
+     * (sigma_B - sigma_F))^(1/2), the energy norm of the stress error. */
+    double
+    energy_norm_error() const
+    {
+      return energy_error;
+    }
+
+    /** ||sigma_B||_E, the energy norm of the reference stress. */
+    double
+    energy_norm_of_stress() const
+    {
+      return energy_norm;
+    }
+
     /** ||sigma_B||_Omega. */
     double
     stress_norm() const
@@ -132,6 +147,7 @@ namespace ddcontact
 
     Vector<double> eta, local_error;
     double         error_norm = 0, bem_stress_norm = 0;
+    double         energy_error = 0, energy_norm = 0;
     Timings        time;
   };
 } // namespace ddcontact

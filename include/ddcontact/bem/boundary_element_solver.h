@@ -12,10 +12,10 @@
 #include <deal.II/fe/mapping.h>
 
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <ddcontact/bem/boundary_mesh.h>
+#include <ddcontact/bem/collocation_system.h>
 #include <ddcontact/bem/kelvin_solution.h>
 #include <ddcontact/body/boundary_conditions.h>
 #include <ddcontact/body/material.h>
@@ -42,8 +42,11 @@ namespace ddcontact
    *    component is prescribed on both sides of a corner;
    *  - lengths scaled by the body's diameter and tractions by mu before
    *    assembly (the degenerate scale of the log kernel);
-   *  - dense LU (LAPACKFullMatrix), computed once per mesh by setup(),
-   *    reused by solve() for any boundary data;
+   *  - the dense collocation system solved by a CollocationSystem: LU for
+   *    small systems, GMRES preconditioned by a hierarchical (HODLR)
+   *    factorization for large ones; set up once per boundary mesh by setup()
+   * (refinement that leaves the boundary alone keeps it), reused by solve() for
+   * any contact load;
    *  - interior stresses by the Somigliana stress identity with adaptive
    *    subdivision near the boundary, in parallel over points.
    * Boundary data are those of the body: Dirichlet (5) by id and component,
@@ -62,8 +65,9 @@ namespace ddcontact
                           const BoundaryConditions<2> &boundary_conditions);
 
     /** Build the boundary mesh from the active boundary faces of the mesh
-     * of @p dof_handler, assemble and LU-factorize the system. Call again
-     * after every mesh change. */
+     * of @p dof_handler, assemble the system and prepare its solver. Call
+     * again after every mesh change; if the boundary mesh did not change,
+     * the system and its factorization are kept. */
     void
     setup(const DoFHandler<2> &dof_handler, const Mapping<2> &mapping);
 
@@ -116,6 +120,8 @@ namespace ddcontact
       double factorization = 0;
       double solve         = 0;
       double interior      = 0;
+      // GMRES iterations of the last solve (0 with the dense LU).
+      unsigned int iterations = 0;
     };
 
     const Timings &
@@ -132,6 +138,36 @@ namespace ddcontact
     set_far_field_interpolation(const bool enabled)
     {
       use_far_field_interpolation = enabled;
+    }
+
+    /** How to solve the collocation system (default: automatic, by size);
+     * takes effect at the next setup(). */
+    void
+    set_solver_method(const CollocationSystem::Method new_method)
+    {
+      method = new_method;
+      current_signature.clear();
+    }
+
+    /** How many times setup() assembled and factorized the system (it
+     * does not when the boundary mesh is unchanged). */
+    unsigned int
+    n_system_setups() const
+    {
+      return system_setups;
+    }
+
+    const CollocationSystem &
+    get_collocation_system() const
+    {
+      return system;
+    }
+
+    /** Whether the last setup() chose the dense LU (else GMRES). */
+    bool
+    uses_dense_lu() const
+    {
+      return system.uses_dense_lu();
     }
 
     /** @name Further access, for tests and diagnostics. */
@@ -187,7 +223,15 @@ namespace ddcontact
 
   private:
     void
-    assemble_system();
+    assemble_system(FullMatrix<double> &system_matrix);
+
+    std::vector<double>
+    boundary_signature() const;
+
+    /** Positions along the boundary of the rows' collocation points and of
+     * the columns' unknowns, for the hierarchical solver. */
+    std::array<std::vector<double>, 2>
+    boundary_order_keys() const;
 
     void
     project_contact_traction(const BoundaryTractionSamples &contact,
@@ -202,7 +246,12 @@ namespace ddcontact
     // The 2x2 diagonal block of the BIE at every node, for diagnostics.
     std::vector<Tensor<2, 2>> diagonal_blocks;
 
-    LAPACKFullMatrix<double> system_matrix;
+    CollocationSystem         system;
+    CollocationSystem::Method method = CollocationSystem::Method::automatic;
+    // The boundary mesh the system was assembled for (element ends and
+    // ids), to recognise an unchanged boundary after refinement.
+    std::vector<double> current_signature;
+    unsigned int        system_setups = 0;
     // Right-hand side of the body's own Dirichlet and Neumann data, and
     // the G columns of the contact element ends, whose data change with
     // every call of solve().
