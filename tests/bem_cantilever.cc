@@ -1,7 +1,8 @@
 // DESCRIPTION: BEM convergence for the Timoshenko-Goodier cantilever
 // (L = 8, D = 2, parabolic end shear P = 1, exact displacement on x = 0,
 // plane strain): nodal displacements, the unknown tractions on x = 0 and
-// interior stresses converge at rate ~2; finest errors against BEM.md §6(d)
+// interior stresses converge at rate ~2; finest errors against
+// doc/bem-method.md §6(d)
 #include <deal.II/base/function.h>
 
 #include <deal.II/grid/grid_generator.h>
@@ -157,10 +158,12 @@ main()
   // at the Dirichlet-Neumann corners (0, +-D/2), where collocation does not
   // enforce the corner compatibility t_y = -sigma_xy = 0 of the unique
   // stress tensor: there the error is O(h) (measured 0.34, 0.16, 0.072,
-  // 0.034, 0.016 for h = 1/2 ... 1/32 in t_y; BEM.md §6: "O(h^1.1-1.6)
-  // near corners and BC junctions"). Away from the corners: O(h^2).
+  // 0.034, 0.016 for h = 1/2 ... 1/32 in t_y; doc/bem-method.md §6:
+  // "O(h^1.1-1.6) near corners and BC junctions"). Away from the corners:
+  // O(h^2).
   study.check_rates(1.7, "traction on x = 0");
-  // Note at h = 0.0625: u 3.3e-3, t 5.2e-3, sigma 2.4e-3; same order.
+  // doc/bem-method.md §6(d) at h = 0.0625: u 3.3e-3, t 5.2e-3, sigma 2.4e-3;
+  // same order.
   check(study.u.back() < 3.3e-2, "finest u error < 10 x 3.3e-3");
   check(study.t.back() < 5.2e-2, "finest t error < 10 x 5.2e-3");
   check(study.sigma.back() < 2.4e-2, "finest sigma error < 10 x 2.4e-3");

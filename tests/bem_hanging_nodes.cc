@@ -43,7 +43,7 @@ namespace
     }
   };
 
-  /** The paper's Omega_2 = (-2,2) x (0,1) (BEM.md, README §6): bottom
+  /** The paper's Omega_2 = (-2,2) x (0,1) (doc/method.md section 6): bottom
    * clamped (id 2), a non-uniform pressure on top (id 3), sides free. */
   BoundaryConditions<2>
   scene()

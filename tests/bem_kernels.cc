@@ -1,8 +1,8 @@
 // DESCRIPTION: Kelvin kernels U, T, D, S against the golden values of
-// BEM.md §1.4, the fused Somigliana integrand against the explicit kernels,
-// the balance of a point force, and the free term of corners (closed form
-// of BEM.md §2.1 with the A ln(L_in/L_out) term) against the diagonal blocks
-// the rigid-body trick produces in the assembled BEM system
+// doc/bem-method.md §1.4, the fused Somigliana integrand against the explicit
+// kernels, the balance of a point force, and the free term of corners (closed
+// form of doc/bem-method.md §2.1 with the A ln(L_in/L_out) term) against the
+// diagonal blocks the rigid-body trick produces in the assembled BEM system
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/grid/grid_generator.h>
@@ -83,7 +83,7 @@ main()
   const Point<2>       xi(0.1, -0.2), x(0.9, 0.3);
   const Tensor<1, 2>   n{{0.6, 0.8}};
 
-  // Golden values of BEM.md §1.4, verified there against finite
+  // Golden values of doc/bem-method.md §1.4, verified there against finite
   // differences of Hooke's law applied to U.
   const double u_ref[4] = {1.873439114403e-02,
                            1.021861592885e-02,
@@ -175,7 +175,7 @@ main()
 
   // A unit point force is balanced by the surrounding material: the
   // integral of T over a circle around xi with the normal pointing away
-  // from xi is -delta_ij (BEM.md §1.5); this fixes the sign of T.
+  // from xi is -delta_ij (doc/bem-method.md §1.5); this fixes the sign of T.
   {
     const QGauss<1> rule(32);
     Tensor<2, 2>    integral;

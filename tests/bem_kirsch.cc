@@ -2,7 +2,7 @@
 // a hole of radius 1, Kirsch tractions on the outer sides, free hole):
 // traction only, so the system is bordered with the rigid modes; interior
 // stresses (r = 1.3 ... 3.5) and nodal displacements (rigid part removed)
-// converge at rate ~2; finest errors against BEM.md §6(c)
+// converge at rate ~2; finest errors against doc/bem-method.md §6(c)
 #include <deal.II/base/function.h>
 
 #include <deal.II/grid/grid_generator.h>
@@ -155,9 +155,10 @@ main()
             << std::endl;
 
   // Smooth solution, corners of the square are Neumann-Neumann: both
-  // converge at 2.0 in the note (§6(c)).
+  // converge at 2.0 in doc/bem-method.md §6(c).
   study.check_rates(1.7);
-  // Note at N = 128 (hole): sigma/s0 2.2e-3, u 5.9e-4; same order.
+  // doc/bem-method.md §6(c) at N = 128 (hole): sigma/s0 2.2e-3, u 5.9e-4; same
+  // order.
   check(study.sigma.back() < 2.2e-2, "finest sigma/s0 error < 10 x 2.2e-3");
   check(study.u.back() < 5.9e-3, "finest u error < 10 x 5.9e-4");
 

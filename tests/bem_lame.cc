@@ -2,7 +2,7 @@
 // annulus a = 1, b = 2, inner pressure p = 1 given as contact traction
 // samples, rollers on the symmetry lines): interior stresses at r = 1.5
 // converge at rate ~2, nodal displacements and roller tractions converge
-// too; finest errors against the table of BEM.md §6(b)
+// too; finest errors against the table of doc/bem-method.md §6(b)
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
 
@@ -157,15 +157,15 @@ main()
   }
   study.print_table();
 
-  // Rates: interior stresses O(h^2) (BEM.md §6); tractions in the max
-  // norm are limited by the corners where the polygonal arcs meet the
+  // Rates: interior stresses O(h^2) (doc/bem-method.md §6); tractions in the
+  // max norm are limited by the corners where the polygonal arcs meet the
   // rollers: there the polygon's corner angle is 90 deg + h/2 and the
   // pressure acts on the polygon normal, an O(h) perturbation of the
-  // corner state (note: 1.15-1.6; we measure ~0.9 with twice as many
-  // elements on the straight edges). Away from those corners the note
-  // measured 1.9-2.5 for t.
+  // corner state (doc/bem-method.md §6(b): 1.15-1.6; we measure ~0.9 with twice
+  // as many elements on the straight edges). Away from those corners
+  // doc/bem-method.md §6(b) measured 1.9-2.5 for t.
   study.check_rates(1.3, "roller traction");
-  // Finest level (N/arc = 128) against BEM.md §6(b), same order of
+  // Finest level (N/arc = 128) against doc/bem-method.md §6(b), same order of
   // magnitude: sigma 3.7e-5, u 7.9e-5, t 1.7e-3.
   check(study.sigma.back() < 3.7e-4, "finest sigma error < 10 x 3.7e-5");
   check(study.u.back() < 7.9e-4, "finest u error < 10 x 7.9e-5");

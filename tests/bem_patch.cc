@@ -34,7 +34,8 @@ using namespace ddcontact::testing;
 namespace
 {
   /** u = eps x + omega (-y, x) + c: the displacement of a uniform stress
-   * state sigma0 in plane strain (BEM.md §6a) plus a rigid motion. */
+   * state sigma0 in plane strain (doc/bem-method.md §6a) plus a rigid motion.
+   */
   class LinearField : public Function<2>
   {
   public:
@@ -225,9 +226,9 @@ namespace
 
     // The linear field is represented exactly, so every error is a
     // quadrature error of the matrix entries and of the identity: the
-    // distance-dependent rule of BEM.md §4.2 is accurate to ~1e-8 per
-    // element; a wrong sign, free term or corner treatment gives O(1e-2)
-    // and more (BEM.md §2.7: tied corner tractions -> 61 %).
+    // distance-dependent rule of doc/bem-method.md §4.2 is accurate to ~1e-8
+    // per element; a wrong sign, free term or corner treatment gives O(1e-2)
+    // and more (doc/bem-method.md §2.7: tied corner tractions -> 61 %).
     check("boundary displacement (max, relative)", u_error, 1e-8);
     check("boundary traction at element ends (max, / |sigma0|)", t_error, 1e-7);
     check("stress at all cell quadrature points", s_error, 1e-7);

@@ -17,9 +17,11 @@
 #include <ddcontact/adaptivity/fem_bem_estimator.h>
 #include <ddcontact/body/elastic_body.h>
 
+#include "scene_tools.h"
 #include "test_tools.h"
 
 #include <cmath>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -78,13 +80,81 @@ namespace
   const std::string r2 = "(x^2 + (y-y0)^2)";
   const std::string sxx =
     "cs*(m*(-(y-y0))/" + r2 + " + 2*x^2*(y-y0)/" + r2 + "^2)";
-  const std::string sxy    = "cs*(m*x/" + r2 + " + 2*x*(y-y0)^2/" + r2 + "^2)";
+  const std::string sxy = "cs*(m*x/" + r2 + " + 2*x*(y-y0)^2/" + r2 + "^2)";
+  const std::string syy = "cs*(m*(y-y0)/" + r2 + " + 2*(y-y0)^3/" + r2 + "^2)";
   const std::string u_expr = "-P*cu*(-(y-y0)*x/" + r2 + "); -P*cu*(k*0.5*log(" +
                              r2 + ") - (y-y0)^2/" + r2 + ")";
+
+  /** The block with the exact traction of the Kelvin field on its free
+   * sides and top and its displacement on the bottom, adapted with the
+   * scaled FEM-BEM indicators and Doerfler marking until the estimate of
+   * the relative energy-norm error is below @p target. Returns the
+   * estimate and the true relative energy-norm error of the last mesh. */
+  std::pair<double, double>
+  adapt_to_target(const double target, unsigned int &cycles)
+  {
+    std::ofstream prm("fem_bem_target.prm");
+    prm << "set Scene name = fem_bem_target\n"
+        << "set Output directory = output/fem_bem_target\n"
+        << "set Bodies = block\n"
+        << "set Constants = " << constants() << "\n"
+        << "subsection Adaptation\n  set Mode = nested\n"
+        << "  set Bodies = block\n  set Estimator = fem-bem-scaled\n"
+        << "  set Marking = doerfler\n  set Fraction = 0.5\n"
+        << "  set Target error = " << target << "\n  set Max cycles = 12\n"
+        << "end\n"
+        << "subsection Body block\n  subsection Mesh\n"
+        << "    set Corner 1 = -2, 0\n    set Corner 2 = 2, 1\n"
+        << "    set Subdivisions = 16, 4\n  end\n"
+        << "  subsection Material\n    set Young's modulus = " << E
+        << "\n    set Poisson's ratio = " << nu << "\n  end\n"
+        << "  subsection Boundary conditions\n"
+        << "    set Dirichlet = 2: xy: " << u_expr << "\n"
+        << "    set Neumann = 0: -(" << sxx << "); -(" << sxy
+        << ") | 1: " << sxx << "; " << sxy << " | 3: " << sxy << "; " << syy
+        << "\n  end\nend\n";
+    prm.close();
+    const auto simulation = run_scene("fem_bem_target.prm", {}, {});
+    cycles                = simulation->results().n_adaptation_steps;
+
+    const auto &body    = *simulation->get_bodies()[0];
+    const auto  sigma_F = body.stresses().at_quadrature_points();
+    FEValues<2> fe_values(body.get_mapping(),
+                          body.get_fe(),
+                          body.get_cell_quadrature(),
+                          update_quadrature_points | update_JxW_values);
+    double      error2 = 0, norm2 = 0;
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+    {
+      fe_values.reinit(cell);
+      const unsigned int c = cell->active_cell_index();
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const auto exact = exact_stress(fe_values.quadrature_point(q));
+        error2 += energy(sigma_F[c][q] - exact) * fe_values.JxW(q);
+        norm2 += energy(exact) * fe_values.JxW(q);
+      }
+    }
+    return {relative_energy_error_estimate(simulation->get_adaptations()),
+            std::sqrt(error2 / norm2)};
+  }
+
+  /** sigma : C^{-1} sigma in plane strain, written out independently of
+   * the estimator: eps = ((1+nu) sigma - nu (1+nu) tr(sigma) I) / E. */
+  double
+  energy(const SymmetricTensor<2, 2> &s)
+  {
+    const auto strain =
+      ((1 + nu) * s - nu * (1 + nu) * trace(s) * unit_symmetric_tensor<2>()) /
+      E;
+    return s * strain;
+  }
 
   struct Result
   {
     double h, true_error, estimate, bem_error, eta_max_printed, eta_max_scaled;
+    // Relative energy-norm error of sigma_F and its FEM-BEM estimate.
+    double   true_energy_error, energy_estimate;
     Point<2> worst_cell;
   };
 
@@ -157,7 +227,7 @@ namespace
                           body.get_fe(),
                           body.get_cell_quadrature(),
                           update_quadrature_points | update_JxW_values);
-    double      fem2 = 0, bem2 = 0;
+    double      fem2 = 0, bem2 = 0, energy_error2 = 0, energy_norm2 = 0;
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
     {
       fe_values.reinit(cell);
@@ -169,14 +239,19 @@ namespace
           (sigma_F[c][q] - exact) * (sigma_F[c][q] - exact) * fe_values.JxW(q);
         bem2 +=
           (sigma_B[c][q] - exact) * (sigma_B[c][q] - exact) * fe_values.JxW(q);
+        energy_error2 += energy(sigma_F[c][q] - exact) * fe_values.JxW(q);
+        energy_norm2 += energy(exact) * fe_values.JxW(q);
       }
     }
 
     Result r;
-    r.h               = body.get_mesh().min_cell_diameter();
-    r.true_error      = std::sqrt(fem2);
-    r.bem_error       = std::sqrt(bem2);
-    r.estimate        = printed.global_error();
+    r.h                 = body.get_mesh().min_cell_diameter();
+    r.true_error        = std::sqrt(fem2);
+    r.bem_error         = std::sqrt(bem2);
+    r.estimate          = printed.global_error();
+    r.true_energy_error = std::sqrt(energy_error2 / energy_norm2);
+    r.energy_estimate =
+      printed.energy_norm_error() / printed.energy_norm_of_stress();
     r.eta_max_printed = printed.indicators().linfty_norm();
     r.eta_max_scaled  = scaled.indicators().linfty_norm();
     for (const auto &cell : body.get_triangulation().active_cell_iterators())
@@ -221,7 +296,7 @@ main(int argc, char **argv)
   }
 
   // 1. Effectivity under uniform refinement. The BEM stress error is
-  //    O(h^2) and the Q1 stress error O(h) (BEM.md section 6), so
+  //    O(h^2) and the Q1 stress error O(h) (doc/bem-method.md §6), so
   //    |effectivity - 1| <= ||sigma_B - sigma||/||sigma_F - sigma|| (the
   //    triangle inequality, Theorem 6) must shrink like h; a band of
   //    [0.8, 1.25] holds from the coarsest mesh on.
@@ -242,6 +317,16 @@ main(int argc, char **argv)
     const double eff = r.estimate / r.true_error;
     check(eff > 0.8 && eff < 1.25,
           "effectivity " + std::to_string(eff) + " in [0.8, 1.25]");
+  }
+  // The same for the relative energy-norm error, the estimate that
+  // Adaptation/Target error is held against (same argument, same band).
+  for (const auto &r : results)
+  {
+    const double eff = r.energy_estimate / r.true_energy_error;
+    std::cout << "relative energy-norm error " << r.true_energy_error
+              << ", estimate " << r.energy_estimate << std::endl;
+    check(eff > 0.8 && eff < 1.25,
+          "energy-norm effectivity " + std::to_string(eff) + " in [0.8, 1.25]");
   }
   const double rate_fem =
     std::log2(results[1].true_error / results[2].true_error);
@@ -272,12 +357,29 @@ main(int argc, char **argv)
             std::log2(results[1].eta_max_scaled / results[2].eta_max_scaled)) +
           ")");
 
-  // 3. The largest indicator sits under the load (0, 1).
+  // 3. Adaptation/Target error: the adaptive loop refines until the
+  //    estimate is at most the target and then stops; with the
+  //    effectivity band of part 1 the true error is then at most 1.25
+  //    times the target.
+  {
+    const double target               = 0.03;
+    unsigned int cycles               = 0;
+    const auto [estimate, true_error] = adapt_to_target(target, cycles);
+    std::cout << "target " << target << ": " << cycles << " cycles, estimate "
+              << estimate << ", true error " << true_error << std::endl;
+    check(cycles > 0, "the first mesh misses the target: refined");
+    check(estimate <= target, "stopped with the estimate within the target");
+    check(true_error <= 1.25 * target, "true error within the target");
+    check(true_error > 0.5 * target,
+          "stopped at the first mesh within the target, not later");
+  }
+
+  // 4. The largest indicator sits under the load (0, 1).
   for (const auto &r : results)
     check(r.worst_cell.distance(Point<2>(0., 1.)) < 0.5,
           "largest eta under the load");
 
-  // 4. Definitions 1-2 on a unit square cell: each of the four triangles
+  // 5. Definitions 1-2 on a unit square cell: each of the four triangles
   //    of three vertices is a right isosceles triangle with legs 1, so
   //    D = sqrt 2 and d = 2 - sqrt 2, K = D/d.
   {

@@ -1,6 +1,6 @@
 // DESCRIPTION: Hertz contact (plane strain): half-width and peak pressure
-// converge to the closed form of HERTZ.md under refinement toward the contact
-// zone
+// converge to the closed form of doc/verification.md §2.2 under refinement
+// toward the contact zone
 #include <deal.II/base/convergence_table.h>
 
 #include <ddcontact/simulation.h>
@@ -41,8 +41,9 @@ main(int argc, char **argv)
     const auto  &pts   = simulation.get_contact_pairs()[0]->points();
     const double P     = state.force_1.norm();
 
-    // Closed form at the computed force (HERTZ.md: in plane strain the
-    // approach does not fix P, so compare at the P the run produced).
+    // Closed form at the computed force (doc/verification.md §2.2: in plane
+    // strain the approach does not fix P, so compare at the P the run
+    // produced).
     const double a_exact  = std::sqrt(4. * P * R / (M_PI * E_star));
     const double p0_exact = std::sqrt(P * E_star / (M_PI * R));
 

@@ -1,4 +1,4 @@
-// DESCRIPTION: what a run reports about itself (issue 18): a run stopped by
+// DESCRIPTION: what a run reports about itself: a run stopped by
 // Max iterations while its residual falls is "not_converged" (not
 // "diverged") and still writes the VTU/PVD of its last iterate; a growing
 // residual is "diverged"; a soft penalty gets the over-penetration warning

@@ -1,4 +1,4 @@
-// DESCRIPTION: stability on stiff and extreme cases (issue 6): SI against
+// DESCRIPTION: stability on stiff and extreme cases: SI against
 // MPa/cm, no contact, zero gap, initial penetration, tiny approach, stiff
 // penalty, gamma above gamma*, nu = 0.4999 (Q2, reduced-integration Q1)
 #include <ddcontact/simulation.h>

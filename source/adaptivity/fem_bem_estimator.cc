@@ -3,6 +3,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <ddcontact/adaptivity/fem_bem_estimator.h>
+#include <ddcontact/parameter_tools.h>
 
 #include <cmath>
 
@@ -43,13 +44,21 @@ namespace ddcontact
     time.bem_solve += timer.wall_time();
 
     timer.restart();
-    // Under mpirun every process holds the body and its boundary solution:
-    // the interior evaluation, the estimator's main cost, is split.
+    // On one process the BEM stress is interpolated from the support
+    // points inside the body (a fraction of the quadrature points). Under
+    // mpirun every process holds the body and its boundary solution: the
+    // evaluation at the quadrature points, the estimator's main cost, is
+    // split between them.
     const auto sigma_B =
-      bem.stress_at_quadrature_points(body.get_dof_handler(),
-                                      body.get_mapping(),
-                                      body.get_cell_quadrature(),
-                                      MPI_COMM_WORLD);
+      (!body.is_mesh_distributed() && parsing::n_world_processes() == 1)
+        ? bem.interpolated_stress_at_quadrature_points(
+            body.get_dof_handler(),
+            body.get_mapping(),
+            body.get_cell_quadrature())
+        : bem.stress_at_quadrature_points(body.get_dof_handler(),
+                                          body.get_mapping(),
+                                          body.get_cell_quadrature(),
+                                          MPI_COMM_WORLD);
     time.bem_interior += timer.wall_time();
 
     // (24), (27): cell norms of sigma_B - sigma_F and the global norm of

@@ -167,8 +167,8 @@ namespace ddcontact
           if (point.node != numbers::invalid_unsigned_int)
             diagonal_blocks[point.node] = blocks.h[point.node];
 
-          // Column swapping (BEM.md §3.1): c u + H u - G t = 0 with known
-          // values moved to the right-hand side.
+          // Column swapping (doc/bem-method.md §3.1): c u + H u - G t = 0 with
+          // known values moved to the right-hand side.
           for (unsigned int r = 0; r < point.rows.size(); ++r)
           {
             const unsigned int row = point.rows[r], i = point.components[r];
@@ -204,7 +204,7 @@ namespace ddcontact
       },
       8);
 
-    // Border the system with the free rigid modes (BEM.md §5.1):
+    // Border the system with the free rigid modes (doc/bem-method.md §5.1):
     // [A R; R^T 0] [x; lambda] = [f; 0]. The solution has no rigid
     // component and lambda measures the equilibrium defect of the data.
     for (unsigned int q = 0; q < n_modes; ++q)
@@ -335,7 +335,7 @@ namespace ddcontact
     }
     else
       // Embarrassingly parallel: each point reads the boundary solution
-      // and writes its own result (BEM.md §4.4).
+      // and writes its own result (doc/bem-method.md §4.4).
       parallel::apply_to_subranges(
         std::size_t(0),
         points.size(),
@@ -349,6 +349,7 @@ namespace ddcontact
 
     std::lock_guard<std::mutex> lock(*timing_mutex);
     timing_data.interior += timer.wall_time();
+    interior_points = points.size();
     return stress;
   }
 

@@ -69,11 +69,11 @@ namespace ddcontact
 
       /** Recursive bisection of [s_begin, s_end] until each piece is no
        * longer than kappa times its distance to xi, then 8 Gauss points per
-       * piece (BEM.md §4.2). The note uses kappa = 1; we take kappa = 1/2:
-       * on graded meshes (neighbour faces twice as long) the uniform-stress
-       * patch test at 1 % of an element length from the boundary improved
-       * from 1.4e-7 to 7e-9, at the price of a few more points on the one or
-       * two nearest elements. The depth limit only matters for points on
+       * piece (doc/bem-method.md §4.2). doc/bem-method.md uses kappa = 1; we
+       * take kappa = 1/2: on graded meshes (neighbour faces twice as long) the
+       * uniform-stress patch test at 1 % of an element length from the boundary
+       * improved from 1.4e-7 to 7e-9, at the price of a few more points on the
+       * one or two nearest elements. The depth limit only matters for points on
        * the element itself, which the identities exclude. */
       template <typename Integrand>
       void
@@ -102,12 +102,13 @@ namespace ddcontact
       }
 
       /**
-       * The distance-dependent rule of BEM.md §4.2 for a regular (source not
-       * on the element) but possibly nearly singular element integral:
-       * f(x, s, w) is called with the field point, the local coordinate and
-       * the weight including the Jacobian. The 3-point tier for d >= 12 L is
-       * ours: the Bernstein-ellipse bound (4d/L)^(-2n) and the 9.5e-8 that
-       * the note measured for n = 3 at d = 8 L put it below 1e-8.
+       * The distance-dependent rule of doc/bem-method.md §4.2 for a regular
+       * (source not on the element) but possibly nearly singular element
+       * integral: f(x, s, w) is called with the field point, the local
+       * coordinate and the weight including the Jacobian. The 3-point tier for
+       * d >= 12 L is ours: the Bernstein-ellipse bound (4d/L)^(-2n) and
+       * the 9.5e-8 that doc/bem-method.md §4.2 measured for n = 3 at d = 8 L
+       * put it below 1e-8.
        */
       template <typename Integrand>
       void
@@ -215,8 +216,8 @@ namespace ddcontact
             (element.nodes[0] == point.node || element.nodes[1] == point.node))
         {
           // Closed forms on the two elements adjacent to the collocation
-          // node (BEM.md §2.4): the log kernel integrated exactly, and T
-          // times the far shape function, which is constant there because
+          // node (doc/bem-method.md §2.4): the log kernel integrated exactly,
+          // and T times the far shape function, which is constant there because
           // dr/dn = 0 and N_far = s/L cancels the 1/s. The near H block is
           // left to the rigid-body trick below.
           const unsigned int k     = element.nodes[0] == point.node ? 0 : 1;
@@ -233,10 +234,10 @@ namespace ddcontact
         }
         else if (e == point.element)
         {
-          // Off-node collocation point inside its own element (BEM.md §2.7):
-          // Cauchy principal values of T N_a, T N_b and the log integrals in
-          // closed form, with the smooth-point free term delta/2 spread on
-          // the two nodes by the shape functions.
+          // Off-node collocation point inside its own element
+          // (doc/bem-method.md §2.7): Cauchy principal values of T N_a, T N_b
+          // and the log integrals in closed form, with the smooth-point free
+          // term delta/2 spread on the two nodes by the shape functions.
           const double       s0 = point.s0, s_a = s0 * L, s_b = (1. - s0) * L;
           const double       log_ratio = std::log(s_b / s_a);
           const double       pv_a      = (s_b * log_ratio - L) / L;
@@ -278,10 +279,10 @@ namespace ddcontact
 
       if (point.node != numbers::invalid_unsigned_int)
       {
-        // Rigid-body (row-sum) trick (BEM.md §2.3): a translation with zero
-        // traction solves the problem, so the H blocks of a row sum to zero.
-        // This yields the free term c_ij plus the principal value of T N_i
-        // on the adjacent elements at any corner angle.
+        // Rigid-body (row-sum) trick (doc/bem-method.md §2.3): a translation
+        // with zero traction solves the problem, so the H blocks of a row sum
+        // to zero. This yields the free term c_ij plus the principal value of T
+        // N_i on the adjacent elements at any corner angle.
         Tensor<2, 2> sum;
         for (unsigned int m = 0; m < nodes.size(); ++m)
           if (m != point.node)
@@ -295,8 +296,8 @@ namespace ddcontact
                       const KelvinSolution &kelvin,
                       const Point<2>       &xi)
     {
-      // Somigliana stress identity (BEM.md §1.3, §4.1) with the adaptive
-      // rule: the first FEM quadrature points lie at 0.21 h from the
+      // Somigliana stress identity (doc/bem-method.md §1.3, §4.1) with the
+      // adaptive rule: the first FEM quadrature points lie at 0.21 h from the
       // boundary, where fixed Gauss rules fail completely.
       SymmetricTensor<2, 2> sigma;
       for (unsigned int e = 0; e < mesh.get_elements().size(); ++e)
@@ -321,7 +322,7 @@ namespace ddcontact
                             const KelvinSolution &kelvin,
                             const Point<2>       &xi)
     {
-      // Somigliana displacement identity (BEM.md §1.3).
+      // Somigliana displacement identity (doc/bem-method.md §1.3).
       Tensor<1, 2> result;
       for (unsigned int e = 0; e < mesh.get_elements().size(); ++e)
         integrate_boundary_solution(

@@ -151,9 +151,9 @@ namespace ddcontact
                node.element_out != numbers::invalid_unsigned_int,
              ExcInternalError());
 
-    // In 2D no hanging node lies on the boundary of a single body (BEM.md
-    // §2.8), so the trace of the constrained Q1 space is the space of
-    // continuous piecewise linears on this boundary mesh.
+    // In 2D no hanging node lies on the boundary of a single body
+    // (doc/bem-method.md §2.8), so the trace of the constrained Q1 space is the
+    // space of continuous piecewise linears on this boundary mesh.
     {
       AffineConstraints<double> hanging_nodes;
       DoFTools::make_hanging_node_constraints(dof_handler, hanging_nodes);
@@ -166,8 +166,8 @@ namespace ddcontact
     }
 #endif
 
-    // Nondimensionalise (BEM.md §3.3, §5.2): lengths by the bounding-box
-    // diagonal of the boundary, which keeps the body far from the
+    // Nondimensionalise (doc/bem-method.md §3.3, §5.2): lengths by the
+    // bounding-box diagonal of the boundary, which keeps the body far from the
     // degenerate scale of the log kernel; tractions by mu.
     Point<2> lower = nodes[0].x_physical, upper = nodes[0].x_physical;
     for (const auto &node : nodes)
@@ -199,7 +199,7 @@ namespace ddcontact
   {
     // Boundary data of the body: which components are prescribed where,
     // and their values (displacements at nodes, tractions sampled at the
-    // element ends with the element's own data, BEM.md §2.2).
+    // element ends with the element's own data, doc/bem-method.md §2.2).
     n_contact = 0;
     for (auto &element : elements)
     {
@@ -259,7 +259,7 @@ namespace ddcontact
     // as displacement. Two ends meeting at a straight (smooth) node with
     // the displacement prescribed on both sides share one unknown; at a
     // genuine corner they are independent and get an extra collocation row
-    // (BEM.md §2.7).
+    // (doc/bem-method.md §2.7).
     const auto is_smooth =
       [&](const unsigned int e_in, const unsigned int e_out)
     {
@@ -337,7 +337,7 @@ namespace ddcontact
     // A rigid motion a e_x + b e_y + c (-y, x) is left free by the
     // Dirichlet data if it vanishes at every prescribed nodal component,
     // i.e. if (a, b, c) is in the null space of the Gram matrix of those
-    // constraints. A floating body keeps all three (BEM.md §5.1).
+    // constraints. A floating body keeps all three (doc/bem-method.md §5.1).
     SymmetricTensor<2, 3> gram;
     for (const auto &node : nodes)
       for (unsigned int c = 0; c < 2; ++c)

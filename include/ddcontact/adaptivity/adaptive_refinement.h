@@ -18,7 +18,7 @@ namespace ddcontact
   using namespace dealii;
 
   /**
-   * The element diameters of Definitions 1-2 of the paper README: for a
+   * The element diameters of Definitions 1-2 of doc/method.md: for a
    * triangle, D_e and d_e are the diameters of its circumscribed and
    * inscribed circles; for a quadrilateral, the largest D and the smallest
    * d over the four triangles formed by three of its vertices. K_e =

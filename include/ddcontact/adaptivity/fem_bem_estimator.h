@@ -21,7 +21,7 @@ namespace ddcontact
   using namespace dealii;
 
   /**
-   * The FEM-BEM error estimator of section 4 of the paper README, (22)-(27),
+   * The FEM-BEM error estimator of section 4 of doc/method.md, (22)-(27),
    * for one body: the body problem (20) of the current DD iteration is
    * solved a second time by the BEM on the boundary mesh of the FEM mesh
    * (25)-(26), with the same data (Dirichlet (5), tractions (6) and the

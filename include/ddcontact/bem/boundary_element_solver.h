@@ -94,6 +94,33 @@ namespace ddcontact
       const Quadrature<2> &quadrature,
       const MPI_Comm       communicator = MPI_COMM_SELF) const;
 
+    /**
+     * sigma_B at the quadrature points of every active cell as the
+     * estimator needs it, at a fraction of the cost: the Somigliana
+     * identity is evaluated at the support points of the body's scalar
+     * element (Q_p or P_p; shared by neighbouring cells, about 1/(p+1)^2 of
+     * the quadrature points per cell for p = 1) and interpolated to the
+     * quadrature points, except in the cells that touch the boundary,
+     * where the identity is singular at the support points and is
+     * evaluated at the quadrature points themselves. The interpolation
+     * error is O(h^(p+1)), an order above the FEM stress error O(h^p) that
+     * the estimator measures. One process, serial mesh only (the others
+     * use stress_at_quadrature_points()).
+     */
+    std::vector<std::vector<SymmetricTensor<2, 2>>>
+    interpolated_stress_at_quadrature_points(
+      const DoFHandler<2> &dof_handler,
+      const Mapping<2>    &mapping,
+      const Quadrature<2> &quadrature) const;
+
+    /** Number of points at which the last interior evaluation computed
+     * the Somigliana identity. */
+    std::size_t
+    n_interior_points() const
+    {
+      return interior_points;
+    }
+
     unsigned int
     n_nodes() const;
 
@@ -175,7 +202,7 @@ namespace ddcontact
 
     /** Boundary solution: traction at end @p end (0 = start, 1 = end in the
      * direction of travel, body on the left) of element @p e, physical
-     * units. Tractions are stored per element end (BEM.md §2.2). */
+     * units. Tractions are stored per element end (doc/bem-method.md §2.2). */
     Tensor<1, 2>
     element_traction(unsigned int e, unsigned int end) const;
 
@@ -199,13 +226,14 @@ namespace ddcontact
     /**
      * The 2x2 diagonal block of the BIE at node @p i as produced by the
      * rigid-body trick (free term c_ij plus the Cauchy principal value on
-     * the two adjacent elements, dimensionless; BEM.md §2.1, §2.3).
+     * the two adjacent elements, dimensionless; doc/bem-method.md §2.1, §2.3).
      */
     Tensor<2, 2>
     diagonal_block(unsigned int i) const;
 
     /** Number of extra (off-node) collocation rows at corners with the same
-     * displacement component prescribed on both sides (BEM.md §2.7). */
+     * displacement component prescribed on both sides (doc/bem-method.md §2.7).
+     */
     unsigned int
     n_extra_collocation_rows() const;
 
@@ -215,7 +243,7 @@ namespace ddcontact
     n_rigid_modes() const;
 
     /** Length scale L_ref (bounding-box diagonal of the boundary) used to
-     * nondimensionalise the system (BEM.md §3.3). */
+     * nondimensionalise the system (doc/bem-method.md §3.3). */
     double
     length_scale() const;
 
@@ -263,6 +291,7 @@ namespace ddcontact
     // Interior evaluations may run concurrently (const); the mutex sits
     // behind a pointer so that the solver stays movable.
     mutable Timings             timing_data;
+    mutable std::size_t         interior_points = 0;
     std::unique_ptr<std::mutex> timing_mutex = std::make_unique<std::mutex>();
   };
 } // namespace ddcontact

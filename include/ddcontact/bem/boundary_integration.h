@@ -17,13 +17,14 @@ namespace ddcontact
 
   /**
    * Integration over the straight elements of a BoundaryMesh (scaled
-   * coordinates, kernels with mu = 1, BEM.md §2.4, §4.2):
+   * coordinates, kernels with mu = 1, doc/bem-method.md §2.4, §4.2):
    *  - regular and nearly singular element integrals by Gauss rules whose
    *    number of points grows as the source point approaches the element,
    *    with adaptive bisection close to it;
    *  - the singular integrals on the elements adjacent to a collocation
    *    point in closed form, and the free term by the rigid-body trick;
-   *  - the Somigliana identities for interior points (BEM.md §1.3, §4.1).
+   *  - the Somigliana identities for interior points (doc/bem-method.md §1.3,
+   * §4.1).
    */
   namespace BoundaryIntegration
   {
@@ -50,7 +51,7 @@ namespace ddcontact
      * The H and G blocks of the boundary integral equation collocated at
      * @p point: closed forms on the elements through the point, the
      * distance-dependent rule on the others, and at a node the diagonal
-     * block from the rigid-body trick (BEM.md §2.3, §2.4, §2.7).
+     * block from the rigid-body trick (doc/bem-method.md §2.3, §2.4, §2.7).
      */
     void
     collocation_row_blocks(const BoundaryMesh                   &mesh,

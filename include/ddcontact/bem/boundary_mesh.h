@@ -21,18 +21,18 @@ namespace ddcontact
 
   /**
    * The boundary mesh of one FEM body for the direct boundary element
-   * method (BEM.md §2), with its boundary data and the numbering of the
-   * unknowns:
+   * method (doc/bem-method.md §2), with its boundary data and the numbering of
+   * the unknowns:
    *  - one node per boundary vertex, one straight 2-node element per active
    *    boundary face (25), oriented so that the body lies on the left
    *    (outer boundaries counter-clockwise); on a distributed mesh (p4est)
    *    the faces of all processes are gathered on every process;
    *  - coordinates scaled by the bounding-box diagonal of the boundary
-   *    (BEM.md §3.3), tractions by mu;
+   *    (doc/bem-method.md §3.3), tractions by mu;
    *  - the unknowns: nodal displacement components that are not prescribed,
    *    element-end traction components where the displacement is
-   *    (BEM.md §2.2, §2.7), the collocation points and rows, and the rigid
-   *    modes left free by the Dirichlet data (§5.1);
+   *    (doc/bem-method.md §2.2, §2.7), the collocation points and rows, and the
+   * rigid modes left free by the Dirichlet data (§5.1);
    *  - the boundary solution, prescribed or solved for, stored on the nodes
    *    and element ends.
    */
@@ -76,7 +76,7 @@ namespace ddcontact
     };
 
     /** A collocation point xi with the BIE components collocated there:
-     * a node, or an extra point inside an element (BEM.md §2.7). */
+     * a node, or an extra point inside an element (doc/bem-method.md §2.7). */
     struct CollocationPoint
     {
       Point<2>                  x;
@@ -144,7 +144,8 @@ namespace ddcontact
       return n_boundary_unknowns;
     }
 
-    /** Number of off-node collocation rows at D-D corners (BEM.md §2.7). */
+    /** Number of off-node collocation rows at D-D corners (doc/bem-method.md
+     * §2.7). */
     unsigned int
     n_extra_collocation_rows() const
     {

@@ -17,7 +17,7 @@ namespace ddcontact
    * kernels of the Somigliana identities, the building blocks of the
    * boundary element reference solution sigma_B of the estimator (23)-(27).
    *
-   * Conventions (doc/BEM.md of the shared notes, §1.1; the signs of T, D
+   * Conventions (doc/bem-method.md §1.1; the signs of T, D
    * and S depend on them): xi is the source point (collocation node or
    * interior point), x the field point on the boundary, r_vec = x - xi
    * (field minus source), r_i = (x_i - xi_i)/r, n the unit outward normal at
@@ -90,7 +90,7 @@ namespace ddcontact
      * two boundary rays leave xi in the directions @p direction_out (along
      * the element that starts at xi) and @p direction_in (back along the
      * element that ends at xi); the body occupies the counter-clockwise
-     * sector from the first to the second (BEM.md §2.1):
+     * sector from the first to the second (doc/bem-method.md §2.1):
      *   c_11 = psi/(2 pi) + (sin 2 theta2 - sin 2 theta1)/(8 pi (1-nu)), ...
      * A smooth point gives delta_ij/2.
      */
@@ -115,7 +115,7 @@ namespace ddcontact
   {
     // Plain doubles instead of tensor loops: this runs N_points x N_b x n_q
     // times. The contraction over k of D_kij t_k and S_kij u_k is written
-    // out term by term from the kernels of BEM.md §1.3.
+    // out term by term from the kernels of doc/bem-method.md §1.3.
     const double dx = x[0] - xi[0], dy = x[1] - xi[1];
     const double r2 = dx * dx + dy * dy, r = std::sqrt(r2);
     const double r0 = dx / r, r1 = dy / r;

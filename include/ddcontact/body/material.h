@@ -9,7 +9,7 @@ namespace ddcontact
 
   /**
    * Isotropic linear elastic material in plane strain: Hooke's law (2) of
-   * the paper README with the Lamé parameters
+   * doc/method.md with the Lamé parameters
    *   lambda = E nu / ((1+nu)(1-2nu)),  mu = E / (2(1+nu)).
    * The out-of-plane stress of plane strain is sigma_33 = nu (sigma_11 +
    * sigma_22); it enters the von Mises stress as in the paper.

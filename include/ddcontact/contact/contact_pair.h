@@ -27,7 +27,7 @@ namespace ddcontact
    * projection P(x) (body 2) together with the normal component of each
    * shape function there: u_1n(x) = sum_i a_i u_1[dofs_1[i]] and
    * u_2n(P(x)) = sum_i b_i u_2[dofs_2[i]], with n_2 = -n_1 (small-gap
-   * assumption of section 1 of the paper README).
+   * assumption of section 1 of doc/method.md).
    *
    * The load of the point, the same coefficients with the body's
    * constraints resolved (hanging and Dirichlet dofs replaced by their

@@ -1,0 +1,92 @@
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <ddcontact/bem/boundary_element_solver.h>
+
+namespace ddcontact
+{
+  std::vector<std::vector<SymmetricTensor<2, 2>>>
+  BoundaryElementSolver::interpolated_stress_at_quadrature_points(
+    const DoFHandler<2> &dof_handler,
+    const Mapping<2>    &mapping,
+    const Quadrature<2> &quadrature) const
+  {
+    const auto             &tria = dof_handler.get_triangulation();
+    const FiniteElement<2> &fe   = dof_handler.get_fe().base_element(0);
+    Assert(fe.n_components() == 1 && fe.has_support_points(),
+           ExcInternalError());
+    DoFHandler<2> scalar(tria);
+    scalar.distribute_dofs(fe);
+
+    // Cells with a vertex on the boundary keep their quadrature points.
+    std::vector<bool> boundary_vertex(tria.n_vertices(), false);
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          for (const unsigned int v : face->vertex_indices())
+            boundary_vertex[face->vertex_index(v)] = true;
+    const auto touches_boundary = [&](const auto &cell)
+    {
+      for (const unsigned int v : cell->vertex_indices())
+        if (boundary_vertex[cell->vertex_index(v)])
+          return true;
+      return false;
+    };
+
+    // The points: support points (each once) of the inner cells, then the
+    // quadrature points of the boundary cells.
+    const unsigned int                   n_q = quadrature.size();
+    std::vector<Point<2>>                points;
+    std::vector<unsigned int>            dof_point(scalar.n_dofs(),
+                                        numbers::invalid_unsigned_int);
+    std::vector<unsigned int>            first_point(tria.n_active_cells(),
+                                          numbers::invalid_unsigned_int);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    FEValues<2> values(mapping, fe, quadrature, update_quadrature_points);
+    for (const auto &cell : scalar.active_cell_iterators())
+      if (touches_boundary(cell))
+      {
+        values.reinit(cell);
+        first_point[cell->active_cell_index()] = points.size();
+        const auto &q_points                   = values.get_quadrature_points();
+        points.insert(points.end(), q_points.begin(), q_points.end());
+      }
+      else
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          if (dof_point[dofs[i]] == numbers::invalid_unsigned_int)
+          {
+            dof_point[dofs[i]] = points.size();
+            points.push_back(mapping.transform_unit_to_real_cell(
+              cell, fe.get_unit_support_points()[i]));
+          }
+      }
+
+    const auto stress = stress_at_points(points);
+
+    std::vector<std::vector<SymmetricTensor<2, 2>>> result(
+      tria.n_active_cells(), std::vector<SymmetricTensor<2, 2>>(n_q));
+    FEValues<2> shapes(mapping, fe, quadrature, update_values);
+    for (const auto &cell : scalar.active_cell_iterators())
+    {
+      auto &cell_result = result[cell->active_cell_index()];
+      if (const unsigned int first = first_point[cell->active_cell_index()];
+          first != numbers::invalid_unsigned_int)
+      {
+        for (unsigned int q = 0; q < n_q; ++q)
+          cell_result[q] = stress[first + q];
+        continue;
+      }
+      // The cell's own Lagrange interpolant of sigma_B.
+      shapes.reinit(cell);
+      cell->get_dof_indices(dofs);
+      for (unsigned int q = 0; q < n_q; ++q)
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          cell_result[q] +=
+            shapes.shape_value(i, q) * stress[dof_point[dofs[i]]];
+    }
+    return result;
+  }
+} // namespace ddcontact
