@@ -128,6 +128,11 @@ class Run:
     def path(self, name):
         return os.path.join(self.directory, name)
 
+    def rows(self, name):
+        """The rows of a CSV file of the run ([] when it is missing)."""
+        path = self.path(name)
+        return read_csv(path) if os.path.isfile(path) else []
+
     def pair_names(self):
         """The contact pairs, from summary.json or else from the files."""
         names = [c["pair"] for c in self.summary.get("contact", [])
@@ -440,10 +445,7 @@ class Plotter:
             self.save(fig, f"contact_{pair}.png")
 
     def convergence(self):
-        path = self.run.path("history.csv")
-        if not os.path.isfile(path):
-            return
-        rows = read_csv(path)
+        rows = self.run.rows("history.csv")
         if not rows:
             return
         k = [r["k"] for r in rows]
@@ -477,10 +479,7 @@ class Plotter:
 
     def adaptation(self):
         from matplotlib.ticker import MaxNLocator
-        path = self.run.path("statistics.csv")
-        if not os.path.isfile(path):
-            return
-        rows = read_csv(path)
+        rows = self.run.rows("statistics.csv")
         if not rows:
             return
         cycle = [r["cycle"] for r in rows]

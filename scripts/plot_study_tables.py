@@ -32,6 +32,15 @@ def rows(path):
         return list(csv.DictReader(f))
 
 
+def save(fig, out_dir, name):
+    fig.tight_layout()
+    os.makedirs(out_dir, exist_ok=True)
+    path = os.path.join(out_dir, name)
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
 def verdict(row):
     """The first word of the verdict column: ok, reported, reference,
     FAIL or WRONG."""
@@ -95,12 +104,7 @@ def stability(source, out_dir):
     bx.legend(fontsize=8, loc="lower left")
     fig.suptitle("Stability matrix (doc/stability.csv): no hang, crash, NaN "
                  "or wrong answer")
-    fig.tight_layout()
-    os.makedirs(out_dir, exist_ok=True)
-    path = os.path.join(out_dir, "verdicts.png")
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save(fig, out_dir, "verdicts.png")
 
 
 def scaling(source, out_dir):
@@ -170,12 +174,7 @@ def scaling(source, out_dir):
     bx.legend(fontsize=7, loc="center right")
     fig.suptitle("Runs on several MPI processes (doc/scaling.csv, "
                  "doc/scaling-memory.csv)")
-    fig.tight_layout()
-    os.makedirs(out_dir, exist_ok=True)
-    path = os.path.join(out_dir, "scaling.png")
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save(fig, out_dir, "scaling.png")
 
 
 def main():
