@@ -17,7 +17,7 @@
 #   scripts/error_vs_time.sh --quick       smoke test: one coarse run per
 #       strategy, a few seconds, no plots, plain python3; exit status 1 if a
 #       run fails or an error is not finite
-# Also prm/hertz.prm against the closed form of HERTZ.md.
+# Also prm/hertz.prm against the closed form of doc/verification.md §2.2.
 # Options: --exe PATH (no build), --out DIR (runs and, in quick mode, the
 # CSV go there), --no-plot.
 set -uo pipefail
@@ -160,9 +160,9 @@ for d in $S_DELTA_FIXED; do run "fembem-scaled-fixed-d$d" fembem-scaled-fixed pe
 for d in $S_DELTA_FINE; do run "fembem-scaled-anderson-o4-d$d" fembem-scaled-anderson-omega1-r4 penalty 1 1 "delta=$d" "${scaled[@]}" "${O4A[@]}" --set "Adaptation/Delta=$d" --set "$(relax anderson)"; done
 
 # Hertz (prm/hertz.prm): two large blocks, refined toward the contact
-# (Box refinement b), measured against the closed form at the computed force
-# (HERTZ.md): peak pressure, half-width (least-squares fit of p^2 against
-# x1^2) and the pressure profile. Exact contact (the scene's augmented
+# (Box refinement b), measured against the closed form at the computed
+# force (doc/verification.md §2.2): peak pressure, half-width (least-squares
+# fit of p^2 against x1^2) and the pressure profile. Exact contact (the scene's augmented
 # Lagrangian) and plain penalty, both with Anderson.
 if [ "$quick" = 1 ]; then H_BOX="3"; else H_BOX="3 4 5 6 7 8"; fi
 run_scene="$root/prm/hertz.prm"

@@ -245,7 +245,7 @@ def hertz_constants(run_dir):
 
 
 def hertz_errors(run_dir, q, prof):
-    """Closed form (HERTZ.md) at the computed force P: a = sqrt(4PR/(pi E*)),
+    """Closed form (doc/verification.md §2.2) at the computed force P: a = sqrt(4PR/(pi E*)),
     p0 = sqrt(P E* / (pi R)). The computed half-width is the least-squares
     fit of p^2 = p0^2 (1 - x^2/a^2) over the points in contact (as in
     doc/contact-dd.md), or the largest |x| in contact where fewer than two

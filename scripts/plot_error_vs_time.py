@@ -25,6 +25,12 @@ MEASURES = [
     ("err_energy", "energy-norm error of Omega_2 (bound)", "F"),
 ]
 LEVELS = [1e-2, 1e-3, 1e-4]
+# The rows of each figure: the strategies whose series name starts with the
+# prefix.
+FAMILIES = [("uniform meshes (monolithic Newton and DD)", "uniform"),
+            ("adapted by Kelly", "kelly"),
+            ("adapted by the FEM-BEM estimator", "fembem"),
+            ("Hertz scene, against the closed form", "hertz")]
 
 
 def style(series):
@@ -59,6 +65,64 @@ def reference_floor(ref, problem, key, measure):
     return R[key]["uncertainty"] / abs(R[key]["value"])
 
 
+def draw_series(ax, rs, name, measure, x, label, **extra):
+    """One strategy's runs, in run order (growing meshes), so that a run
+    faster than a coarser one shows as a step back."""
+    pts = [(r[x], max(r[measure], 1e-9)) for r in rs]
+    kw = style(name)
+    kw.update(extra)
+    ax.loglog([p[0] for p in pts], [p[1] for p in pts], label=label, **kw)
+
+
+def plot_measure(series, ref, measure, title, key, out_dir):
+    """One figure per error measure: a row of two panels (against wall time
+    and against unknowns) per family of strategies, each with its own
+    legend, so that no legend has more than eight entries; the adaptive rows
+    repeat the uniform monolithic P1 baseline in grey for comparison."""
+    drawn = {}
+    for name, rs in series.items():
+        rs = [r for r in rs if isinstance(r[measure], float)]
+        if rs:
+            drawn[name] = sorted(rs, key=lambda r: (r["dofs"], r["wall_time_s"]))
+    rows = [(label, [n for n in drawn if n.startswith(prefix)])
+            for label, prefix in FAMILIES]
+    rows = [(label, names) for label, names in rows if names]
+    fig, axes = plt.subplots(len(rows), 2, figsize=(13, 3.3 * len(rows) + 0.8),
+                             sharex="col", sharey=True, squeeze=False)
+    baseline = "uniform-monolithic-P1"
+    for (family, names), row in zip(rows, axes):
+        for name in names:
+            label = name + {"exact": " [vs exact]", "hertz": " [vs Hertz]"}.get(
+                drawn[name][0]["problem"], "")
+            for ax, x in zip(row, ("wall_time_s", "dofs")):
+                draw_series(ax, drawn[name], name, measure, x,
+                            label if x == "dofs" else None)
+        if baseline in drawn and baseline not in names \
+                and drawn[names[0]][0]["problem"] == "penalty":
+            for ax, x in zip(row, ("wall_time_s", "dofs")):
+                draw_series(ax, drawn[baseline], baseline, measure, x,
+                            baseline + " (for comparison)" if x == "dofs" else None,
+                            color="0.75", linewidth=2.5, zorder=0)
+        for ax in row:
+            for lv in LEVELS:
+                ax.axhline(lv, color="0.8", linewidth=0.8, zorder=0)
+            u = reference_floor(ref, "penalty", key, measure)
+            if math.isfinite(u) and u > 0 and not family.startswith("Hertz"):
+                ax.axhline(u, color="tab:red", linewidth=0.8, linestyle=":")
+            ax.grid(True, which="major", alpha=0.3)
+        row[0].set_ylabel("relative error\n(dimensionless)")
+        row[0].set_title(family, loc="left", fontsize=10)
+        row[1].legend(fontsize=8, loc="center left", bbox_to_anchor=(1.02, 0.5))
+    axes[-1][0].set_xlabel("wall time [s] (summary.json wall_time_s)")
+    axes[-1][1].set_xlabel("unknowns (FEM dofs of both bodies, count)")
+    for ax in axes[-1]:
+        ax.tick_params(labelbottom=True)
+    fig.suptitle("%s (red dotted: reference uncertainty)" % title)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, measure[4:] + ".png"), dpi=110)
+    plt.close(fig)
+
+
 def time_to_level(rows, measure, level):
     """Earliest wall time from which every run of the series (by time) has
     its error <= level: a lucky single crossing does not count."""
@@ -90,35 +154,7 @@ def main(csv_path, ref_path, out_dir):
         series.setdefault(r["series"], []).append(r)
 
     for measure, title, key in MEASURES:
-        fig, axes = plt.subplots(1, 2, figsize=(13, 5.2), sharey=True)
-        for name, rs in series.items():
-            rs = [r for r in rs if isinstance(r[measure], float)]
-            if not rs:
-                continue
-            rs = sorted(rs, key=lambda r: (r["dofs"], r["wall_time_s"]))
-            label = name + {"exact": " [vs exact]", "hertz": " [vs Hertz]"}.get(
-                rs[0]["problem"], "")
-            for ax, x in zip(axes, ("wall_time_s", "dofs")):
-                # In run order (growing meshes), so a run that is faster
-                # than a coarser one shows as a step back.
-                pts = [(r[x], max(r[measure], 1e-9)) for r in rs]
-                ax.loglog([p[0] for p in pts], [p[1] for p in pts],
-                          label=label if x == "dofs" else None, **style(name))
-        for ax in axes:
-            for lv in LEVELS:
-                ax.axhline(lv, color="0.8", linewidth=0.8, zorder=0)
-            u = reference_floor(ref, "penalty", key, measure)
-            if math.isfinite(u) and u > 0:
-                ax.axhline(u, color="tab:red", linewidth=0.8, linestyle=":")
-            ax.grid(True, which="major", alpha=0.3)
-        axes[0].set_xlabel("wall time [s] (summary.json wall_time_s)")
-        axes[1].set_xlabel("unknowns (FEM dofs of both bodies)")
-        axes[0].set_ylabel("relative error")
-        axes[1].legend(fontsize=7, loc="center left", bbox_to_anchor=(1.0, 0.5))
-        fig.suptitle("%s (red dotted: reference uncertainty)" % title)
-        fig.tight_layout()
-        fig.savefig(os.path.join(out_dir, measure[4:] + ".png"), dpi=110)
-        plt.close(fig)
+        plot_measure(series, ref, measure, title, key, out_dir)
 
     # Winners per level, separately for the penalised problem (the answer)
     # and for exact contact; the last columns name the fastest strategy

@@ -3,6 +3,13 @@
 scripts/paper_reproduction.sh (CSV and summary.json written by ddcontact).
 
 usage: plot_paper_figures.py RUNS_DIR OUT_DIR
+       plot_paper_figures.py --from-csv OUT_DIR
+
+The first form draws every figure and writes OUT_DIR/delta_sweep.csv (the
+delta sweep with the fine reference) and OUT_DIR/printed_estimator.csv.
+Figures 8 and 10 are drawn from delta_sweep.csv alone, so the second form
+redraws them from the CSV kept in doc/ without the runs. Lengths and
+displacements are in cm, stresses in MPa (the scene's units).
 """
 import csv
 import glob
@@ -15,7 +22,11 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
+from matplotlib.ticker import (FixedFormatter, FixedLocator,  # noqa: E402
+                               NullLocator)
 
+if len(sys.argv) != 3:
+    sys.exit(__doc__)
 runs, out = sys.argv[1], sys.argv[2]
 os.makedirs(out, exist_ok=True)
 
@@ -50,7 +61,59 @@ def draw_mesh(ax, path, values=None, cmap="viridis"):
     ax.set_xlim(-2, 2)
     ax.set_ylim(0, 1)
     ax.set_aspect("equal")
+    ax.set_xlabel("$x_1$ [cm]")
+    ax.set_ylabel("$x_2$ [cm]")
     return coll, len(data)
+
+
+def sweep_figures(path):
+    """Fig. 8 and Fig. 10 from delta_sweep.csv (one row per delta, with the
+    fine reference in every row)."""
+    sweep = [{k: float(v) for k, v in r.items()} for r in rows(path)]
+    sweep.sort(key=lambda r: -r["delta"])
+    d = [r["delta"] for r in sweep]
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for ax, key, label in ((axes[0], "u1", "$u_1$"), (axes[1], "u2", "$u_2$")):
+        ax.semilogx(d, [r[key] for r in sweep], "o-", label="combined algorithm")
+        ax.axhline(sweep[0][key + "_reference"], color="k", ls="--",
+                   label="fine uniform reference")
+        # Tick labels at the deltas of the sweep only: the default log
+        # labels (2e-1, 1e-1, 6e-2, 4e-2, 3e-2) overlap on this short range.
+        ax.xaxis.set_major_locator(FixedLocator(d))
+        ax.xaxis.set_major_formatter(FixedFormatter([f"{x:g}" for x in d]))
+        ax.xaxis.set_minor_locator(NullLocator())
+        ax.ticklabel_format(axis="y", style="sci", scilimits=(0, 0))
+        ax.set_xlabel("adaptation threshold $\\delta$ (dimensionless)")
+        ax.set_ylabel(label + " at (0.5, 0.75) [cm]")
+        ax.invert_xaxis()
+        ax.grid(True, alpha=0.3)
+        ax.legend()
+    fig.suptitle("Fig. 8: displacement at (0.5, 0.75) against $\\delta$")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "fig8_point_displacement.png"), dpi=150)
+
+    fig, ax = plt.subplots(figsize=(6, 4.2))
+    inv = [1 / r["delta"] for r in sweep]
+    ax.loglog(inv, [r["fem"] + r["bem"] for r in sweep], "o-",
+              label="adaptive (FEM + BEM)")
+    ax.loglog(inv, [r["uniform_fem"] + r["uniform_bem"] for r in sweep], "s--",
+              label="uniform, same smallest cell")
+    ax.xaxis.set_major_locator(FixedLocator(inv))
+    ax.xaxis.set_major_formatter(FixedFormatter([f"{x:.3g}" for x in inv]))
+    ax.xaxis.set_minor_locator(NullLocator())
+    ax.set_xlabel("$1/\\delta$ (dimensionless)")
+    ax.set_ylabel("unknowns M of $\\Omega_2$ (FEM dofs + BEM unknowns)")
+    ax.set_title("Fig. 10: unknowns against $1/\\delta$")
+    ax.grid(True, which="major", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "fig10_unknowns.png"), dpi=150)
+
+
+if runs == "--from-csv":
+    sweep_figures(os.path.join(out, "delta_sweep.csv"))
+    print("figures 8 and 10 written to", out)
+    sys.exit(0)
 
 
 # Fig. 4: von Mises stress in Omega_2 (final mesh of the finest delta).
@@ -70,7 +133,7 @@ picks = [(files[0], "start")]
 if len(files) > 4:
     picks.append((files[3], "step 3"))
 picks.append((files[-1], "end"))
-fig, axes = plt.subplots(len(picks), 1, figsize=(9, 2.6 * len(picks)))
+fig, axes = plt.subplots(len(picks), 1, figsize=(9, 2.9 * len(picks)))
 for ax, (path, label) in zip(axes, picks):
     _, n = draw_mesh(ax, path)
     ax.set_title(f"{label}: {n} cells")
@@ -102,37 +165,14 @@ for path in sorted(glob.glob(os.path.join(runs, "delta_*"))):
                       fem=omega2["dofs"], bem=s["bem_unknowns"], level=level,
                       uniform_fem=uniform_fem, uniform_bem=uniform_bem,
                       cycles=s["adaptation_cycles"], dd=s["dd_iterations"],
-                      wall=s["wall_time_s"]))
+                      wall=s["wall_time_s"], u1_reference=u_ref[0],
+                      u2_reference=u_ref[1]))
 sweep.sort(key=lambda r: -r["delta"])
 with open(os.path.join(out, "delta_sweep.csv"), "w") as f:
     w = csv.DictWriter(f, fieldnames=list(sweep[0].keys()))
     w.writeheader()
     w.writerows(sweep)
-
-fig, axes = plt.subplots(1, 2, figsize=(10, 3.8))
-d = [r["delta"] for r in sweep]
-for ax, key, ref, label in ((axes[0], "u1", u_ref[0], "$u_1$"), (axes[1], "u2", u_ref[1], "$u_2$")):
-    ax.semilogx(d, [r[key] for r in sweep], "o-", label="combined algorithm")
-    ax.axhline(ref, color="k", ls="--", label="fine uniform reference")
-    ax.set_xlabel("delta")
-    ax.set_ylabel(label + " at (0.5, 0.75) [cm]")
-    ax.invert_xaxis()
-    ax.legend()
-fig.suptitle("Fig. 8: displacement at (0.5, 0.75) against delta")
-fig.tight_layout()
-fig.savefig(os.path.join(out, "fig8_point_displacement.png"), dpi=150)
-
-fig, ax = plt.subplots(figsize=(6, 4.2))
-inv = [1 / r["delta"] for r in sweep]
-ax.loglog(inv, [r["fem"] + r["bem"] for r in sweep], "o-", label="adaptive (FEM + BEM)")
-ax.loglog(inv, [r["uniform_fem"] + r["uniform_bem"] for r in sweep], "s--",
-          label="uniform, same smallest cell")
-ax.set_xlabel("1 / delta")
-ax.set_ylabel("unknowns M of $\\Omega_2$")
-ax.set_title("Fig. 10: unknowns against 1/delta")
-ax.legend()
-fig.tight_layout()
-fig.savefig(os.path.join(out, "fig10_unknowns.png"), dpi=150)
+sweep_figures(os.path.join(out, "delta_sweep.csv"))
 
 # Fig. 9: contact displacement and pressure along S for every iteration k,
 # with the converged fine pressure as the reference line.

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Study (not a test): the stability matrix of issue 6. Runs the executable on
-# stiff and extreme cases -- penalty c from 1e-8 to 10, relaxation below and
-# above gamma*, nu -> 1/2 (Q1, Q1 with reduced volumetric integration, Q2),
-# material contrast 1e-4..1e4, slender bodies, no contact / zero gap /
+# Study (not a test): the stability matrix of doc/stability.md. Runs the
+# executable on stiff and extreme cases -- penalty c from 1e-8 to 10,
+# relaxation below and above gamma*, nu -> 1/2 (Q1, Q1 with reduced
+# volumetric integration, Q2), material contrast 1e-4..1e4, slender bodies, no contact / zero gap /
 # initial penetration / tiny and large approach, one-cell and fine meshes,
 # SI against MPa/cm -- and checks every answer against something
 # independent:

@@ -1,0 +1,607 @@
+#!/usr/bin/python3
+"""Draw the output directory of any ddcontact run.
+
+usage: plot_run.py OUTDIR [--out DIR] [--units LENGTH,STRESS]
+                   [--hertz auto|on|off] [--dpi N]
+
+Writes PNG files into OUTDIR (or DIR), each only when the run wrote what it
+needs:
+  contact_<pair>.png  per contact pair (contact_<pair>.csv): the pressure
+                      -sigma_n along S_1, with the Hertz closed form where it
+                      applies (below), and the normal approach u_1n + u_2n
+                      against the initial gap f_n; the iterates of
+                      contact_<pair>_NNNN.csv in grey when they were written
+  convergence.png     the DD iteration (history.csv): residual and increment
+                      (log scale), contact force, largest penetration
+  adaptation.png      adaptive runs (statistics.csv): cells and dofs per body,
+                      the estimator, marked cells, per adaptation cycle
+  mesh.png            the last mesh of every body with its von Mises stress,
+                      from the VTU files (read here with the standard
+                      library) or, without them, from cells_<body>-NNNN.csv
+
+Units: the code takes any consistent system. The axes say "[length]" and
+"[stress]" unless --units names them (e.g. --units cm,MPa, the units of the
+shipped paper scenes) or summary.json carries a "units" object with
+"length" and "stress" entries. Forces are per unit thickness (plane
+strain): [stress x length].
+
+Hertz: with --hertz auto (default) the closed form of doc/verification.md
+§2.2 is drawn over a pair's pressure when (a) the initial gap near the
+contact is a parabola f = (x - x0)^2 / (2R) (least-squares fit of the gap
+column, residual below 2 % of its rise), (b) both bodies' Young's modulus
+and Poisson's ratio are in parameters.prm, and (c) the closed-form
+half-width a at the computed force is at most a tenth of the contact
+zone's length and of the height of a rectangular body (the half-plane
+assumption). --hertz on draws it whenever (a) and (b) hold; off never.
+
+Needs matplotlib (Debian: python3-matplotlib, installed by
+scripts/install_deps.sh).
+"""
+import argparse
+import base64
+import csv
+import glob
+import json
+import math
+import os
+import re
+import struct
+import sys
+import xml.etree.ElementTree as ElementTree
+import zlib
+
+PROGRAM = "plot_run.py"
+
+
+class RunError(Exception):
+    """A problem with the run directory, reported in one line."""
+
+
+# --------------------------------------------------------------------------
+# Reading what a run writes
+
+
+def read_csv(path):
+    """Rows of a CSV file as dicts of floats (text kept where not a number)."""
+    with open(path, newline="") as f:
+        result = []
+        for row in csv.DictReader(f):
+            converted = {}
+            for key, value in row.items():
+                try:
+                    converted[key] = float(value)
+                except (TypeError, ValueError):
+                    converted[key] = value
+            result.append(converted)
+        return result
+
+
+def read_prm(path):
+    """The entries of a deal.II parameter file as {"Section/Entry": value}."""
+    entries, stack = {}, []
+    if not os.path.isfile(path):
+        return entries
+    with open(path) as f:
+        for line in f:
+            line = line.split("#", 1)[0].strip()
+            if line.startswith("subsection "):
+                stack.append(line[len("subsection "):].strip())
+            elif line == "end":
+                if stack:
+                    stack.pop()
+            elif line.startswith("set ") and "=" in line:
+                key, value = line[4:].split("=", 1)
+                entries["/".join(stack + [key.strip()])] = value.strip()
+    return entries
+
+
+def number(text):
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return None
+
+
+class Run:
+    """The files of one output directory."""
+
+    def __init__(self, directory):
+        if not os.path.isdir(directory):
+            raise RunError(f"{directory}: no such directory")
+        self.directory = directory
+        markers = ["summary.json", "history.csv", "statistics.csv"]
+        if not any(os.path.isfile(self.path(m)) for m in markers) and \
+                not glob.glob(self.path("contact_*.csv")):
+            raise RunError(f"{directory} is not the output directory of a "
+                           "ddcontact run (no summary.json, history.csv, "
+                           "statistics.csv or contact_*.csv)")
+        self.summary = {}
+        if os.path.isfile(self.path("summary.json")):
+            try:
+                with open(self.path("summary.json")) as f:
+                    self.summary = json.load(f)
+            except (OSError, ValueError) as e:
+                raise RunError(f"{self.path('summary.json')}: not readable "
+                               f"JSON ({e})")
+        self.parameters = read_prm(self.path("parameters.prm"))
+
+    def path(self, name):
+        return os.path.join(self.directory, name)
+
+    def rows(self, name):
+        """The rows of a CSV file of the run ([] when it is missing)."""
+        path = self.path(name)
+        return read_csv(path) if os.path.isfile(path) else []
+
+    def pair_names(self):
+        """The contact pairs, from summary.json or else from the files."""
+        names = [c["pair"] for c in self.summary.get("contact", [])
+                 if isinstance(c, dict) and "pair" in c]
+        if names:
+            return names
+        found = []
+        for path in sorted(glob.glob(self.path("contact_*.csv"))):
+            name = os.path.basename(path)[len("contact_"):-len(".csv")]
+            if not re.search(r"_\d{4}$", name):
+                found.append(name)
+        return found
+
+    def material(self, body):
+        e = number(self.parameters.get(f"Body {body}/Material/Young's modulus"))
+        nu = number(self.parameters.get(f"Body {body}/Material/Poisson's ratio"))
+        return (e, nu) if e and nu is not None else None
+
+    def rectangle_height(self, body):
+        prefix = f"Body {body}/Mesh/"
+        if self.parameters.get(prefix + "Type", "rectangle") != "rectangle":
+            return None
+        try:
+            y1 = float(self.parameters[prefix + "Corner 1"].split(",")[1])
+            y2 = float(self.parameters[prefix + "Corner 2"].split(",")[1])
+        except (KeyError, IndexError, ValueError):
+            return None
+        return abs(y2 - y1)
+
+
+# --------------------------------------------------------------------------
+# VTU (deal.II's XML unstructured grid, ascii or zlib-compressed base64)
+
+
+def decode_data_array(element, dtype, header_type, compressed):
+    """The numbers of one DataArray element."""
+    text = (element.text or "").strip()
+    fmt = element.get("format", "ascii")
+    if fmt == "ascii":
+        return [float(v) for v in text.split()]
+    if fmt != "binary":
+        raise RunError(f"VTU data format '{fmt}' is not supported")
+    code = {"Float32": "f", "Float64": "d", "Int32": "i", "Int64": "q",
+            "UInt8": "B", "UInt32": "I", "UInt64": "Q", "Int8": "b"}[dtype]
+    word = 8 if header_type == "UInt64" else 4
+    hcode = "Q" if word == 8 else "I"
+    if not compressed:
+        raw = base64.b64decode(text)
+        size = struct.unpack("<" + hcode, raw[:word])[0]
+        payload = raw[word:word + size]
+    else:
+        # The header (number of blocks, block size, last block size, the
+        # compressed size of each block) is encoded on its own, then the
+        # blocks.
+        first = base64.b64decode(text[:4 * math.ceil(word / 3) + 4])
+        n_blocks = struct.unpack("<" + hcode, first[:word])[0]
+        header_bytes = (3 + n_blocks) * word
+        header_chars = 4 * math.ceil(header_bytes / 3)
+        header = struct.unpack("<%d%s" % (3 + n_blocks, hcode),
+                               base64.b64decode(text[:header_chars])[:header_bytes])
+        data = base64.b64decode(text[header_chars:])
+        payload, offset = b"", 0
+        for size in header[3:]:
+            payload += zlib.decompress(data[offset:offset + size])
+            offset += size
+    count = len(payload) // struct.calcsize(code)
+    return list(struct.unpack("<%d%s" % (count, code), payload))
+
+
+def read_vtu(path):
+    """Cells (lists of (x, y) corners) and the cell average of each point
+    field of a VTU file."""
+    root = ElementTree.parse(path).getroot()
+    header_type = root.get("header_type", "UInt32")
+    compressed = root.get("compressor") is not None
+    cells, fields = [], {}
+    for piece in root.iter("Piece"):
+        def arrays(tag):
+            block = piece.find(tag)
+            return [] if block is None else block.findall("DataArray")
+
+        points_array = arrays("Points")[0]
+        coords = decode_data_array(points_array, points_array.get("type"),
+                                   header_type, compressed)
+        n_comp = int(points_array.get("NumberOfComponents", "3"))
+        points = [(coords[i], coords[i + 1]) for i in range(0, len(coords), n_comp)]
+        cell_arrays = {a.get("Name"): a for a in arrays("Cells")}
+        conn = decode_data_array(cell_arrays["connectivity"],
+                                 cell_arrays["connectivity"].get("type"),
+                                 header_type, compressed)
+        offsets = decode_data_array(cell_arrays["offsets"],
+                                    cell_arrays["offsets"].get("type"),
+                                    header_type, compressed)
+        types = decode_data_array(cell_arrays["types"],
+                                  cell_arrays["types"].get("type"),
+                                  header_type, compressed)
+        # Corners of the polygon of each cell: triangles (5, quadratic 22)
+        # and quadrilaterals (9, quadratic 23 and 28).
+        corners = {5: 3, 22: 3, 9: 4, 23: 4, 28: 4}
+        point_data = {}
+        for a in arrays("PointData"):
+            if int(a.get("NumberOfComponents", "1")) == 1:
+                point_data[a.get("Name")] = decode_data_array(
+                    a, a.get("type"), header_type, compressed)
+        start = 0
+        for end, kind in zip(offsets, types):
+            ids = conn[int(start):int(end)]
+            start = end
+            n = corners.get(int(kind))
+            if n is None:
+                continue
+            cells.append([points[int(i)] for i in ids[:n]])
+            for name, values in point_data.items():
+                fields.setdefault(name, []).append(
+                    sum(values[int(i)] for i in ids) / len(ids))
+    return cells, fields
+
+
+def last_vtu_meshes(run):
+    """{body: (cells, fields)} of the last step's VTU files, or {}."""
+    groups = sorted(glob.glob(run.path("bodies-*.pvtu")))
+    if not groups:
+        return {}
+    root = ElementTree.parse(groups[-1]).getroot()
+    meshes = {}
+    for piece in root.iter("Piece"):
+        source = piece.get("Source")
+        body = re.sub(r"-\d{4}(\.\d+)?\.vtu$", "", source)
+        cells, fields = read_vtu(run.path(source))
+        old_cells, old_fields = meshes.get(body, ([], {}))
+        old_cells += cells
+        for name, values in fields.items():
+            old_fields.setdefault(name, []).extend(values)
+        meshes[body] = (old_cells, old_fields)
+    return meshes
+
+
+def last_csv_meshes(run):
+    """{body: (cells, fields)} from the last cells_<body>-NNNN.csv."""
+    by_body = {}
+    for path in sorted(glob.glob(run.path("cells_*-[0-9][0-9][0-9][0-9].csv"))):
+        body = re.sub(r"-\d{4}\.csv$", "", os.path.basename(path)[len("cells_"):])
+        by_body[body] = path
+    meshes = {}
+    for body, path in by_body.items():
+        data = read_csv(path)
+        cells = [[(r[f"x{i}"], r[f"y{i}"]) for i in range(4)] for r in data]
+        meshes[body] = (cells, {"von_mises": [r["von_mises"] for r in data]})
+    return meshes
+
+
+# --------------------------------------------------------------------------
+# Hertz
+
+
+def fit_parabola(xs, ys):
+    """Least-squares y = A x^2 + B x + C; returns (A, B, C, rms residual)."""
+    n = len(xs)
+    s = [sum(x ** k for x in xs) for k in range(5)]
+    t = [sum(y * x ** k for x, y in zip(xs, ys)) for k in range(3)]
+    m = [[s[4], s[3], s[2], t[2]], [s[3], s[2], s[1], t[1]],
+         [s[2], s[1], s[0], t[0]]]
+    for i in range(3):  # Gauss-Jordan with partial pivoting
+        p = max(range(i, 3), key=lambda r: abs(m[r][i]))
+        m[i], m[p] = m[p], m[i]
+        if m[i][i] == 0:
+            return None
+        for r in range(3):
+            if r != i:
+                f = m[r][i] / m[i][i]
+                m[r] = [a - f * b for a, b in zip(m[r], m[i])]
+    a, b, c = (m[i][3] / m[i][i] for i in range(3))
+    rms = math.sqrt(sum((a * x * x + b * x + c - y) ** 2
+                        for x, y in zip(xs, ys)) / n)
+    return a, b, c, rms
+
+
+def hertz_reference(run, pair, points, mode):
+    """The Hertz curve for a pair, or (None, why not)."""
+    if mode == "off":
+        return None, "off"
+    active = [p for p in points if p["pressure"] > 0]
+    if len(active) < 5:
+        return None, "fewer than 5 points in contact"
+    force = sum(p["pressure"] * p["weight"] for p in points)
+    centre = sum(p["x1"] * p["pressure"] * p["weight"] for p in points) / force
+    half = max(abs(p["x1"] - centre) for p in active)
+    window = [p for p in points if abs(p["x1"] - centre) <= 2 * half]
+    fit = fit_parabola([p["x1"] for p in window], [p["gap"] for p in window])
+    if fit is None:
+        return None, "gap not parabolic"
+    a2, b1, _, rms = fit
+    rise = a2 * (2 * half) ** 2
+    scale = max(abs(p["gap"]) for p in points) + max(
+        abs(p["u_1n"] + p["u_2n"]) for p in points)
+    if a2 <= 0 or rise <= 1e-6 * scale or rms > 0.02 * rise:
+        return None, "the initial gap is not a parabola about the contact"
+    radius, x0 = 1 / (2 * a2), -b1 / (2 * a2)
+    bodies = (run.parameters.get(f"Contact pair {pair}/Body 1"),
+              run.parameters.get(f"Contact pair {pair}/Body 2"))
+    materials = [run.material(b) for b in bodies if b]
+    if len(materials) != 2 or None in materials:
+        return None, "materials of the pair not found in parameters.prm"
+    e_star = 1 / sum((1 - nu * nu) / e for e, nu in materials)
+    a = math.sqrt(4 * force * radius / (math.pi * e_star))
+    p0 = 2 * force / (math.pi * a)
+    zone = max(p["x1"] for p in points) - min(p["x1"] for p in points)
+    heights = [h for h in (run.rectangle_height(b) for b in bodies if b) if h]
+    limit = min([zone] + heights)
+    info = dict(R=radius, x0=x0, P=force, a=a, p0=p0, E_star=e_star,
+                ratio=a / limit)
+    if mode == "auto" and a > 0.1 * limit:
+        return None, (f"half-width a = {a:.3g} is {a / limit:.2g} of the zone "
+                      "or body size (half-plane needs <= 0.1)")
+    return info, f"R = {radius:.4g}, a/L = {a / limit:.2g}"
+
+
+# --------------------------------------------------------------------------
+# Figures
+
+
+def zoom_window(points):
+    """Where to draw a contact profile: the whole zone, or three times the
+    contact area around it when that is less than a third of the zone.
+    Returns (the test of a position, whether it zooms)."""
+    active = [p["x1"] for p in points if p["pressure"] > 0]
+    lo, hi = min(p["x1"] for p in points), max(p["x1"] for p in points)
+    if not active:
+        return (lambda x: True), False
+    centre, half = (min(active) + max(active)) / 2, (max(active) - min(active)) / 2
+    if 2 * half >= (hi - lo) / 3 or half == 0:
+        return (lambda x: True), False
+    left, right = max(lo, centre - 3 * half), min(hi, centre + 3 * half)
+    return (lambda x: left <= x <= right), True
+
+
+class Plotter:
+    def __init__(self, run, out, units, hertz, dpi):
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        self.plt = plt
+        self.run, self.out, self.hertz, self.dpi = run, out, hertz, dpi
+        length, stress = units
+        self.length = f"[{length}]"
+        self.stress = f"[{stress}]"
+        self.force = (f"[{stress} {length}]" if units != ("length", "stress")
+                      else "[stress x length]")
+        self.written = []
+
+    def save(self, fig, name):
+        path = os.path.join(self.out, name)
+        fig.tight_layout()
+        fig.savefig(path, dpi=self.dpi)
+        self.plt.close(fig)
+        self.written.append(path)
+
+    def contact(self):
+        for pair in self.run.pair_names():
+            path = self.run.path(f"contact_{pair}.csv")
+            if not os.path.isfile(path):
+                continue
+            points = sorted(read_csv(path), key=lambda p: p["x1"])
+            if not points:
+                continue
+            force = sum(p["pressure"] * p["weight"] for p in points)
+            peak = max(p["pressure"] for p in points)
+            info, why = hertz_reference(self.run, pair, points, self.hertz)
+            print(f"{PROGRAM}: pair {pair}: Hertz curve "
+                  f"{'drawn' if info else 'not drawn'} ({why})")
+            inside, zoom = zoom_window(points)
+            fig, (ax, bx) = self.plt.subplots(2, 1, figsize=(8, 6.4), sharex=True)
+            shown = [p for p in points if inside(p["x1"])]
+            x = [p["x1"] for p in shown]
+            iterates = sorted(glob.glob(self.run.path(f"contact_{pair}_[0-9][0-9][0-9][0-9].csv")))
+            for i, it in enumerate(iterates):
+                q = sorted((p for p in read_csv(it) if inside(p["x1"])),
+                           key=lambda p: p["x1"])
+                ax.plot([p["x1"] for p in q], [p["pressure"] for p in q],
+                        color="0.75", linewidth=0.7,
+                        label=f"iterates ({len(iterates)} files)" if i == 0 else None)
+            ax.plot(x, [p["pressure"] for p in shown], "o-", markersize=2.5,
+                    linewidth=1.2, color="tab:blue", label="computed")
+            if info:
+                xs = [info["x0"] - info["a"] + 2 * info["a"] * i / 400
+                      for i in range(401)]
+                ax.plot(xs, [info["p0"] * math.sqrt(max(0., 1 - ((v - info["x0"]) / info["a"]) ** 2))
+                             for v in xs], "k--", linewidth=1.2,
+                        label=f"Hertz at the computed force: a = {info['a']:.4g}, "
+                              f"p0 = {info['p0']:.4g}")
+            ax.set_ylabel(f"contact pressure $-\\sigma_n$ {self.stress}")
+            ax.set_title(f"contact pair {pair}"
+                         + (" (zoomed to the contact area)" if zoom else "")
+                         + f"\nforce per unit thickness {force:.5g} {self.force}, "
+                         f"peak pressure {peak:.5g} {self.stress}", fontsize=9)
+            # Headroom for the legend above the profile.
+            ax.set_ylim(top=1.4 * max([peak] + ([info["p0"]] if info else [])))
+            ax.grid(True, alpha=0.3)
+            ax.legend(fontsize=8, loc="upper right")
+            current = [p["gap"] - p["u_1n"] - p["u_2n"] for p in shown]
+            bx.plot(x, current, "-", color="tab:red",
+                    label="gap after deformation $f_n - u_{1n} - u_{2n}$ "
+                          f"(smallest {min(current):.3g})")
+            bx.axhline(0, color="k", linewidth=0.8)
+            bx.set_xlabel(f"$x_1$ along $S_1$ {self.length}")
+            bx.set_ylabel(f"gap {self.length} (< 0: penetration)")
+            bx.ticklabel_format(axis="y", style="sci", scilimits=(-3, 3))
+            bx.grid(True, alpha=0.3)
+            bx.legend(fontsize=8, loc="upper center")
+            self.save(fig, f"contact_{pair}.png")
+
+    def convergence(self):
+        rows = self.run.rows("history.csv")
+        if not rows:
+            return
+        k = [r["k"] for r in rows]
+        fig, axes = self.plt.subplots(1, 3, figsize=(13, 3.9))
+        positive = lambda values: [v if v > 0 else float("nan") for v in values]
+        axes[0].semilogy(k, positive([r["residual"] for r in rows]),
+                         label="residual $||\\tilde u^{k+1} - u^k|| / ||\\tilde u^{k+1}||$")
+        axes[0].semilogy(k, positive([r["increment"] for r in rows]), "--",
+                         label="increment $||u^{k+1} - u^k|| / ||u^{k+1}||$")
+        eps = number(self.run.parameters.get("Domain decomposition/eps_residual"))
+        if eps:
+            axes[0].axhline(eps, color="k", linewidth=0.8, linestyle=":",
+                            label=f"eps_residual = {eps:g}")
+        axes[0].set_ylabel("relative change on S (dimensionless)")
+        axes[0].legend(fontsize=7)
+        summary = self.run.summary
+        title = f"status: {summary.get('status', '?')}"
+        if summary.get("uzawa_updates"):
+            title += f", {summary['uzawa_updates']} augmented-Lagrangian updates"
+        axes[0].set_title(title, fontsize=9)
+        axes[1].plot(k, [r["contact_force"] for r in rows], color="tab:green")
+        axes[1].set_ylabel(f"contact force, all pairs {self.force}")
+        axes[2].semilogy(k, positive([r["max_penetration"] for r in rows]),
+                         color="tab:red")
+        axes[2].set_ylabel(f"largest penetration $u_{{1n}} + u_{{2n}} - f_n$ {self.length}")
+        for ax in axes:
+            ax.set_xlabel("DD iteration k")
+            ax.grid(True, alpha=0.3)
+        fig.suptitle("Domain decomposition (history.csv)")
+        self.save(fig, "convergence.png")
+
+    def adaptation(self):
+        from matplotlib.ticker import MaxNLocator
+        rows = self.run.rows("statistics.csv")
+        if not rows:
+            return
+        cycle = [r["cycle"] for r in rows]
+        bodies = [key[len("cells_"):] for key in rows[0] if key.startswith("cells_")]
+        fig, axes = self.plt.subplots(1, 3, figsize=(13, 3.9))
+        for body in bodies:
+            axes[0].semilogy(cycle, [r["cells_" + body] for r in rows], "o-",
+                             markersize=3, label=f"cells, {body}")
+            axes[0].semilogy(cycle, [r["dofs_" + body] for r in rows], "s--",
+                             markersize=3, label=f"dofs, {body}")
+        if any(r["bem_unknowns"] for r in rows):
+            axes[0].semilogy(cycle, [r["bem_unknowns"] for r in rows], "^:",
+                             markersize=3, label="BEM unknowns")
+        axes[0].set_ylabel("count")
+        axes[0].set_title("mesh size", fontsize=9)
+        axes[1].semilogy(cycle, [r["eta_max"] or float("nan") for r in rows],
+                         "o-", markersize=3, label="largest indicator eta")
+        if any(r["relative_error_estimate"] for r in rows):
+            axes[1].semilogy(cycle, [r["relative_error_estimate"] or float("nan")
+                                     for r in rows], "s--", markersize=3,
+                             label="estimated relative stress error")
+        delta = number(self.run.parameters.get("Adaptation/Delta"))
+        marking = self.run.parameters.get("Adaptation/Marking", "threshold")
+        if delta and marking == "threshold":
+            axes[1].axhline(delta, color="k", linewidth=0.8, linestyle=":",
+                            label=f"threshold delta = {delta:g}")
+        axes[1].set_ylabel("indicator (dimensionless)")
+        axes[1].set_title(f"estimator: "
+                          f"{self.run.parameters.get('Adaptation/Estimator', '?')}",
+                          fontsize=9)
+        axes[2].plot(cycle, [r["marked"] for r in rows], "o-", markersize=3,
+                     label="marked cells")
+        axes[2].plot(cycle, [r["dd_iterations"] for r in rows], "s--",
+                     markersize=3, label="DD iterations so far")
+        axes[2].set_ylabel("count")
+        for ax in axes:
+            ax.xaxis.set_major_locator(MaxNLocator(integer=True))
+            ax.set_xlabel("adaptation cycle")
+            ax.grid(True, alpha=0.3)
+            ax.legend(fontsize=7)
+        fig.suptitle("Adaptation (statistics.csv)")
+        self.save(fig, "adaptation.png")
+
+    def mesh(self):
+        from matplotlib.collections import PolyCollection
+        meshes, source = last_vtu_meshes(self.run), "VTU"
+        if not meshes:
+            meshes, source = last_csv_meshes(self.run), "cells_*.csv"
+        if not meshes:
+            print(f"{PROGRAM}: no mesh drawn (no VTU and no cells_*.csv; "
+                  "set Output/Write vtu = true)")
+            return
+        xs = [x for cells, _ in meshes.values() for c in cells for x, _ in c]
+        ys = [y for cells, _ in meshes.values() for c in cells for _, y in c]
+        aspect = (max(ys) - min(ys)) / max(max(xs) - min(xs), 1e-300)
+        fig, ax = self.plt.subplots(figsize=(9, min(9., max(2.8, 7.5 * aspect + 1.2))))
+        values = [v for _, fields in meshes.values() for v in fields.get("von_mises", [])]
+        low, high = (min(values), max(values)) if values else (0, 1)
+        coll = None
+        n_cells = 0
+        for body, (cells, fields) in meshes.items():
+            coll = PolyCollection(cells, edgecolors="k", linewidths=0.15,
+                                  cmap="viridis")
+            if "von_mises" in fields:
+                coll.set_array(fields["von_mises"])
+                coll.set_clim(low, high)
+            else:
+                coll.set_facecolor("none")
+            ax.add_collection(coll)
+            n_cells += len(cells)
+        ax.autoscale_view()
+        ax.set_aspect("equal")
+        ax.set_xlabel(f"$x_1$ {self.length}")
+        ax.set_ylabel(f"$x_2$ {self.length}")
+        if values:
+            fig.colorbar(coll, ax=ax, shrink=0.8,
+                         label=f"von Mises stress {self.stress}")
+        ax.set_title(f"last mesh of {', '.join(meshes)}: {n_cells} cells "
+                     f"(from the {source})", fontsize=9)
+        self.save(fig, "mesh.png")
+
+
+def units_of(run, option):
+    if option:
+        parts = [p.strip() for p in option.split(",")]
+        if len(parts) != 2 or not all(parts):
+            raise RunError(f"--units '{option}': give LENGTH,STRESS, e.g. cm,MPa")
+        return tuple(parts)
+    units = run.summary.get("units")
+    if isinstance(units, dict) and units.get("length") and units.get("stress"):
+        return units["length"], units["stress"]
+    return "length", "stress"
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(prog=PROGRAM, description=__doc__.split("\n")[0])
+    parser.add_argument("outdir", help="the output directory of a run")
+    parser.add_argument("--out", help="where the PNG files go (default OUTDIR)")
+    parser.add_argument("--units", help="LENGTH,STRESS for the axis labels")
+    parser.add_argument("--hertz", choices=("auto", "on", "off"), default="auto")
+    parser.add_argument("--dpi", type=int, default=110)
+    args = parser.parse_args(argv)
+    try:
+        run = Run(args.outdir)
+        try:
+            import matplotlib  # noqa: F401
+        except ImportError:
+            raise RunError("matplotlib is missing (Debian: apt-get install "
+                           "python3-matplotlib)")
+        out = args.out or args.outdir
+        os.makedirs(out, exist_ok=True)
+        plotter = Plotter(run, out, units_of(run, args.units), args.hertz, args.dpi)
+        for draw in (plotter.contact, plotter.convergence, plotter.adaptation,
+                     plotter.mesh):
+            draw()
+    except (RunError, OSError) as e:
+        print(f"{PROGRAM}: error: {e}", file=sys.stderr)
+        return 1
+    for path in plotter.written:
+        print(path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
