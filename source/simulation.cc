@@ -1,3 +1,4 @@
+#include <ddcontact/adaptivity/marking.h>
 #include <ddcontact/simulation.h>
 #include <ddcontact/solvers/monolithic_solver.h>
 #include <ddcontact/tasks.h>
@@ -208,13 +209,14 @@ namespace ddcontact
   {
     TimerOutput::Scope t(timer, "adaptation: estimate and mark");
     unsigned int       marked = 0;
+    if (parameters.adaptation.mode == AdaptationMode::uniform)
+    {
+      for (auto &a : adaptations)
+        marked += a->mark_all();
+      return marked;
+    }
     for (auto &a : adaptations)
     {
-      if (parameters.adaptation.mode == AdaptationMode::uniform)
-      {
-        marked += a->mark_all();
-        continue;
-      }
       const auto &body = a->get_body();
       if (contact_pairs.empty())
         a->estimate(body.get_solution(), BoundaryTractionSamples());
@@ -223,8 +225,24 @@ namespace ddcontact
         // (21): the BEM must solve the same boundary value problem.
         a->estimate(dd_solver->last_body_solution(body),
                     dd_solver->last_contact_traction(body));
-      marked += a->mark();
     }
+
+    // Fraction and Doerfler marking rank the cells of all adapted bodies
+    // together, so that the body with the larger error gets more of the
+    // refinement (on one process; a distributed mesh marks its own).
+    bool joint = parameters.adaptation.marking != MarkingType::threshold &&
+                 adaptations.size() > 1;
+    std::vector<const Vector<double> *> contributions;
+    for (const auto &a : adaptations)
+    {
+      joint = joint && !a->get_body().is_mesh_distributed();
+      contributions.push_back(&a->error_contributions());
+    }
+    const double threshold =
+      joint ? joint_marking_threshold(contributions, parameters.adaptation)
+            : 0.;
+    for (auto &a : adaptations)
+      marked += joint ? a->mark_above(threshold) : a->mark();
     return marked;
   }
 

@@ -104,7 +104,24 @@ namespace ddcontact
   unsigned int
   AdaptiveRefinement::mark()
   {
-    mark_cells(body.get_triangulation(), eta, parameters);
+    mark_cells(body.get_triangulation(),
+               parameters.marking == MarkingType::threshold
+                 ? eta
+                 : estimator->error_contributions(),
+               parameters);
+    return apply_caps();
+  }
+
+  unsigned int
+  AdaptiveRefinement::mark_above(const double threshold)
+  {
+    const Vector<double> &contributions = estimator->error_contributions();
+    for (const auto &cell : body.get_triangulation().active_cell_iterators())
+    {
+      cell->clear_refine_flag();
+      if (contributions(cell->active_cell_index()) >= threshold)
+        cell->set_refine_flag();
+    }
     return apply_caps();
   }
 

@@ -69,6 +69,7 @@ namespace ddcontact
     const auto    &tria    = body.get_triangulation();
     Vector<double> area(tria.n_active_cells());
     local_error.reinit(tria.n_active_cells());
+    local_energy_error.reinit(tria.n_active_cells());
     double total_area = 0, bem_norm2 = 0, error2 = 0;
     double energy_error2 = 0, energy_norm2 = 0;
     // sigma : C^{-1} sigma in plane strain, (sigma:sigma - nu tr^2) / 2 mu:
@@ -87,18 +88,20 @@ namespace ddcontact
         continue;
       fe_values.reinit(cell);
       const unsigned int c  = cell->active_cell_index();
-      double             e2 = 0;
+      double             e2 = 0, energy2 = 0;
       for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         const auto d = sigma_B[c][q] - sigma_F[c][q];
         // sum_ij z_ij^2: the double contraction counts z_12 twice.
         e2 += (d * d) * fe_values.JxW(q);
         bem_norm2 += (sigma_B[c][q] * sigma_B[c][q]) * fe_values.JxW(q);
-        energy_error2 += energy(d) * fe_values.JxW(q);
+        energy2 += energy(d) * fe_values.JxW(q);
         energy_norm2 += energy(sigma_B[c][q]) * fe_values.JxW(q);
         area(c) += fe_values.JxW(q);
       }
-      local_error(c) = std::sqrt(e2);
+      local_error(c)        = std::sqrt(e2);
+      local_energy_error(c) = std::sqrt(energy2);
+      energy_error2 += energy2;
       error2 += e2;
       total_area += area(c);
     }

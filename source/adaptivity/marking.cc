@@ -5,6 +5,11 @@
 
 #include <ddcontact/adaptivity/marking.h>
 
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
 namespace ddcontact
 {
   namespace
@@ -76,5 +81,39 @@ namespace ddcontact
         break;
       }
     }
+  }
+
+  double
+  joint_marking_threshold(
+    const std::vector<const Vector<double> *> &contributions,
+    const AdaptationParameters                &parameters)
+  {
+    Assert(parameters.marking != MarkingType::threshold, ExcInternalError());
+    std::vector<double> values;
+    for (const auto *c : contributions)
+      values.insert(values.end(), c->begin(), c->end());
+    std::sort(values.begin(), values.end(), std::greater<double>());
+    if (values.empty())
+      return std::numeric_limits<double>::infinity();
+
+    if (parameters.marking == MarkingType::fraction)
+    {
+      const auto n = static_cast<std::size_t>(
+        std::round(parameters.fraction * values.size()));
+      return n == 0 ? std::numeric_limits<double>::infinity() : values[n - 1];
+    }
+    // Doerfler: the fewest cells whose squared contributions reach the
+    // Fraction of the total (summed largest first, a fixed order).
+    double total = 0;
+    for (const double v : values)
+      total += v * v;
+    double sum = 0;
+    for (const double v : values)
+    {
+      sum += v * v;
+      if (sum >= parameters.fraction * total)
+        return v > 0 ? v : std::numeric_limits<double>::infinity();
+    }
+    return values.back();
   }
 } // namespace ddcontact

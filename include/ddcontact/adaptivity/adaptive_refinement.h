@@ -75,6 +75,19 @@ namespace ddcontact
     unsigned int
     mark();
 
+    /** Flag the cells whose error contribution is at least @p threshold
+     * (joint marking of several bodies, joint_marking_threshold()), with
+     * the caps of mark(). */
+    unsigned int
+    mark_above(double threshold);
+
+    /** The cells' error contributions of the last estimate. */
+    const Vector<double> &
+    error_contributions() const
+    {
+      return estimator->error_contributions();
+    }
+
     /** Flag every cell (uniform refinement). */
     unsigned int
     mark_all();

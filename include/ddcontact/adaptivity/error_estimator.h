@@ -43,6 +43,16 @@ namespace ddcontact
     virtual const Vector<double> &
     indicators() const = 0;
 
+    /** Each cell's share of the global error, for fraction and Doerfler
+     * marking: they must rank cells by what refining them removes from the
+     * error, not by an error density such as (27), which favours small
+     * cells. The indicators themselves by default. */
+    virtual const Vector<double> &
+    error_contributions() const
+    {
+      return indicators();
+    }
+
     /** Whether eta is dimensionless, so that threshold marking may compare
      * it with the delta of (27). */
     virtual bool

@@ -76,6 +76,15 @@ namespace ddcontact
       return true;
     }
 
+    /** ||sigma_B - sigma_F||_E,e, the energy norm on the cell: what it
+     * adds to the global energy-norm error (in the same units on every
+     * body, whatever its material). */
+    const Vector<double> &
+    error_contributions() const override
+    {
+      return local_energy_error;
+    }
+
     /** ||sigma_B - sigma_F||_e per active cell. */
     const Vector<double> &
     local_errors() const
@@ -145,7 +154,7 @@ namespace ddcontact
     bool                        bem_is_current = false;
     boost::signals2::connection mesh_changed;
 
-    Vector<double> eta, local_error;
+    Vector<double> eta, local_error, local_energy_error;
     double         error_norm = 0, bem_stress_norm = 0;
     double         energy_error = 0, energy_norm = 0;
     Timings        time;
