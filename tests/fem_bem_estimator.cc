@@ -85,6 +85,17 @@ namespace
   const std::string u_expr = "-P*cu*(-(y-y0)*x/" + r2 + "); -P*cu*(k*0.5*log(" +
                              r2 + ") - (y-y0)^2/" + r2 + ")";
 
+  /** sigma : C^{-1} sigma in plane strain, written out independently of
+   * the estimator: eps = ((1+nu) sigma - nu (1+nu) tr(sigma) I) / E. */
+  double
+  energy(const SymmetricTensor<2, 2> &s)
+  {
+    const auto strain =
+      ((1 + nu) * s - nu * (1 + nu) * trace(s) * unit_symmetric_tensor<2>()) /
+      E;
+    return s * strain;
+  }
+
   /** The block with the exact traction of the Kelvin field on its free
    * sides and top and its displacement on the bottom, adapted with the
    * scaled FEM-BEM indicators and Doerfler marking until the estimate of
@@ -115,7 +126,7 @@ namespace
         << "\n  end\nend\n";
     prm.close();
     const auto simulation = run_scene("fem_bem_target.prm", {}, {});
-    cycles                = simulation->results().n_adaptation_steps;
+    cycles                = simulation->n_adaptation_cycles();
 
     const auto &body    = *simulation->get_bodies()[0];
     const auto  sigma_F = body.stresses().at_quadrature_points();
@@ -137,17 +148,6 @@ namespace
     }
     return {relative_energy_error_estimate(simulation->get_adaptations()),
             std::sqrt(error2 / norm2)};
-  }
-
-  /** sigma : C^{-1} sigma in plane strain, written out independently of
-   * the estimator: eps = ((1+nu) sigma - nu (1+nu) tr(sigma) I) / E. */
-  double
-  energy(const SymmetricTensor<2, 2> &s)
-  {
-    const auto strain =
-      ((1 + nu) * s - nu * (1 + nu) * trace(s) * unit_symmetric_tensor<2>()) /
-      E;
-    return s * strain;
   }
 
   struct Result

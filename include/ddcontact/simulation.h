@@ -79,6 +79,13 @@ namespace ddcontact
       return adaptations;
     }
 
+    /** Adaptation steps (refinements) made so far. */
+    unsigned int
+    n_adaptation_cycles() const
+    {
+      return n_adaptation_steps;
+    }
+
   private:
     /** What the run has computed so far, for the report. */
     RunReport::Results
