@@ -70,7 +70,8 @@ def decode_binary(text, data_type, header_type, compressed):
 
 
 def read_vtu_builtin(path):
-    """Points and point data of an unstructured grid written by deal.II."""
+    """Points, point data and cells (lists of point indices) of an
+    unstructured grid written by deal.II."""
     root = ElementTree.parse(path).getroot()
     header_type = root.get("header_type", "UInt32")
     compressed = root.get("compressor") is not None
@@ -91,7 +92,11 @@ def read_vtu_builtin(path):
         n = int(array.get("NumberOfComponents", "1"))
         data[array.get("Name")] = v if n == 1 else [
             tuple(v[i:i + n]) for i in range(0, len(v), n)]
-    return points, data
+    connectivity = values(piece.find("Cells/DataArray[@Name='connectivity']"))
+    offsets = values(piece.find("Cells/DataArray[@Name='offsets']"))
+    cells = [connectivity[int(begin):int(end)]
+             for begin, end in zip([0] + offsets[:-1], offsets)]
+    return points, data, cells
 
 
 def read_vtu_paraview(path):
@@ -108,7 +113,11 @@ def read_vtu_paraview(path):
         data[array.GetName()] = [
             array.GetTuple(i) if n > 1 else array.GetTuple(i)[0]
             for i in range(array.GetNumberOfTuples())]
-    return points, data
+    cells = []
+    for c in range(grid.GetNumberOfCells()):
+        ids = grid.GetCell(c).GetPointIds()
+        cells.append([ids.GetId(k) for k in range(ids.GetNumberOfIds())])
+    return points, data, cells
 
 
 READ_VTU = read_vtu_builtin
@@ -120,17 +129,41 @@ def pvd_files(path):
     return [d.get("file") for d in root.iter("DataSet")]
 
 
+def place(x):
+    """A point's key: its coordinates to 1e-5 (the zones' points lie
+    further apart)."""
+    return (round(x[0], 5), round(x[1], 5))
+
+
 def contact_points(path):
     """The distinct points of a contact zone's VTU (each point appears once
     per line cell it ends) with their fields."""
-    points, data = READ_VTU(path)
+    points, data, _ = READ_VTU(path)
     seen = {}
     for i, x in enumerate(points):
-        key = (round(x[0], 5), round(x[1], 5))
-        if key not in seen:
-            seen[key] = {name: values[i] for name, values in data.items()}
-            seen[key]["x"] = x
+        if place(x) not in seen:
+            seen[place(x)] = {name: values[i] for name, values in data.items()}
+            seen[place(x)]["x"] = x
     return list(seen.values())
+
+
+def is_one_chain(path):
+    """Whether the line cells of a zone join its points into one open
+    chain: n - 1 cells, no point in more than two, all connected."""
+    points, _, cells = READ_VTU(path)
+    neighbours = {}
+    for cell in cells:
+        a, b = (place(points[i]) for i in cell)
+        neighbours.setdefault(a, set()).add(b)
+        neighbours.setdefault(b, set()).add(a)
+    reached, front = set(), [next(iter(neighbours))]
+    while front:
+        p = front.pop()
+        if p not in reached:
+            reached.add(p)
+            front.extend(neighbours[p])
+    return (len(cells) == len(neighbours) - 1 and reached == set(neighbours)
+            and all(len(n) <= 2 for n in neighbours.values()))
 
 
 # ---------------------------------------------------------------- runs
@@ -186,7 +219,7 @@ def check_uniaxial(args):
     # Smoothed stresses: the projection of the uniform stress is that
     # stress (to the Float32 of the file).
     for body in ["omega1", "omega2"]:
-        _, data = READ_VTU(os.path.join(out, body + "-0000.vtu"))
+        _, data, _ = READ_VTU(os.path.join(out, body + "-0000.vtu"))
         exact = {"sigma_11_smoothed": 0, "sigma_22_smoothed": -p,
                  "sigma_12_smoothed": 0, "sigma_33_smoothed": -nu * p,
                  "von_mises_smoothed": p * (1 - nu + nu**2)**0.5}
@@ -220,7 +253,9 @@ def check_paper_scene(args):
 
     check(len(zone) == len(rows), "one VTU point per contact point of the "
           "CSV (%d, %d)" % (len(zone), len(rows)))
-    by_place = {(round(z["x"][0], 5), round(z["x"][1], 5)): z for z in zone}
+    check(is_one_chain(os.path.join(out, "contact_S-0000.vtu")),
+          "the line cells join the points into one chain along S_1")
+    by_place = {place(z["x"]): z for z in zone}
     worst = {"pressure": 0, "u_1n": 0, "u_2n": 0, "gap": 0}
     scale = {"pressure": peak,
              "u_1n": max(abs(float(r["u_1n"])) for r in rows),
@@ -228,7 +263,7 @@ def check_paper_scene(args):
              "gap": max(abs(float(r["gap"])) for r in rows)}
     missing = 0
     for r in rows:
-        z = by_place.get((round(float(r["x1"]), 5), round(float(r["x2"]), 5)))
+        z = by_place.get(place((float(r["x1"]), float(r["x2"]))))
         if z is None:
             missing += 1
             continue

@@ -35,8 +35,16 @@ namespace ddcontact
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     constraints.close();
 
-    DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    // Every cell, also on a shared mesh (whose DoFTools functions take
+    // only the cells this process owns).
+    const unsigned int n = dof_handler.get_fe().n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n);
+    DynamicSparsityPattern               dsp(dof_handler.n_dofs());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+    {
+      cell->get_dof_indices(dofs);
+      constraints.add_entries_local_to_global(dofs, dsp, false);
+    }
     SparsityPattern pattern;
     pattern.copy_from(dsp);
     SparseMatrix<double> mass(pattern);
@@ -49,13 +57,11 @@ namespace ddcontact
                             dof_handler.get_fe(),
                             quadrature,
                             update_values | update_JxW_values);
-    const unsigned int     n = dof_handler.get_fe().n_dofs_per_cell();
     const std::array<std::array<unsigned int, 2>, 3> components = {
       {{{0, 0}}, {{1, 1}}, {{0, 1}}}};
     std::vector<Vector<double>> load(3, Vector<double>(dof_handler.n_dofs()));
     FullMatrix<double>          cell_mass(n, n);
     std::vector<Vector<double>> cell_load(3, Vector<double>(n));
-    std::vector<types::global_dof_index> dofs(n);
     for (const auto &cell : dof_handler.active_cell_iterators())
     {
       fe_values.reinit(cell);
