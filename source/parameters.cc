@@ -208,7 +208,17 @@ namespace ddcontact
       prm.declare_entry("Write vtu",
                         "true",
                         Patterns::Bool(),
-                        "Write VTU/PVD files for ParaView.");
+                        "Write VTU/PVD files for ParaView: the bodies "
+                        "(solution.pvd) and every contact zone "
+                        "(contact_<pair>.pvd); doc/output.md.");
+      prm.declare_entry("Smoothed stresses",
+                        "true",
+                        Patterns::Bool(),
+                        "Also write the L2 projection of the stresses onto "
+                        "each body's finite element space "
+                        "(sigma_11_smoothed, ..., von_mises_smoothed) next "
+                        "to the per-cell stresses; not on distributed "
+                        "(p4est) meshes.");
       prm.declare_entry("Verbosity",
                         "normal",
                         Patterns::Selection("normal|full"),
@@ -356,6 +366,7 @@ namespace ddcontact
     prm.enter_subsection("Output");
     {
       write_vtu                = prm.get_bool("Write vtu");
+      smoothed_stresses        = prm.get_bool("Smoothed stresses");
       dd.print_every_iteration = (prm.get("Verbosity") == "full");
       points.clear();
       for (const auto &item : split(prm.get("Points"), ';'))

@@ -392,7 +392,8 @@ namespace ddcontact
     if (!output_writer)
       output_writer = std::make_unique<OutputWriter>(
         parameters.output_directory,
-        distribution->uses_process_groups() ? MPI_COMM_WORLD : MPI_COMM_SELF);
+        distribution->uses_process_groups() ? MPI_COMM_WORLD : MPI_COMM_SELF,
+        parameters.smoothed_stresses);
     std::vector<const ElasticBody<2> *> body_pointers;
     std::vector<const Vector<double> *> solutions;
     std::vector<OutputWriter::CellData> cell_data(bodies.size());
@@ -405,6 +406,23 @@ namespace ddcontact
           cell_data[b] = a->cell_data();
     }
     output_writer->write_step(step, step, body_pointers, solutions, cell_data);
+
+    // Every contact zone in the same step, with its multipliers if the
+    // augmented Lagrangian is on.
+    if (!writes_files || contact_pairs.empty())
+      return;
+    if (!contact_zone_writer)
+      contact_zone_writer =
+        std::make_unique<ContactZoneWriter>(parameters.output_directory);
+    for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+      contact_zone_writer->write_step(
+        step,
+        step,
+        *contact_pairs[p],
+        dd_solver->contact_state(p),
+        parameters.dd.augmented_lagrangian
+          ? dd_solver->get_problem().law(p).multipliers()
+          : std::vector<double>());
   }
 
   unsigned int

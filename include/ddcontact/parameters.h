@@ -38,8 +38,9 @@ namespace ddcontact
     std::vector<std::string> body_names;
     Constants                constants;
     std::vector<ReportPoint> points;
-    bool                     write_vtu = true;
-    unsigned int             n_threads = 0; // 0 = all cores
+    bool                     write_vtu         = true;
+    bool                     smoothed_stresses = true;
+    unsigned int             n_threads         = 0; // 0 = all cores
 
     std::vector<BodyParameters>        bodies;
     std::vector<ContactPairParameters> contact_pairs;

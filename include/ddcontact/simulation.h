@@ -8,6 +8,7 @@
 #include <ddcontact/body/body_distribution.h>
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/contact/contact_pair.h>
+#include <ddcontact/io/contact_zone_writer.h>
 #include <ddcontact/io/output_writer.h>
 #include <ddcontact/io/run_report.h>
 #include <ddcontact/parameters.h>
@@ -163,6 +164,8 @@ namespace ddcontact
     unsigned int
     solve_contact();
 
+    /** Write step @p step of the bodies (OutputWriter) and of every
+     * contact zone (ContactZoneWriter), if Output/Write vtu. */
     void
     output_results(unsigned int step);
 
@@ -187,6 +190,7 @@ namespace ddcontact
     unsigned int                                     n_contact_iterations = 0;
     unsigned int                                     n_newton_iterations  = 0;
     std::unique_ptr<OutputWriter>                    output_writer;
+    std::unique_ptr<ContactZoneWriter>               contact_zone_writer;
     std::vector<std::unique_ptr<AdaptiveRefinement>> adaptations;
     unsigned int                                     n_adaptation_steps = 0;
     unsigned int                                     n_output_steps     = 0;

@@ -336,8 +336,10 @@ namespace ddcontact
     // cell at once on a serial or shared mesh, by the owners of a
     // distributed one at the end.
     std::vector<PointShape> shapes_1, shapes_2;
+    zone_1.clear();
     for (const auto &face : faces_1)
     {
+      zone_1.push_back({{face.a, face.b}});
       const Tensor<1, 2>  t      = face.b - face.a;
       const double        length = t.norm();
       std::vector<double> breaks = {0., 1.};
@@ -378,6 +380,7 @@ namespace ddcontact
           p.JxW =
             gauss.weight(q) * (breaks[piece + 1] - breaks[piece]) * length;
           p.normal = face.normal;
+          p.face   = zone_1.size() - 1;
 
           // Orthogonal projection P(x) on S_2: the closest point.
           double          best  = std::numeric_limits<double>::max();
@@ -443,7 +446,8 @@ namespace ddcontact
     }
     for (unsigned int q = 0; q < contact_points.size(); ++q)
     {
-      auto &p = contact_points[q];
+      auto &p    = contact_points[q];
+      p.values_1 = shapes_1[q].values;
       couple(shapes_1[q],
              body_1.get_fe(),
              p.normal,

@@ -3,10 +3,13 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <ddcontact/body/smoothed_stresses.h>
 #include <ddcontact/io/output_writer.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -77,9 +80,11 @@ namespace ddcontact
   } // namespace
 
   OutputWriter::OutputWriter(const std::string &directory,
-                             const MPI_Comm     communicator)
+                             const MPI_Comm     communicator,
+                             const bool         smoothed_stresses)
     : directory(directory)
     , communicator(communicator)
+    , smoothed_stresses(smoothed_stresses)
   {
   }
 
@@ -101,6 +106,12 @@ namespace ddcontact
     const unsigned int       this_process =
       Utilities::MPI::this_mpi_process(communicator);
     const bool root = this_process == 0;
+    // The projection needs the whole mesh on this process.
+    const bool smooth = smoothed_stresses &&
+                        std::none_of(bodies.begin(),
+                                     bodies.end(),
+                                     [](const auto *body)
+                                     { return body->is_mesh_distributed(); });
 
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
@@ -129,6 +140,15 @@ namespace ddcontact
                                interpretation);
       StressPostprocessor<2> stress(body, *solutions[b]);
       data_out.add_data_vector(*solutions[b], stress);
+      std::unique_ptr<SmoothedStresses<2>> smoothed;
+      if (smooth)
+      {
+        smoothed = std::make_unique<SmoothedStresses<2>>(body, *solutions[b]);
+        const auto names = SmoothedStresses<2>::names();
+        for (unsigned int i = 0; i < names.size(); ++i)
+          data_out.add_data_vector(
+            smoothed->get_dof_handler(), smoothed->fields()[i], names[i]);
+      }
 
       Vector<double> body_id(n_cells), level(n_cells), process(n_cells);
       for (const auto &cell : body.get_triangulation().active_cell_iterators())

@@ -10,6 +10,7 @@
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/parameters.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,6 +36,11 @@ namespace ddcontact
    * is kept too (load_dofs_1, load_1 and the same for body 2): then adding
    * the contact load needs no constraints, which a process of a
    * distributed mesh knows only for its own cells.
+   *
+   * For the output of the zone (ContactZoneWriter), a point also knows the
+   * face of S_1 that holds it (an index into ContactPair::zone_faces_1())
+   * and the value of each shape function of dofs_1 at x (of its one
+   * nonzero component), from which u_1(x) is summed.
    */
   struct ContactPoint
   {
@@ -47,6 +53,8 @@ namespace ddcontact
     std::vector<double>                  a, b;
     std::vector<types::global_dof_index> load_dofs_1, load_dofs_2;
     std::vector<double>                  load_1, load_2;
+    unsigned int                         face = 0;
+    std::vector<double>                  values_1;
   };
 
   /**
@@ -102,6 +110,14 @@ namespace ddcontact
     points() const
     {
       return contact_points;
+    }
+
+    /** The faces of S_1 (end points, in the order of ContactPoint::face);
+     * adjacent faces share an end point exactly. */
+    const std::vector<std::array<Point<2>, 2>> &
+    zone_faces_1() const
+    {
+      return zone_1;
     }
 
     /** u_1n and u_2n at every contact point. */
@@ -160,13 +176,14 @@ namespace ddcontact
     }
 
   private:
-    const ContactPairParameters  parameters;
-    const ElasticBody<2>        &body_1;
-    const ElasticBody<2>        &body_2;
-    std::shared_ptr<Function<2>> gap_function;
-    std::vector<ContactPoint>    contact_points;
-    double                       theta       = 0;
-    double                       thickness_1 = 0, thickness_2 = 0;
+    const ContactPairParameters          parameters;
+    const ElasticBody<2>                &body_1;
+    const ElasticBody<2>                &body_2;
+    std::shared_ptr<Function<2>>         gap_function;
+    std::vector<ContactPoint>            contact_points;
+    std::vector<std::array<Point<2>, 2>> zone_1; // faces of S_1
+    double                               theta       = 0;
+    double                               thickness_1 = 0, thickness_2 = 0;
   };
 } // namespace ddcontact
 

@@ -22,7 +22,12 @@ namespace ddcontact
    * components sigma_11, sigma_22, sigma_12, sigma_33 = nu (sigma_11 +
    * sigma_22), the von Mises stress, the body id and the refinement level;
    * further cell fields (e.g. an error estimator) may be added per body;
-   * bodies that lack a field get zeros so that all pieces match.
+   * bodies that lack a field get zeros so that all pieces match. With
+   * smoothed stresses on (Output/Smoothed stresses), every body also
+   * carries the continuous L2 projections of its stresses
+   * (SmoothedStresses: sigma_11_smoothed, ..., von_mises_smoothed), unless
+   * a body of the step lies on a distributed mesh, where the projection is
+   * not available: then no body has them, so that all pieces match.
    *
    * A body whose mesh is partitioned between processes (process groups,
    * ElasticBody) is written in pieces: every process writes the cells it
@@ -38,7 +43,8 @@ namespace ddcontact
     using CellData = std::map<std::string, Vector<double>>;
 
     OutputWriter(const std::string &directory,
-                 const MPI_Comm     communicator = MPI_COMM_SELF);
+                 const MPI_Comm     communicator      = MPI_COMM_SELF,
+                 const bool         smoothed_stresses = true);
 
     /** Write step @p step (labelled @p time in ParaView) for all bodies;
      * @p solutions[b] is the displacement of bodies[b]. */
@@ -52,6 +58,7 @@ namespace ddcontact
   private:
     const std::string                           directory;
     const MPI_Comm                              communicator;
+    const bool                                  smoothed_stresses;
     std::vector<std::pair<double, std::string>> records;
   };
 } // namespace ddcontact

@@ -1,0 +1,108 @@
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+
+#include <ddcontact/body/elastic_body.h>
+#include <ddcontact/body/smoothed_stresses.h>
+
+namespace ddcontact
+{
+  template <int dim>
+  std::vector<std::string>
+  SmoothedStresses<dim>::names()
+  {
+    return {"sigma_11_smoothed",
+            "sigma_22_smoothed",
+            "sigma_12_smoothed",
+            "sigma_33_smoothed",
+            "von_mises_smoothed"};
+  }
+
+  template <int dim>
+  SmoothedStresses<dim>::SmoothedStresses(const ElasticBody<dim> &body,
+                                          const Vector<double>   &u)
+    : dof_handler(body.get_triangulation())
+  {
+    Assert(!body.is_mesh_distributed(), ExcNotImplemented());
+    dof_handler.distribute_dofs(body.get_fe().base_element(0));
+    AffineConstraints<double> constraints;
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    constraints.close();
+
+    // Every cell, also on a shared mesh (whose DoFTools functions take
+    // only the cells this process owns).
+    const unsigned int n = dof_handler.get_fe().n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n);
+    DynamicSparsityPattern               dsp(dof_handler.n_dofs());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+    {
+      cell->get_dof_indices(dofs);
+      constraints.add_entries_local_to_global(dofs, dsp, false);
+    }
+    SparsityPattern pattern;
+    pattern.copy_from(dsp);
+    SparseMatrix<double> mass(pattern);
+
+    // The stress of u at the quadrature points of the body's assembly
+    // (BodyStresses applies a reduced dilatation if the body has one).
+    const auto             stress     = body.stresses(u).at_quadrature_points();
+    const Quadrature<dim> &quadrature = body.get_cell_quadrature();
+    FEValues<dim>          fe_values(body.get_mapping(),
+                            dof_handler.get_fe(),
+                            quadrature,
+                            update_values | update_JxW_values);
+    const std::array<std::array<unsigned int, 2>, 3> components = {
+      {{{0, 0}}, {{1, 1}}, {{0, 1}}}};
+    std::vector<Vector<double>> load(3, Vector<double>(dof_handler.n_dofs()));
+    FullMatrix<double>          cell_mass(n, n);
+    std::vector<Vector<double>> cell_load(3, Vector<double>(n));
+    for (const auto &cell : dof_handler.active_cell_iterators())
+    {
+      fe_values.reinit(cell);
+      cell_mass = 0;
+      for (auto &l : cell_load)
+        l = 0;
+      const auto &s = stress[cell->active_cell_index()];
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        for (unsigned int i = 0; i < n; ++i)
+        {
+          const double phi_i = fe_values.shape_value(i, q) * fe_values.JxW(q);
+          for (unsigned int j = 0; j < n; ++j)
+            cell_mass(i, j) += phi_i * fe_values.shape_value(j, q);
+          for (unsigned int c = 0; c < 3; ++c)
+            cell_load[c](i) += phi_i * s[q][components[c][0]][components[c][1]];
+        }
+      cell->get_dof_indices(dofs);
+      constraints.distribute_local_to_global(cell_mass, dofs, mass);
+      for (unsigned int c = 0; c < 3; ++c)
+        constraints.distribute_local_to_global(cell_load[c], dofs, load[c]);
+    }
+
+    SparseDirectUMFPACK mass_inverse;
+    mass_inverse.initialize(mass);
+    projected.resize(5, Vector<double>(dof_handler.n_dofs()));
+    for (unsigned int c = 0; c < 3; ++c)
+    {
+      mass_inverse.vmult(projected[c], load[c]);
+      constraints.distribute(projected[c]);
+    }
+    const Material &material = body.get_material();
+    for (unsigned int i = 0; i < dof_handler.n_dofs(); ++i)
+    {
+      SymmetricTensor<2, dim> s;
+      s[0][0]         = projected[0](i);
+      s[1][1]         = projected[1](i);
+      s[0][1]         = projected[2](i);
+      projected[3](i) = material.out_of_plane_stress(s);
+      projected[4](i) = material.von_mises(s);
+    }
+  }
+
+  template class SmoothedStresses<2>;
+} // namespace ddcontact
