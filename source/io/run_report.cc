@@ -318,8 +318,10 @@ namespace ddcontact
     json["contact_solver"]            = dd_solver.name();
     json["body_solve_sets"]           = counts.body_solve_sets;
     json["preconditioner_solve_sets"] = counts.preconditioner_solve_sets;
-    json["newton_steps"]              = counts.newton_steps;
-    json["krylov_iterations"]         = counts.krylov_iterations;
+    json["preconditioner_factorizations"] =
+      counts.preconditioner_factorizations;
+    json["newton_steps"]      = counts.newton_steps;
+    json["krylov_iterations"] = counts.krylov_iterations;
     if (parameters.dd.solver == ContactSolverType::monolithic)
     {
       json["contact_solver"] = "monolithic";

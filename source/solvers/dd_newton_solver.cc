@@ -235,7 +235,9 @@ namespace ddcontact
     const double final_tolerance = 0.5 * parameters.eps_residual * scale;
     const double tolerance =
       (n_changed == 0) ? final_tolerance : std::max(final_tolerance, 0.1 * psi);
+    const unsigned int factorizations = preconditioner.factorizations();
     const unsigned int cg = solve_active_system(active, tolerance, x, Sx, u_x);
+    n_factorizations += preconditioner.factorizations() - factorizations;
     krylov_iterations += cg;
     last_active = active;
 
@@ -282,8 +284,9 @@ namespace ddcontact
           << cg << "  tau " << std::defaultfloat << tau << std::scientific
           << "  force " << record.force << "  penetration "
           << record.max_penetration << std::defaultfloat << "  body solve sets "
-          << n_dd_iterations() << std::fixed << std::setprecision(2) << "  t "
-          << record.time << "s" << std::defaultfloat << std::endl;
+          << n_dd_iterations() << "  factorizations " << n_factorizations
+          << std::fixed << std::setprecision(2) << "  t " << record.time << "s"
+          << std::defaultfloat << std::endl;
     if (!std::isfinite(record.residual))
       throw DivergenceError("the Newton method of dd-newton produced a "
                             "non-finite residual at step " +
@@ -295,10 +298,11 @@ namespace ddcontact
   DDNewtonSolver::counts() const
   {
     SolverCounts c;
-    c.body_solve_sets           = n_dd_iterations();
-    c.preconditioner_solve_sets = preconditioner.n_applications();
-    c.newton_steps              = records.size();
-    c.krylov_iterations         = krylov_iterations;
+    c.body_solve_sets               = n_dd_iterations();
+    c.preconditioner_solve_sets     = preconditioner.n_applications();
+    c.preconditioner_factorizations = n_factorizations;
+    c.newton_steps                  = records.size();
+    c.krylov_iterations             = krylov_iterations;
     return c;
   }
 

@@ -45,8 +45,10 @@ namespace ddcontact
     unsigned int body_solve_sets = 0;
     /** Sets of solves with the preconditioner's factorizations. */
     unsigned int preconditioner_solve_sets = 0;
-    unsigned int newton_steps              = 0;
-    unsigned int krylov_iterations         = 0;
+    /** Factorizations of all bodies for the preconditioner. */
+    unsigned int preconditioner_factorizations = 0;
+    unsigned int newton_steps                  = 0;
+    unsigned int krylov_iterations             = 0;
   };
 
   /**

@@ -134,6 +134,7 @@ namespace ddcontact
     std::vector<bool>       last_active;
 
     unsigned int n_data_solves     = 0;
+    unsigned int n_factorizations  = 0; // of the preconditioner, all meshes
     unsigned int krylov_iterations = 0;
   };
 } // namespace ddcontact
