@@ -61,7 +61,8 @@ namespace ddcontact
             dd_solver.get(),
             adaptations,
             n_adaptation_steps,
-            n_contact_iterations};
+            n_contact_iterations,
+            n_newton_iterations};
   }
 
   void
@@ -144,11 +145,11 @@ namespace ddcontact
             << " contact points, theta = " << contact_pairs.back()->penalty()
             << std::endl;
     }
-    dd_solver = std::make_unique<NeumannDDSolver>(parameters.dd,
-                                                  raw_pointers(bodies),
-                                                  raw_pointers(contact_pairs),
-                                                  *distribution,
-                                                  pcout);
+    dd_solver = ContactSolver::create(parameters.dd,
+                                      raw_pointers(bodies),
+                                      raw_pointers(contact_pairs),
+                                      *distribution,
+                                      pcout);
     if (parameters.dd.write_every_iteration)
       dd_solver->set_iteration_callback(
         [this](const unsigned int k)
@@ -163,11 +164,11 @@ namespace ddcontact
   Simulation::solve_contact()
   {
     TimerOutput::Scope t(timer, "contact solve");
-    if (parameters.dd.solver == ContactSolverType::dd)
+    if (parameters.dd.solver != ContactSolverType::monolithic)
     {
-      const unsigned int before = dd_solver->history().size();
+      const unsigned int before = dd_solver->n_dd_iterations();
       dd_solver->run();
-      return dd_solver->history().size() - before;
+      return dd_solver->n_dd_iterations() - before;
     }
 
     // Semismooth Newton on the penalised problem, inside the same Uzawa
@@ -348,7 +349,7 @@ namespace ddcontact
         TimerOutput::Scope t(timer, "contact solve");
         if (dd_solver->history().size() >= parameters.dd.max_iterations)
           dd_solver->stop_at_iteration_limit("the combined algorithm");
-        converged = dd_solver->step(); // (20)-(21)
+        converged = dd_solver->step(); // (20)-(21), or one Newton step
       }
       // A frozen mesh, or one that may not be refined any more, is only
       // checked again once the DD has converged.
@@ -377,7 +378,7 @@ namespace ddcontact
         // mesh is checked again when the DD has converged.
         frozen = true;
     }
-    return dd_solver->history().size();
+    return dd_solver->n_dd_iterations();
   }
 
   void
@@ -443,7 +444,7 @@ namespace ddcontact
   void
   Simulation::write_failed_run(const std::string &status)
   {
-    n_contact_iterations = dd_solver->history().size();
+    n_contact_iterations = dd_solver->n_dd_iterations();
     report.write_history(dd_solver->history());
     report.write_contact_profiles(results(), "");
     // The last iterate as the next output step, for diagnosis; a failure

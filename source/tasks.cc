@@ -3,6 +3,7 @@
 #include <ddcontact/tasks.h>
 
 #include <exception>
+#include <numeric>
 #include <vector>
 
 namespace ddcontact
@@ -37,5 +38,12 @@ namespace ddcontact
     for (const auto &e : errors)
       if (e)
         std::rethrow_exception(e);
+  }
+
+  double
+  ordered_dot(const dealii::Vector<double> &x, const dealii::Vector<double> &y)
+  {
+    AssertDimension(x.size(), y.size());
+    return std::inner_product(x.begin(), x.end(), y.begin(), 0.);
   }
 } // namespace ddcontact

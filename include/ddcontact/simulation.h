@@ -12,7 +12,7 @@
 #include <ddcontact/io/output_writer.h>
 #include <ddcontact/io/run_report.h>
 #include <ddcontact/parameters.h>
-#include <ddcontact/solvers/neumann_dd_solver.h>
+#include <ddcontact/solvers/contact_solver.h>
 
 #include <memory>
 #include <string>
@@ -61,7 +61,7 @@ namespace ddcontact
       return *distribution;
     }
 
-    const NeumannDDSolver &
+    const ContactSolver &
     get_dd_solver() const
     {
       return *dd_solver;
@@ -186,7 +186,7 @@ namespace ddcontact
     /** Process 0 writes the files (every process holds all results). */
     const bool                                       writes_files;
     std::vector<std::unique_ptr<ContactPair>>        contact_pairs;
-    std::unique_ptr<NeumannDDSolver>                 dd_solver;
+    std::unique_ptr<ContactSolver>                   dd_solver;
     unsigned int                                     n_contact_iterations = 0;
     unsigned int                                     n_newton_iterations  = 0;
     std::unique_ptr<OutputWriter>                    output_writer;

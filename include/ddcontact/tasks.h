@@ -1,6 +1,8 @@
 #ifndef ddcontact_tasks_h
 #define ddcontact_tasks_h
 
+#include <deal.II/lac/vector.h>
+
 #include <functional>
 
 namespace ddcontact
@@ -16,6 +18,24 @@ namespace ddcontact
   run_tasks(unsigned int                             n,
             const std::function<void(unsigned int)> &work,
             bool                                     in_turn);
+
+  /**
+   * x . y summed in index order. deal.II's Vector::operator* and norms
+   * split a long vector (from 16384 entries) into chunks by the number of
+   * threads, which changes the round-off with the thread count; the
+   * iterations (Anderson's least squares, the estimate of gamma*, the
+   * choice of the initial guess) use this instead, so that their results do
+   * not depend on Threads.
+   */
+  double
+  ordered_dot(const dealii::Vector<double> &x, const dealii::Vector<double> &y);
+
+  /** ||x||^2 summed in index order (see ordered_dot()). */
+  inline double
+  ordered_norm_sqr(const dealii::Vector<double> &x)
+  {
+    return ordered_dot(x, x);
+  }
 } // namespace ddcontact
 
 #endif

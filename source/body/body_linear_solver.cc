@@ -40,13 +40,18 @@ namespace ddcontact
       {
       }
 
-      /** l + @p extra, and the solution vector it is solved into. */
+      /** l + @p extra (@p extra alone without @p with_load), and the
+       * solution vector it is solved into. */
       void
       right_hand_side(const Vector<double> &extra,
+                      const bool            with_load,
                       VectorType           &rhs,
                       VectorType           &x) const
       {
-        rhs = load;
+        if (with_load)
+          rhs = load;
+        else
+          rhs.reinit(load.size());
         if (extra.size() > 0)
           rhs += extra;
         x.reinit(load.size());
@@ -115,10 +120,14 @@ namespace ddcontact
        * takes the rows it owns. */
       void
       right_hand_side(const Vector<double> &extra,
+                      const bool            with_load,
                       VectorType           &rhs,
                       VectorType           &x) const
       {
-        rhs = load;
+        if (with_load)
+          rhs = load;
+        else
+          rhs.reinit(load);
         x.reinit(load);
         if (extra.size() > 0 && owned.n_elements() > 0)
           std::transform(rhs.begin(),
@@ -251,10 +260,12 @@ namespace ddcontact
       }
 
       void
-      solve(const Vector<double> &load, Vector<double> &u) const override
+      solve(const Vector<double> &load,
+            Vector<double>       &u,
+            const bool            with_load) const override
       {
         Vector<double> rhs;
-        this->system.right_hand_side(load, rhs, u);
+        this->system.right_hand_side(load, with_load, rhs, u);
         direct.vmult(u, rhs);
       }
 
@@ -287,10 +298,12 @@ namespace ddcontact
       }
 
       void
-      solve(const Vector<double> &load, Vector<double> &u) const override
+      solve(const Vector<double> &load,
+            Vector<double>       &u,
+            const bool            with_load) const override
       {
         GroupSystem::VectorType rhs, x;
-        this->system.right_hand_side(load, rhs, x);
+        this->system.right_hand_side(load, with_load, rhs, x);
         direct->solve(x, rhs);
         this->system.to_whole(x, u);
       }
@@ -329,10 +342,12 @@ namespace ddcontact
       }
 
       void
-      solve(const Vector<double> &load, Vector<double> &u) const override
+      solve(const Vector<double> &load,
+            Vector<double>       &u,
+            const bool            with_load) const override
       {
         typename System::VectorType rhs, x;
-        this->system.right_hand_side(load, rhs, x);
+        this->system.right_hand_side(load, with_load, rhs, x);
         SolverControl control(this->parameters.solver_max_iterations,
                               this->parameters.solver_tolerance *
                                 rhs.l2_norm());

@@ -1,3 +1,4 @@
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/distributed/solution_transfer.h>
@@ -26,6 +27,37 @@
 
 namespace ddcontact
 {
+  namespace
+  {
+    /**
+     * The cell values of @p scratch on @p cell, computed alike for every
+     * cell. deal.II's FEValues::reinit() copies the Jacobians and shape
+     * gradients of the previous cell when the new one is a translation of
+     * it (CellSimilarity), but only when deal.II runs on one thread: the
+     * round-off of that shortcut made the stiffness matrix, and through it
+     * the DD's active sets and iteration counts, differ between Threads = 1
+     * and 2 (prm/three_bodies.prm: 143 against 71 iterations). On one
+     * thread every cell therefore gets a fresh FEValues (@p fresh keeps it),
+     * as every cell effectively does on several threads.
+     */
+    template <int dim, class Iterator>
+    const FEValues<dim> &
+    reinit_without_similarity(MeshWorker::ScratchData<dim>   &scratch,
+                              const Iterator                 &cell,
+                              const Mapping<dim>             &mapping,
+                              const FiniteElement<dim>       &fe,
+                              const Quadrature<dim>          &quadrature,
+                              const UpdateFlags               flags,
+                              std::unique_ptr<FEValues<dim>> &fresh)
+    {
+      if (MultithreadInfo::n_threads() > 1)
+        return scratch.reinit(cell);
+      fresh = std::make_unique<FEValues<dim>>(mapping, fe, quadrature, flags);
+      fresh->reinit(cell);
+      return *fresh;
+    }
+  } // namespace
+
   template <int dim>
   ElasticBody<dim>::ElasticBody(const BodyParameters &parameters,
                                 const Constants      &constants,
@@ -185,12 +217,16 @@ namespace ddcontact
     // on its own quadrature.
     const double lambda_full = (volumetric_quadrature != nullptr) ? 0. : lambda;
 
+    const UpdateFlags cell_flags = update_values | update_gradients |
+                                   update_quadrature_points | update_JxW_values;
     // a_a(u, v) of (11) and the body-force part of l_a(v).
     const auto cell_worker = [&](const Iterator                &cell,
                                  MeshWorker::ScratchData<dim>  &scratch,
                                  MeshWorker::CopyData<1, 1, 1> &copy)
     {
-      const auto        &fe_values     = scratch.reinit(cell);
+      std::unique_ptr<FEValues<dim>> fresh;
+      const auto                    &fe_values = reinit_without_similarity(
+        scratch, cell, get_mapping(), *fe, *cell_quadrature, cell_flags, fresh);
       const unsigned int dofs_per_cell = fe_values.dofs_per_cell;
       copy.reinit(dofs_per_cell);
       cell->get_dof_indices(copy.local_dof_indices[0]);
@@ -273,8 +309,7 @@ namespace ddcontact
       get_mapping(),
       *fe,
       *cell_quadrature,
-      update_values | update_gradients | update_quadrature_points |
-        update_JxW_values,
+      cell_flags,
       *face_quadrature,
       update_values | update_quadrature_points | update_JxW_values);
     MeshWorker::CopyData<1, 1, 1> copy;
@@ -302,6 +337,7 @@ namespace ddcontact
     using Iterator = typename DoFHandler<dim>::active_cell_iterator;
     const FEValuesExtractors::Vector displacement(0);
     const double                     lambda = material.lambda();
+    const UpdateFlags flags = update_gradients | update_JxW_values;
 
     // Selective reduced integration: lambda div u div v on one Gauss point
     // per cell. For nu -> 1/2 (lambda/mu -> infinity) the full rule forces
@@ -314,7 +350,14 @@ namespace ddcontact
                                        MeshWorker::ScratchData<dim>  &scratch,
                                        MeshWorker::CopyData<1, 1, 1> &copy)
     {
-      const auto        &fe_values     = scratch.reinit(cell);
+      std::unique_ptr<FEValues<dim>> fresh;
+      const auto        &fe_values     = reinit_without_similarity(scratch,
+                                                        cell,
+                                                        get_mapping(),
+                                                        *fe,
+                                                        *volumetric_quadrature,
+                                                        flags,
+                                                        fresh);
       const unsigned int dofs_per_cell = fe_values.dofs_per_cell;
       copy.reinit(dofs_per_cell);
       cell->get_dof_indices(copy.local_dof_indices[0]);
@@ -329,11 +372,8 @@ namespace ddcontact
               lambda * div[i] * div[j] * fe_values.JxW(q);
       }
     };
-    MeshWorker::ScratchData<dim>  volumetric_scratch(get_mapping(),
-                                                    *fe,
-                                                    *volumetric_quadrature,
-                                                    update_gradients |
-                                                      update_JxW_values);
+    MeshWorker::ScratchData<dim> volumetric_scratch(
+      get_mapping(), *fe, *volumetric_quadrature, flags);
     MeshWorker::CopyData<1, 1, 1> copy;
     MeshWorker::mesh_loop(dof_handler.active_cell_iterators(),
                           volumetric_worker,
@@ -465,6 +505,24 @@ namespace ddcontact
         throw InputError(parameters.section() +
                          ": the body problem gave a non-finite displacement; "
                          "check the Dirichlet conditions and the material");
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::solve_homogeneous(const Vector<double> &load,
+                                      Vector<double>       &u) const
+  {
+    Assert(is_factorized, ExcMessage("factorize() must be called first"));
+    linear_solver->solve(load, u, false);
+    // distribute() without the inhomogeneities; the constraints are closed,
+    // so every entry refers to an unconstrained dof.
+    for (const auto &line : constraints.get_lines())
+    {
+      double value = 0;
+      for (const auto &[column, weight] : line.entries)
+        value += weight * u(column);
+      u(line.index) = value;
+    }
   }
 
   template <int dim>

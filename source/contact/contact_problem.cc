@@ -53,7 +53,9 @@ namespace ddcontact
   }
 
   void
-  ContactProblem::solve_all(const Iterate &loads, Iterate &u) const
+  ContactProblem::solve_all(const Iterate &loads,
+                            Iterate       &u,
+                            const bool     homogeneous) const
   {
     // A contact load beyond the floating-point range would come back as a
     // non-finite displacement blamed on the body; name the pairs instead.
@@ -76,19 +78,27 @@ namespace ddcontact
     // each on the process that owns it.
     u.resize(bodies.size());
     distribution.solve_and_share(
-      [&](const unsigned int b) { bodies[b]->solve(loads[b], u[b]); }, u);
+      [&](const unsigned int b)
+      {
+        if (homogeneous)
+          bodies[b]->solve_homogeneous(loads[b], u[b]);
+        else
+          bodies[b]->solve(loads[b], u[b]);
+      },
+      u);
   }
 
   void
   ContactProblem::solve_bodies(const std::vector<std::vector<double>> &sigma_n,
-                               Iterate                                &u) const
+                               Iterate                                &u,
+                               const bool homogeneous) const
   {
     Iterate loads = zero_iterate();
     for (unsigned int p = 0; p < pairs.size(); ++p)
       pairs[p]->add_contact_loads(sigma_n[p],
                                   loads[body_index(pairs[p]->get_body_1())],
                                   loads[body_index(pairs[p]->get_body_2())]);
-    solve_all(loads, u);
+    solve_all(loads, u, homogeneous);
   }
 
   std::vector<double>

@@ -1,4 +1,5 @@
 #include <ddcontact/contact/elastic_layer_guess.h>
+#include <ddcontact/tasks.h>
 
 #include <algorithm>
 #include <cmath>
@@ -77,9 +78,9 @@ namespace ddcontact
     double step_zero = 0, step_layer = 0;
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
-      step_zero += from_zero[b].norm_sqr();
+      step_zero += ordered_norm_sqr(from_zero[b]);
       from_layer[b] -= u[b];
-      step_layer += from_layer[b].norm_sqr();
+      step_layer += ordered_norm_sqr(from_layer[b]);
     }
     guess.step_ratio = std::sqrt(step_layer / step_zero);
     if (step_layer > 100 * step_zero) // squared norms: 10 times

@@ -17,25 +17,33 @@ namespace ddcontact
       lambda_points.push_back(p.x);
   }
 
+  std::vector<double>
+  nearest_point_values(const std::vector<Point<2>> &from,
+                       const std::vector<double>   &values,
+                       const std::vector<Point<2>> &to)
+  {
+    std::vector<double> moved(to.size(), 0.);
+    if (!from.empty() && values.size() == from.size())
+      for (unsigned int q = 0; q < to.size(); ++q)
+      {
+        unsigned int nearest = 0;
+        for (unsigned int i = 1; i < from.size(); ++i)
+          if (to[q].distance_square(from[i]) <
+              to[q].distance_square(from[nearest]))
+            nearest = i;
+        moved[q] = values[nearest];
+      }
+    return moved;
+  }
+
   void
   PenaltyLaw::transfer_to_new_points()
   {
-    const auto         &points = pair.points();
-    std::vector<double> moved(points.size(), 0.);
-    if (!lambda_points.empty() && lambda.size() == lambda_points.size())
-      for (unsigned int q = 0; q < points.size(); ++q)
-      {
-        unsigned int nearest = 0;
-        for (unsigned int i = 1; i < lambda_points.size(); ++i)
-          if (points[q].x.distance_square(lambda_points[i]) <
-              points[q].x.distance_square(lambda_points[nearest]))
-            nearest = i;
-        moved[q] = lambda[nearest];
-      }
-    lambda = std::move(moved);
-    lambda_points.clear();
-    for (const auto &p : points)
-      lambda_points.push_back(p.x);
+    std::vector<Point<2>> points;
+    for (const auto &p : pair.points())
+      points.push_back(p.x);
+    lambda        = nearest_point_values(lambda_points, lambda, points);
+    lambda_points = std::move(points);
   }
 
   std::vector<double>

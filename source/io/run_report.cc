@@ -107,8 +107,8 @@ namespace ddcontact
   {
     if (!writes_files)
       return;
-    const NeumannDDSolver *dd_solver = results.dd_solver;
-    auto                  &out       = statistics;
+    const ContactSolver *dd_solver = results.dd_solver;
+    auto                &out       = statistics;
     out << std::setprecision(10) << results.n_adaptation_steps << ','
         << (dd_solver ? dd_solver->history().size() : 0);
     for (const auto &body : results.bodies)
@@ -310,11 +310,26 @@ namespace ddcontact
                          const bool     judge_penetration,
                          Json          &json) const
   {
-    const NeumannDDSolver &dd_solver = *results.dd_solver;
-    json["dd_iterations"]            = results.n_contact_iterations;
-    json["gamma"]                    = parameters.dd.gamma;
-    json["relaxation"]               = to_string(parameters.dd.relaxation);
-    json["uzawa_updates"]            = dd_solver.n_uzawa_updates();
+    const ContactSolver &dd_solver = *results.dd_solver;
+    json["dd_iterations"]          = results.n_contact_iterations;
+    json["gamma"]                  = parameters.dd.gamma;
+    json["relaxation"]             = to_string(parameters.dd.relaxation);
+    json["uzawa_updates"]          = dd_solver.n_uzawa_updates();
+    // The work in sets of body solves (one solve of every body), and the
+    // Newton and Krylov steps of dd-newton (zero for the relaxed DD).
+    const SolverCounts counts         = dd_solver.counts();
+    json["contact_solver"]            = dd_solver.name();
+    json["body_solve_sets"]           = counts.body_solve_sets;
+    json["preconditioner_solve_sets"] = counts.preconditioner_solve_sets;
+    json["preconditioner_factorizations"] =
+      counts.preconditioner_factorizations;
+    json["newton_steps"]      = counts.newton_steps;
+    json["krylov_iterations"] = counts.krylov_iterations;
+    if (parameters.dd.solver == ContactSolverType::monolithic)
+    {
+      json["contact_solver"] = "monolithic";
+      json["newton_steps"]   = results.n_newton_iterations;
+    }
     Json thetas = Json::array(), contact = Json::array();
     for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
     {

@@ -4,7 +4,8 @@ namespace ddcontact
 {
   DDCONTACT_SELECTION(ContactSolverType,
                       {"dd", ContactSolverType::dd},
-                      {"monolithic", ContactSolverType::monolithic})
+                      {"monolithic", ContactSolverType::monolithic},
+                      {"dd-newton", ContactSolverType::dd_newton})
   DDCONTACT_SELECTION(RelaxationType,
                       {"fixed", RelaxationType::fixed},
                       {"auto", RelaxationType::automatic},
@@ -33,7 +34,10 @@ namespace ddcontact
       selection_pattern<ContactSolverType>(),
       "dd: the parallel Neumann domain decomposition (20)-(21); "
       "monolithic: semismooth Newton on the penalised problem "
-      "(16) for all bodies at once (the reference).");
+      "(16) for all bodies at once (the reference); dd-newton: semismooth "
+      "Newton on the contact pressure of (20), whose linear systems are "
+      "solved by preconditioned CG with one set of body solves per "
+      "iteration (doc/contact-solvers.md).");
     prm.declare_entry("Relaxation",
                       "fixed",
                       selection_pattern<RelaxationType>(),
@@ -100,7 +104,9 @@ namespace ddcontact
     prm.declare_entry("Max Newton iterations",
                       "50",
                       Patterns::Integer(1),
-                      "Iteration limit of the monolithic Newton solver.");
+                      "Iteration limit of the monolithic Newton solver "
+                      "and of the Newton steps of dd-newton on one mesh "
+                      "and multiplier.");
   }
 
   void

@@ -1,5 +1,6 @@
 #include <ddcontact/contact/elastic_layer_guess.h>
 #include <ddcontact/solvers/neumann_dd_solver.h>
+#include <ddcontact/tasks.h>
 
 #include <algorithm>
 #include <cmath>
@@ -72,28 +73,11 @@ namespace ddcontact
     }
   } // namespace
 
-  NeumannDDSolver::NeumannDDSolver(const DDParameters &parameters,
-                                   const std::vector<ElasticBody<2> *> &bodies,
-                                   const std::vector<ContactPair *>    &pairs,
-                                   const BodyDistribution &distribution,
-                                   ConditionalOStream     &pcout)
-    : parameters(parameters)
-    , problem(bodies, pairs, distribution)
-    , relaxation(make_relaxation(this->parameters))
-    , uzawa(this->parameters, pcout)
-    , pcout(pcout)
-  {
-  }
-
   void
   NeumannDDSolver::initialize()
   {
-    records.clear();
-    problem.reset_laws();
-    uzawa.reset();
     relaxation->set_gamma(parameters.gamma);
-    start_phase();
-    timer.restart();
+    ContactSolver::initialize();
 
     auto u = problem.zero_iterate();
     if (parameters.initial_guess == InitialGuess::elastic_layer)
@@ -125,49 +109,7 @@ namespace ddcontact
   NeumannDDSolver::start_phase()
   {
     relaxation->reset();
-    phase_start = records.size();
-  }
-
-  void
-  NeumannDDSolver::reinit_after_refinement()
-  {
-    for (unsigned int p = 0; p < problem.get_pairs().size(); ++p)
-      problem.law(p).transfer_to_new_points();
-    uzawa.start_mesh();
-    last_sigma_n.clear();
-    last_u_tilde.clear();
-    // The residual jumps with the new mesh: divergence is judged anew.
-    start_phase();
-  }
-
-  void
-  NeumannDDSolver::adopt_current_iterate()
-  {
-    last_u_tilde = problem.current_iterate();
-    last_sigma_n.resize(problem.get_pairs().size());
-    for (unsigned int p = 0; p < last_sigma_n.size(); ++p)
-      last_sigma_n[p] = problem.pressure(p, last_u_tilde);
-  }
-
-  const Vector<double> &
-  NeumannDDSolver::last_body_solution(const ElasticBody<2> &body) const
-  {
-    Assert(last_u_tilde.size() == problem.get_bodies().size(),
-           ExcMessage("step() must be called first"));
-    return last_u_tilde[problem.body_index(body)];
-  }
-
-  BoundaryTractionSamples
-  NeumannDDSolver::last_contact_traction(const ElasticBody<2> &body) const
-  {
-    const auto &pairs = problem.get_pairs();
-    Assert(last_sigma_n.size() == pairs.size(),
-           ExcMessage("step() must be called first"));
-    BoundaryTractionSamples samples;
-    for (unsigned int p = 0; p < pairs.size(); ++p)
-      if (&pairs[p]->get_body_1() == &body || &pairs[p]->get_body_2() == &body)
-        pairs[p]->add_traction_samples(last_sigma_n[p], body, samples);
-    return samples;
+    ContactSolver::start_phase();
   }
 
   void
@@ -244,14 +186,7 @@ namespace ddcontact
 
     IterationRecord record;
     record.iteration = records.size() + 1;
-    for (unsigned int p = 0; p < pairs.size(); ++p)
-    {
-      const auto state = problem.contact_state(p, u);
-      record.force += state.force_1.norm();
-      record.active_length += state.contact_length;
-      record.max_penetration =
-        std::max(record.max_penetration, state.max_penetration);
-    }
+    measure_contact(u, record);
 
     last_sigma_n.resize(pairs.size());
     for (unsigned int p = 0; p < pairs.size(); ++p)
@@ -285,9 +220,7 @@ namespace ddcontact
         record.increment = std::max(record.increment, (n > 0) ? d / n : d);
       }
     record.time = timer.wall_time();
-    records.push_back(record);
-    if (iteration_callback)
-      iteration_callback(record.iteration);
+    add_record(record);
 
     // The stopping test of Domain decomposition/Stopping test.
     const bool residual_test = record.residual <= parameters.eps_residual;
@@ -350,10 +283,7 @@ namespace ddcontact
     s << ", best " << best << " at iteration " << best_k
       << "; estimated gamma* = " << limit << ")";
 
-    std::string penalty_entries;
-    for (const auto *pair : problem.get_pairs())
-      penalty_entries += (penalty_entries.empty() ? "" : ", ") +
-                         ("Contact pair " + pair->name() + "/Penalty");
+    const std::string penalty_entries = this->penalty_entries();
 
     const double round_off =
       1e3 * std::numeric_limits<double>::epsilon() * (1. + lambda_max);
@@ -389,95 +319,24 @@ namespace ddcontact
     return s.str();
   }
 
-  double
-  NeumannDDSolver::estimate_gamma_limit() const
-  {
-    // Power iteration on the linearised DD operator with every contact
-    // point active: v -> A^{-1} (1/theta) C^T C v, whose largest eigenvalue
-    // lambda_max gives the stability limit of (21), gamma* = 2/(1 +
-    // lambda_max) (the spectrum of I + A^{-1} J'' lies in [1, 1 +
-    // lambda_max]).
-    const auto             &bodies = problem.get_bodies();
-    ContactProblem::Iterate base, v(bodies.size()), w;
-    problem.solve_all(ContactProblem::Iterate(bodies.size()), base);
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-    {
-      v[b] = bodies[b]->get_solution();
-      v[b] -= base[b];
-      // Scaled by its largest entry first: a diverged iterate (1e200)
-      // would overflow the sums of squares below; a non-finite one is
-      // replaced by a generic start vector.
-      const double largest = v[b].linfty_norm();
-      if (largest > 0 && std::isfinite(largest))
-        v[b] /= largest;
-      else
-        for (unsigned int i = 0; i < v[b].size(); ++i)
-          v[b](i) = 1. + 0.1 * std::sin(1. + i);
-      bodies[b]->get_constraints().set_zero(v[b]);
-    }
-    double lambda = 0;
-    for (unsigned int it = 0; it < 30; ++it)
-    {
-      auto loads = problem.zero_iterate();
-      for (const auto *pair : problem.get_pairs())
-      {
-        const unsigned int  b1 = problem.body_index(pair->get_body_1());
-        const unsigned int  b2 = problem.body_index(pair->get_body_2());
-        std::vector<double> u_1n, u_2n;
-        pair->normal_displacements(v[b1], v[b2], u_1n, u_2n);
-        std::vector<double> sigma(u_1n.size());
-        for (unsigned int q = 0; q < sigma.size(); ++q)
-          sigma[q] = -(u_1n[q] + u_2n[q]) / pair->penalty();
-        pair->add_contact_loads(sigma, loads[b1], loads[b2]);
-      }
-      problem.solve_all(loads, w);
-      double norm_v = 0, norm_w = 0;
-      for (unsigned int b = 0; b < bodies.size(); ++b)
-      {
-        w[b] -= base[b];
-        w[b] *= -1.;
-        norm_v += v[b].norm_sqr();
-        norm_w += w[b].norm_sqr();
-      }
-      if (norm_w == 0 || norm_v == 0)
-        break;
-      lambda = std::sqrt(norm_w / norm_v);
-      for (unsigned int b = 0; b < bodies.size(); ++b)
-      {
-        v[b] = w[b];
-        v[b] /= std::sqrt(norm_w);
-      }
-    }
-    return 2. / (1. + lambda);
-  }
-
   bool
   NeumannDDSolver::start_uzawa_phase()
   {
-    if (!uzawa.update(problem))
+    if (!ContactSolver::start_uzawa_phase())
       return false;
     // A new phase of the DD with the new multipliers; Aitken's dynamic
     // gamma starts again from the given one.
-    start_phase();
     if (parameters.relaxation != RelaxationType::automatic)
       relaxation->set_gamma(parameters.gamma);
     return true;
   }
 
-  unsigned int
-  NeumannDDSolver::run()
+  SolverCounts
+  NeumannDDSolver::counts() const
   {
-    do
-    {
-      bool converged = false;
-      while (!converged)
-      {
-        if (records.size() >= parameters.max_iterations)
-          stop_at_iteration_limit("the domain decomposition");
-        converged = step();
-      }
-    } while (start_uzawa_phase());
-    return records.size();
+    SolverCounts c;
+    c.body_solve_sets = records.size();
+    return c;
   }
 
   void
@@ -543,9 +402,4 @@ namespace ddcontact
     throw NotConvergedError(s.str());
   }
 
-  ContactState
-  NeumannDDSolver::contact_state(const unsigned int p) const
-  {
-    return problem.contact_state(p, problem.current_iterate());
-  }
 } // namespace ddcontact

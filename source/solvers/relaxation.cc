@@ -1,8 +1,10 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <ddcontact/solvers/relaxation.h>
+#include <ddcontact/tasks.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace ddcontact
 {
@@ -33,9 +35,10 @@ namespace ddcontact
     {
       Vector<double> df(f);
       df -= previous_residual;
-      const double dd = df * df;
+      const double dd = ordered_dot(df, df);
       if (dd > 0)
-        gamma = std::clamp(-gamma * (previous_residual * df) / dd, 1e-6, 1.);
+        gamma = std::clamp(
+          -gamma * ordered_dot(previous_residual, df) / dd, 1e-6, 1.);
     }
     previous_residual = f;
     Vector<double> x_new(x);
@@ -102,11 +105,11 @@ namespace ddcontact
         Vector<double>     v      = delta_f[column];
         for (unsigned int i = 0; i < j; ++i)
         {
-          r(i, j) = q[i] * v;
+          r(i, j) = ordered_dot(q[i], v);
           v.add(-r(i, j), q[i]);
         }
-        r(j, j) = v.l2_norm();
-        if (!(r(j, j) > 1e-6 * delta_f[column].l2_norm()))
+        r(j, j) = std::sqrt(ordered_norm_sqr(v));
+        if (!(r(j, j) > 1e-6 * std::sqrt(ordered_norm_sqr(delta_f[column]))))
         {
           delta_f.erase(delta_f.begin() + column);
           delta_g.erase(delta_g.begin() + column);
@@ -121,7 +124,7 @@ namespace ddcontact
     Vector<double>     alpha(m_kept);
     for (unsigned int i = m_kept; i-- > 0;)
     {
-      double sum = q[i] * f;
+      double sum = ordered_dot(q[i], f);
       for (unsigned int j = i + 1; j < m_kept; ++j)
         sum -= r(i, j) * alpha(j);
       alpha(i) = sum / r(i, i);

@@ -79,10 +79,13 @@ namespace ddcontact
     factorize(const DoFHandler<dim> &dof_handler) = 0;
 
     /** @p u = K^{-1} (l + @p load), whole on every process of the group;
-     * @p load may be empty for none. The constraints are not distributed
-     * (the body does that). */
+     * @p load may be empty for none. Without @p with_load, K^{-1} @p load
+     * (the body's own load l left out, for a homogeneous solve). The
+     * constraints are not distributed (the body does that). */
     virtual void
-    solve(const Vector<double> &load, Vector<double> &u) const = 0;
+    solve(const Vector<double> &load,
+          Vector<double>       &u,
+          bool                  with_load = true) const = 0;
 
     /** The assembled matrix and load of a body solved on one process (the
      * monolithic solver builds its system from them); a body solved by a

@@ -139,6 +139,15 @@ namespace ddcontact
     void
     solve(const Vector<double> &load, Vector<double> &u) const;
 
+    /**
+     * Solve a_a(u, v) = load(v) with homogeneous data: no body force or
+     * traction of l_a, zero Dirichlet values (the hanging-node constraints
+     * are distributed without inhomogeneities). The response of the body to
+     * a contact load alone, for the interface operator of DDNewtonSolver.
+     */
+    void
+    solve_homogeneous(const Vector<double> &load, Vector<double> &u) const;
+
     /** Solve with no extra load into the body's own solution vector. */
     void
     solve();

@@ -63,6 +63,13 @@ namespace ddcontact
     unsigned int
     body_index(const ElasticBody<2> &body) const;
 
+    /** Where the bodies are solved (for other solves than solve_all()). */
+    const BodyDistribution &
+    get_distribution() const
+    {
+      return distribution;
+    }
+
     /** The law of pair @p p (its multipliers can be updated). */
     PenaltyLaw &
     law(const unsigned int p)
@@ -90,15 +97,19 @@ namespace ddcontact
 
     /** Solve every body b with the extra load loads[b] (empty: none), each
      * on its process, concurrently; every process receives all u[b].
-     * A non-finite load is refused naming the pairs' Gap and Penalty. */
+     * A non-finite load is refused naming the pairs' Gap and Penalty.
+     * With @p homogeneous, the bodies' own data are left out
+     * (ElasticBody::solve_homogeneous()). */
     void
-    solve_all(const Iterate &loads, Iterate &u) const;
+    solve_all(const Iterate &loads, Iterate &u, bool homogeneous = false) const;
 
     /** Solve all bodies loaded by the normal stresses sigma_n (one vector
-     * per pair) on their contact zones: one step of (20). */
+     * per pair) on their contact zones: one step of (20); with
+     * @p homogeneous, the response to sigma_n alone. */
     void
     solve_bodies(const std::vector<std::vector<double>> &sigma_n,
-                 Iterate                                &u) const;
+                 Iterate                                &u,
+                 bool homogeneous = false) const;
 
     /** g = f_n - u_1n - u_2n of pair @p p at its points. */
     std::vector<double>

@@ -12,6 +12,15 @@ namespace ddcontact
 {
   using namespace dealii;
 
+  /** The value at every point of @p to of a function given by its
+   * @p values at the points @p from: that of the nearest point (piecewise
+   * constant transfer of a pressure or multiplier to new contact points);
+   * zero where @p from is empty. */
+  std::vector<double>
+  nearest_point_values(const std::vector<Point<2>> &from,
+                       const std::vector<double>   &values,
+                       const std::vector<Point<2>> &to);
+
   /**
    * The contact law (20) of one pair, at its contact points:
    *   sigma_n = min(0, lambda + g / theta),  g = f_n - u_1n - u_2n,

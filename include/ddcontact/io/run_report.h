@@ -10,7 +10,7 @@
 #include <ddcontact/contact/contact_pair.h>
 #include <ddcontact/io/json.h>
 #include <ddcontact/parameters.h>
-#include <ddcontact/solvers/neumann_dd_solver.h>
+#include <ddcontact/solvers/contact_solver.h>
 
 #include <fstream>
 #include <memory>
@@ -49,12 +49,14 @@ namespace ddcontact
       const BodyDistribution                             &distribution;
       const std::vector<std::unique_ptr<ContactPair>>    &contact_pairs;
       /** The contact solver; nullptr in a scene without contact. */
-      const NeumannDDSolver                                  *dd_solver;
+      const ContactSolver                                    *dd_solver;
       const std::vector<std::unique_ptr<AdaptiveRefinement>> &adaptations;
       /** Refinement steps done so far. */
       unsigned int n_adaptation_steps;
       /** DD iterations of the whole solve. */
       unsigned int n_contact_iterations;
+      /** Newton iterations of the monolithic solver (Solver = monolithic). */
+      unsigned int n_newton_iterations;
     };
 
     /** The report of a run of @p parameters, timed by @p timer and

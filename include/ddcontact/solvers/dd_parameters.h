@@ -11,12 +11,14 @@ namespace ddcontact
 {
   using namespace dealii;
 
-  /** Domain decomposition/Solver: the DD (20)-(21), or the monolithic
-   * semismooth Newton method on (16). */
+  /** Domain decomposition/Solver: the DD (20)-(21), the monolithic
+   * semismooth Newton method on (16), or the body-by-body semismooth
+   * Newton method on the contact pressure (DDNewtonSolver). */
   enum class ContactSolverType
   {
     dd,
-    monolithic
+    monolithic,
+    dd_newton
   };
 
   /** Domain decomposition/Relaxation: the paper's fixed gamma of (21),

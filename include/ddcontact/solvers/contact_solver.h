@@ -1,0 +1,252 @@
+#ifndef ddcontact_contact_solver_h
+#define ddcontact_contact_solver_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <ddcontact/body/body_distribution.h>
+#include <ddcontact/contact/contact_problem.h>
+#include <ddcontact/parameters.h>
+#include <ddcontact/solvers/errors.h>
+#include <ddcontact/solvers/uzawa_loop.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /** What one outer iteration measured (one row of history.csv): a DD
+   * iteration (20)-(21) of NeumannDDSolver, or a Newton step of
+   * DDNewtonSolver. */
+  struct IterationRecord
+  {
+    unsigned int iteration       = 0;
+    double       increment       = 0; // the paper's test, max over bodies
+    double       residual        = 0; // the solver's relative residual
+    double       gamma           = 0; // relaxation, or Newton damping
+    double       force           = 0; // |contact force on body 1|, all pairs
+    double       active_length   = 0;
+    double       max_penetration = 0;
+    double       time            = 0;
+  };
+
+  /** The work of a contact solve, in sets of body solves (one solve of
+   * every body, concurrently: the cost of one DD iteration). */
+  struct SolverCounts
+  {
+    /** Sets of solves with the bodies' stiffness matrices (Neumann
+     * problems on the contact zones): the "DD iterations". */
+    unsigned int body_solve_sets = 0;
+    /** Sets of solves with the preconditioner's factorizations. */
+    unsigned int preconditioner_solve_sets = 0;
+    /** Factorizations of all bodies for the preconditioner. */
+    unsigned int preconditioner_factorizations = 0;
+    unsigned int newton_steps                  = 0;
+    unsigned int krylov_iterations             = 0;
+  };
+
+  /**
+   * A solver of the contact problem (16) of several bodies that works
+   * body by body: every iteration solves each body problem once,
+   * concurrently, loaded on its contact zones. What the solvers share is
+   * here: the ContactProblem, the augmented Lagrangian's UzawaLoop, the
+   * history of the outer iterations, and the last body solutions with
+   * their loads (the FEM side of the FEM-BEM estimator). The derived
+   * classes do the iterating: step() is one outer iteration, which is what
+   * the combined algorithm of Fig. 2 calls between two adaptation steps.
+   *
+   * Domain decomposition/Solver selects the solver, in create(): the
+   * paper's relaxed DD (NeumannDDSolver, also the host of the monolithic
+   * Newton solver) or the semismooth Newton method on the contact pressure
+   * (DDNewtonSolver).
+   */
+  class ContactSolver
+  {
+  public:
+    ContactSolver(const DDParameters                  &parameters,
+                  const std::vector<ElasticBody<2> *> &bodies,
+                  const std::vector<ContactPair *>    &pairs,
+                  const BodyDistribution              &distribution,
+                  ConditionalOStream                  &pcout);
+
+    virtual ~ContactSolver() = default;
+
+    /** The solver of Domain decomposition/Solver (NeumannDDSolver for
+     * "dd" and "monolithic"). */
+    static std::unique_ptr<ContactSolver>
+    create(const DDParameters                  &parameters,
+           const std::vector<ElasticBody<2> *> &bodies,
+           const std::vector<ContactPair *>    &pairs,
+           const BodyDistribution              &distribution,
+           ConditionalOStream                  &pcout);
+
+    /** A new run on the current meshes: resets the history and the
+     * multipliers (derived classes then set up their iterate). Call after
+     * the bodies and pairs have been set up. */
+    virtual void
+    initialize();
+
+    /** One outer iteration; returns true when the stopping test holds.
+     * Throws DivergenceError. */
+    virtual bool
+    step() = 0;
+
+    /** Iterate until converged (with Uzawa updates if requested); returns
+     * the number of outer iterations. Throws DivergenceError, or
+     * NotConvergedError at Max iterations with a falling residual. */
+    unsigned int
+    run();
+
+    /** Domain decomposition/Max iterations is reached: throw
+     * NotConvergedError or DivergenceError with a message that says what
+     * to change. @p what names the loop ("the domain decomposition", "the
+     * combined algorithm"). */
+    [[noreturn]] virtual void
+    stop_at_iteration_limit(const std::string &what) const = 0;
+
+    /** Re-create internal vectors after a mesh change (the bodies keep
+     * their transferred solutions and the pairs have been set up again).
+     * The multipliers move to the new contact points (each takes the value
+     * of the nearest old point), and the Uzawa loop starts afresh on the
+     * new mesh. */
+    virtual void
+    reinit_after_refinement();
+
+    /**
+     * The augmented Lagrangian's outer step (UzawaLoop::update()) after
+     * the iteration on the current multipliers has converged; on an update
+     * a new phase of the iteration starts. Also drives the monolithic
+     * solver's Uzawa loop.
+     */
+    virtual bool
+    start_uzawa_phase();
+
+    /** "dd" or "dd-newton", as Domain decomposition/Solver writes it. */
+    virtual std::string
+    name() const = 0;
+
+    /** The work so far (summary.json). */
+    virtual SolverCounts
+    counts() const = 0;
+
+    /** The number of DD iterations (sets of body solves) of the run so
+     * far, which the summary reports as dd_iterations. */
+    virtual unsigned int
+    n_dd_iterations() const
+    {
+      return records.size();
+    }
+
+    /** Contact state of pair @p p for the current iterate. */
+    ContactState
+    contact_state(unsigned int p) const;
+
+    /** The contact problem (bodies, pairs, laws) the solver iterates on;
+     * other solvers of the same problem (the monolithic Newton solver)
+     * share its laws and multipliers. */
+    ContactProblem &
+    get_problem()
+    {
+      return problem;
+    }
+
+    /** Called after every iteration with its number (e.g. to write the
+     * contact profiles of every iterate, the paper's Fig. 9). */
+    void
+    set_iteration_callback(const std::function<void(unsigned int)> &callback)
+    {
+      iteration_callback = callback;
+    }
+
+    const std::vector<IterationRecord> &
+    history() const
+    {
+      return records;
+    }
+
+    /** Uzawa updates over the whole run (all meshes). */
+    unsigned int
+    n_uzawa_updates() const
+    {
+      return uzawa.n_updates();
+    }
+
+    /** See UzawaLoop::shortfall(). */
+    std::string
+    augmented_lagrangian_shortfall() const
+    {
+      return uzawa.shortfall(problem);
+    }
+
+    /**
+     * Estimate the stability limit gamma* of the paper's fixed relaxation
+     * (21) on this problem by power iteration on the linearised DD
+     * operator with every contact point active (costs about 30 solves of
+     * each body).
+     */
+    double
+    estimate_gamma_limit() const;
+
+    /**
+     * The FEM solution u~ of the body problem (20) of @p body in the last
+     * step, before any relaxation: the FEM side of the FEM-BEM estimator,
+     * which must solve the same boundary value problem as the BEM.
+     */
+    const Vector<double> &
+    last_body_solution(const ElasticBody<2> &body) const;
+
+    /** The contact traction that loaded @p body in the last step (20). */
+    BoundaryTractionSamples
+    last_contact_traction(const ElasticBody<2> &body) const;
+
+    /** Take the bodies' current solutions as the last body solutions,
+     * loaded by their own contact pressure: after a solver that converged
+     * without DD steps (the monolithic one), the converged u solves (20)
+     * with that load, so the estimator sees the same problem. */
+    void
+    adopt_current_iterate();
+
+  protected:
+    /** A new phase of the iteration (first mesh, new mesh, new Uzawa
+     * multipliers): derived classes drop what depends on the old one. */
+    virtual void
+    start_phase();
+
+    /** Append @p record to the history and call the iteration callback. */
+    void
+    add_record(const IterationRecord &record);
+
+    /** Force, active length and penetration of the iterate @p u, summed
+     * (or the largest) over the pairs, into @p record. */
+    void
+    measure_contact(const ContactProblem::Iterate &u,
+                    IterationRecord               &record) const;
+
+    /** "Contact pair A/Penalty, Contact pair B/Penalty": the entries that
+     * set theta, for messages. */
+    std::string
+    penalty_entries() const;
+
+    const DDParameters           parameters;
+    ContactProblem               problem;
+    UzawaLoop                    uzawa;
+    ConditionalOStream          &pcout;
+    std::vector<IterationRecord> records;
+    // The last step's loads sigma_n (per pair) and body solutions u~.
+    std::vector<std::vector<double>> last_sigma_n;
+    ContactProblem::Iterate          last_u_tilde;
+    unsigned int                     phase_start = 0; // first record
+    Timer                            timer;
+
+  private:
+    std::function<void(unsigned int)> iteration_callback;
+  };
+} // namespace ddcontact
+
+#endif

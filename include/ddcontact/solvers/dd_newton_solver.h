@@ -1,0 +1,142 @@
+#ifndef ddcontact_dd_newton_solver_h
+#define ddcontact_dd_newton_solver_h
+
+#include <ddcontact/solvers/contact_interface.h>
+#include <ddcontact/solvers/contact_solver.h>
+#include <ddcontact/solvers/robin_preconditioner.h>
+
+#include <string>
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * Domain decomposition/Solver = dd-newton: the penalty contact (20)
+   * solved body by body by a semismooth Newton method on the contact
+   * pressure p = -sigma_n at the contact points (ContactInterface).
+   *
+   * With the penetration d(p) = d_0 - S p of the bodies solved under p,
+   * the law (20), theta p = max(0, d(p)), is the complementarity problem
+   *   p >= 0,  lambda = (Theta + S) p - d_0 >= 0,  p lambda = 0,
+   * the optimality system of the dual of (15), min_{p >= 0}
+   * (1/2) (p, (Theta + S) p)_W - (d_0, p)_W. The semismooth Newton method on
+   * Phi(p) = min(c p, lambda) = 0 (c = theta + w (1 - nu^2)/E summed over
+   * both bodies, ContactInterface::complementarity_scale(): with c = theta
+   * a tension p < 0 at a point counted only theta |p|, invisible for small
+   * theta) is a primal-dual active-set method: on the active set
+   * A = {d(p) + (c - theta) p > 0} solve
+   *   (Theta + S_AA) p_A = d_0,A,   p = 0 off A,
+   * by conjugate gradients in (.,.)_W, preconditioned by the bodies' Robin
+   * problems (RobinPreconditioner), warm-started from the last p. Every CG
+   * iteration applies S once: one set of body solves, each body on its own
+   * (concurrently, on its process) with its factorization, loaded on its
+   * contact zones -- the structure of the paper's DD, whose "DD iteration"
+   * is that set of solves. d(p) and the bodies' displacements follow from
+   * the CG recursions by linearity, without further solves. The inner
+   * tolerance is 0.1 of the Newton residual while the active set changes
+   * and the final one once it has settled. A step that does not reduce
+   * ||Phi||_W is damped (p + tau (p_new - p), tau halved; free, since d is
+   * affine in p).
+   *
+   * step() is one Newton step, what the combined algorithm of Fig. 2 calls
+   * between two adaptation steps; the stopping test is ||Phi(p)||_W <=
+   * eps_residual ||max(0, d_0)||_W (the overlap of the bodies without
+   * contact pressure). The augmented Lagrangian's Uzawa loop runs over the
+   * converged Newton iteration, with the gap shifted by theta lambda.
+   */
+  class DDNewtonSolver : public ContactSolver
+  {
+  public:
+    using ContactSolver::ContactSolver;
+
+    /** Zero pressure; resets the history and the multipliers. */
+    void
+    initialize() override;
+
+    /** One Newton step; returns true when ||Phi(p)||_W is below the
+     * tolerance. Throws NotConvergedError or DivergenceError after Max
+     * Newton iterations on one mesh and multiplier. */
+    bool
+    step() override;
+
+    [[noreturn]] void
+    stop_at_iteration_limit(const std::string &what) const override;
+
+    /** The pressure moves to the new points (nearest old point); the
+     * preconditioner and the data are set up again at the next step. */
+    void
+    reinit_after_refinement() override;
+
+    std::string
+    name() const override
+    {
+      return "dd-newton";
+    }
+
+    SolverCounts
+    counts() const override;
+
+    /** Sets of solves with the bodies' stiffness: the bodies' data, and
+     * one per application of S. */
+    unsigned int
+    n_dd_iterations() const override
+    {
+      return n_data_solves + interface.n_applications();
+    }
+
+  private:
+    /** The data d_0 change with the multipliers: recomputed (without
+     * solves) at the next step. */
+    void
+    start_phase() override;
+
+    /** For new meshes: the interface, the preconditioner, the bodies
+     * without contact load u_0 (one set of solves), and S p for the
+     * transferred pressure. */
+    void
+    setup_mesh();
+
+    /** Phi(p) = min(c p, Theta p - d_0 + S p) for @p p and @p Sp = S p. */
+    PointVector
+    newton_residual(const PointVector &p, const PointVector &Sp) const;
+
+    /**
+     * Preconditioned CG on (Theta + S_AA) x_A = d_0,A from x (zero off
+     * @p active) until ||r||_W <= @p tolerance; @p Sx = S x and @p u_x,
+     * the bodies' response to x, follow x. Returns the iterations.
+     */
+    unsigned int
+    solve_active_system(const std::vector<bool> &active,
+                        double                   tolerance,
+                        PointVector             &x,
+                        PointVector             &Sx,
+                        ContactProblem::Iterate &u_x);
+
+    /** The bodies' solutions u_0 + u_p, and the last loads and body
+     * solutions for the estimator. */
+    void
+    store_iterate();
+
+    ContactInterface interface {
+      problem
+    };
+    RobinPreconditioner preconditioner{problem};
+    bool                mesh_ready  = false; // interface, u_0, S p
+    bool                phase_ready = false; // d_0 with the multipliers
+
+    ContactProblem::Iterate u_0;       // the bodies under their data alone
+    PointVector             d_0;       // its penetration
+    double                  scale = 0; // ||max(0, d_0)||_W
+    PointVector             p, Sp;     // the pressure and S p
+    ContactProblem::Iterate u_p;       // the bodies' response to p
+    std::vector<bool>       last_active;
+
+    unsigned int n_data_solves     = 0;
+    unsigned int n_factorizations  = 0; // of the preconditioner, all meshes
+    unsigned int krylov_iterations = 0;
+  };
+} // namespace ddcontact
+
+#endif

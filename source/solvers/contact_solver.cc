@@ -1,0 +1,219 @@
+#include <ddcontact/solvers/contact_solver.h>
+#include <ddcontact/solvers/dd_newton_solver.h>
+#include <ddcontact/solvers/neumann_dd_solver.h>
+#include <ddcontact/tasks.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ddcontact
+{
+  ContactSolver::ContactSolver(const DDParameters                  &parameters,
+                               const std::vector<ElasticBody<2> *> &bodies,
+                               const std::vector<ContactPair *>    &pairs,
+                               const BodyDistribution &distribution,
+                               ConditionalOStream     &pcout)
+    : parameters(parameters)
+    , problem(bodies, pairs, distribution)
+    , uzawa(this->parameters, pcout)
+    , pcout(pcout)
+  {
+  }
+
+  std::unique_ptr<ContactSolver>
+  ContactSolver::create(const DDParameters                  &parameters,
+                        const std::vector<ElasticBody<2> *> &bodies,
+                        const std::vector<ContactPair *>    &pairs,
+                        const BodyDistribution              &distribution,
+                        ConditionalOStream                  &pcout)
+  {
+    if (parameters.solver == ContactSolverType::dd_newton)
+      return std::make_unique<DDNewtonSolver>(
+        parameters, bodies, pairs, distribution, pcout);
+    return std::make_unique<NeumannDDSolver>(
+      parameters, bodies, pairs, distribution, pcout);
+  }
+
+  void
+  ContactSolver::initialize()
+  {
+    records.clear();
+    problem.reset_laws();
+    uzawa.reset();
+    start_phase();
+    timer.restart();
+  }
+
+  void
+  ContactSolver::start_phase()
+  {
+    phase_start = records.size();
+  }
+
+  bool
+  ContactSolver::start_uzawa_phase()
+  {
+    if (!uzawa.update(problem))
+      return false;
+    start_phase();
+    return true;
+  }
+
+  void
+  ContactSolver::add_record(const IterationRecord &record)
+  {
+    records.push_back(record);
+    if (iteration_callback)
+      iteration_callback(record.iteration);
+  }
+
+  void
+  ContactSolver::measure_contact(const ContactProblem::Iterate &u,
+                                 IterationRecord               &record) const
+  {
+    for (unsigned int p = 0; p < problem.get_pairs().size(); ++p)
+    {
+      const auto state = problem.contact_state(p, u);
+      record.force += state.force_1.norm();
+      record.active_length += state.contact_length;
+      record.max_penetration =
+        std::max(record.max_penetration, state.max_penetration);
+    }
+  }
+
+  std::string
+  ContactSolver::penalty_entries() const
+  {
+    std::string entries;
+    for (const auto *pair : problem.get_pairs())
+      entries += (entries.empty() ? "" : ", ") +
+                 ("Contact pair " + pair->name() + "/Penalty");
+    return entries;
+  }
+
+  void
+  ContactSolver::reinit_after_refinement()
+  {
+    for (unsigned int p = 0; p < problem.get_pairs().size(); ++p)
+      problem.law(p).transfer_to_new_points();
+    uzawa.start_mesh();
+    last_sigma_n.clear();
+    last_u_tilde.clear();
+    // The residual jumps with the new mesh: divergence is judged anew.
+    start_phase();
+  }
+
+  void
+  ContactSolver::adopt_current_iterate()
+  {
+    last_u_tilde = problem.current_iterate();
+    last_sigma_n.resize(problem.get_pairs().size());
+    for (unsigned int p = 0; p < last_sigma_n.size(); ++p)
+      last_sigma_n[p] = problem.pressure(p, last_u_tilde);
+  }
+
+  const Vector<double> &
+  ContactSolver::last_body_solution(const ElasticBody<2> &body) const
+  {
+    Assert(last_u_tilde.size() == problem.get_bodies().size(),
+           ExcMessage("step() must be called first"));
+    return last_u_tilde[problem.body_index(body)];
+  }
+
+  BoundaryTractionSamples
+  ContactSolver::last_contact_traction(const ElasticBody<2> &body) const
+  {
+    const auto &pairs = problem.get_pairs();
+    Assert(last_sigma_n.size() == pairs.size(),
+           ExcMessage("step() must be called first"));
+    BoundaryTractionSamples samples;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      if (&pairs[p]->get_body_1() == &body || &pairs[p]->get_body_2() == &body)
+        pairs[p]->add_traction_samples(last_sigma_n[p], body, samples);
+    return samples;
+  }
+
+  double
+  ContactSolver::estimate_gamma_limit() const
+  {
+    // Power iteration on the linearised DD operator with every contact
+    // point active: v -> A^{-1} (1/theta) C^T C v, whose largest eigenvalue
+    // lambda_max gives the stability limit of (21), gamma* = 2/(1 +
+    // lambda_max) (the spectrum of I + A^{-1} J'' lies in [1, 1 +
+    // lambda_max]).
+    const auto             &bodies = problem.get_bodies();
+    ContactProblem::Iterate base, v(bodies.size()), w;
+    problem.solve_all(ContactProblem::Iterate(bodies.size()), base);
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+    {
+      v[b] = bodies[b]->get_solution();
+      v[b] -= base[b];
+      // Scaled by its largest entry first: a diverged iterate (1e200)
+      // would overflow the sums of squares below; a non-finite one is
+      // replaced by a generic start vector.
+      const double largest = v[b].linfty_norm();
+      if (largest > 0 && std::isfinite(largest))
+        v[b] /= largest;
+      else
+        for (unsigned int i = 0; i < v[b].size(); ++i)
+          v[b](i) = 1. + 0.1 * std::sin(1. + i);
+      bodies[b]->get_constraints().set_zero(v[b]);
+    }
+    double lambda = 0;
+    for (unsigned int it = 0; it < 30; ++it)
+    {
+      auto loads = problem.zero_iterate();
+      for (const auto *pair : problem.get_pairs())
+      {
+        const unsigned int  b1 = problem.body_index(pair->get_body_1());
+        const unsigned int  b2 = problem.body_index(pair->get_body_2());
+        std::vector<double> u_1n, u_2n;
+        pair->normal_displacements(v[b1], v[b2], u_1n, u_2n);
+        std::vector<double> sigma(u_1n.size());
+        for (unsigned int q = 0; q < sigma.size(); ++q)
+          sigma[q] = -(u_1n[q] + u_2n[q]) / pair->penalty();
+        pair->add_contact_loads(sigma, loads[b1], loads[b2]);
+      }
+      problem.solve_all(loads, w);
+      double norm_v = 0, norm_w = 0;
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        w[b] -= base[b];
+        w[b] *= -1.;
+        norm_v += ordered_norm_sqr(v[b]);
+        norm_w += ordered_norm_sqr(w[b]);
+      }
+      if (norm_w == 0 || norm_v == 0)
+        break;
+      lambda = std::sqrt(norm_w / norm_v);
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        v[b] = w[b];
+        v[b] /= std::sqrt(norm_w);
+      }
+    }
+    return 2. / (1. + lambda);
+  }
+
+  unsigned int
+  ContactSolver::run()
+  {
+    do
+    {
+      bool converged = false;
+      while (!converged)
+      {
+        if (records.size() >= parameters.max_iterations)
+          stop_at_iteration_limit("the domain decomposition");
+        converged = step();
+      }
+    } while (start_uzawa_phase());
+    return records.size();
+  }
+
+  ContactState
+  ContactSolver::contact_state(const unsigned int p) const
+  {
+    return problem.contact_state(p, problem.current_iterate());
+  }
+} // namespace ddcontact

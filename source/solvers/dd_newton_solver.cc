@@ -1,0 +1,334 @@
+#include <ddcontact/contact/penalty_law.h>
+#include <ddcontact/solvers/dd_newton_solver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace ddcontact
+{
+  namespace
+  {
+    /** x += a y. */
+    void
+    add(PointVector &x, const double a, const PointVector &y)
+    {
+      for (unsigned int q = 0; q < x.size(); ++q)
+        x[q] += a * y[q];
+    }
+
+    void
+    add(ContactProblem::Iterate       &u,
+        const double                   a,
+        const ContactProblem::Iterate &v)
+    {
+      for (unsigned int b = 0; b < u.size(); ++b)
+        u[b].add(a, v[b]);
+    }
+
+    /** x <- (1 - tau) x + tau y. */
+    void
+    blend(PointVector &x, const double tau, const PointVector &y)
+    {
+      for (unsigned int q = 0; q < x.size(); ++q)
+        x[q] = (1 - tau) * x[q] + tau * y[q];
+    }
+
+    void
+    blend(ContactProblem::Iterate       &u,
+          const double                   tau,
+          const ContactProblem::Iterate &v)
+    {
+      for (unsigned int b = 0; b < u.size(); ++b)
+        u[b].sadd(1 - tau, tau, v[b]);
+    }
+
+    /** The Newton iteration stops after at most this many CG iterations
+     * per step (a safeguard; the counts are tens). */
+    constexpr unsigned int max_cg_iterations = 500;
+  } // namespace
+
+  void
+  DDNewtonSolver::initialize()
+  {
+    ContactSolver::initialize();
+    interface.reinit();
+    p.assign(interface.size(), 0.);
+    mesh_ready = false;
+    setup_mesh();
+  }
+
+  void
+  DDNewtonSolver::reinit_after_refinement()
+  {
+    ContactSolver::reinit_after_refinement();
+    p          = nearest_point_values(interface.positions(),
+                             p,
+                             [&]
+                             {
+                               std::vector<Point<2>> points;
+                               for (const auto *pair : problem.get_pairs())
+                                 for (const auto &point : pair->points())
+                                   points.push_back(point.x);
+                               return points;
+                             }());
+    mesh_ready = false;
+  }
+
+  void
+  DDNewtonSolver::start_phase()
+  {
+    ContactSolver::start_phase();
+    phase_ready = false;
+    last_active.clear();
+  }
+
+  void
+  DDNewtonSolver::setup_mesh()
+  {
+    interface.reinit();
+    AssertDimension(p.size(), interface.size());
+    preconditioner.setup(interface);
+    problem.solve_all(ContactProblem::Iterate(problem.get_bodies().size()),
+                      u_0);
+    ++n_data_solves;
+    u_p = problem.zero_iterate();
+    Sp.assign(p.size(), 0.);
+    if (std::any_of(p.begin(), p.end(), [](const double x) { return x != 0; }))
+      interface.apply(p, u_p, Sp);
+    mesh_ready  = true;
+    phase_ready = false;
+  }
+
+  PointVector
+  DDNewtonSolver::newton_residual(const PointVector &x,
+                                  const PointVector &Sx) const
+  {
+    PointVector F(x.size());
+    for (unsigned int q = 0; q < x.size(); ++q)
+    {
+      const double theta = interface.penalty(q);
+      F[q]               = std::min(interface.complementarity_scale(q) * x[q],
+                      theta * x[q] - (d_0[q] - Sx[q]));
+    }
+    return F;
+  }
+
+  unsigned int
+  DDNewtonSolver::solve_active_system(const std::vector<bool> &active,
+                                      const double             tolerance,
+                                      PointVector             &x,
+                                      PointVector             &Sx,
+                                      ContactProblem::Iterate &u_x)
+  {
+    const unsigned int n = x.size();
+    // (Theta + S) y restricted to the active set, from y and S y.
+    const auto operator_on_active =
+      [&](const PointVector &y, const PointVector &Sy)
+    {
+      PointVector My(n, 0.);
+      for (unsigned int q = 0; q < n; ++q)
+        if (active[q])
+          My[q] = interface.penalty(q) * y[q] + Sy[q];
+      return My;
+    };
+    PointVector r = operator_on_active(x, Sx);
+    for (unsigned int q = 0; q < n; ++q)
+      r[q] = active[q] ? d_0[q] - r[q] : 0.;
+    if (interface.norm(r) <= tolerance)
+      return 0;
+
+    preconditioner.update(active);
+    PointVector z;
+    preconditioner.vmult(z, r, active);
+    PointVector             s   = z, Ss;
+    double                  rho = interface.inner(r, z);
+    ContactProblem::Iterate u_s;
+    unsigned int            iterations = 0;
+    while (iterations < max_cg_iterations)
+    {
+      interface.apply(s, u_s, Ss);
+      ++iterations;
+      const PointVector Ms    = operator_on_active(s, Ss);
+      const double      alpha = rho / interface.inner(s, Ms);
+      add(x, alpha, s);
+      add(Sx, alpha, Ss);
+      add(u_x, alpha, u_s);
+      add(r, -alpha, Ms);
+      if (interface.norm(r) <= tolerance)
+        break;
+      preconditioner.vmult(z, r, active);
+      const double rho_new = interface.inner(r, z);
+      for (unsigned int q = 0; q < n; ++q)
+        s[q] = z[q] + (rho_new / rho) * s[q];
+      rho = rho_new;
+    }
+    return iterations;
+  }
+
+  void
+  DDNewtonSolver::store_iterate()
+  {
+    const auto &bodies = problem.get_bodies();
+    last_u_tilde       = u_0;
+    add(last_u_tilde, 1., u_p);
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      bodies[b]->get_solution() = last_u_tilde[b];
+    // u_0 + u_p solves the body problems (20) loaded by sigma_n = -p.
+    last_sigma_n = interface.normal_stresses(p);
+  }
+
+  bool
+  DDNewtonSolver::step()
+  {
+    if (!mesh_ready)
+      setup_mesh();
+    if (!phase_ready)
+    {
+      d_0 = interface.penetration(u_0);
+      PointVector overlap(d_0.size());
+      for (unsigned int q = 0; q < d_0.size(); ++q)
+        overlap[q] = std::max(0., d_0[q]);
+      scale       = interface.norm(overlap);
+      phase_ready = true;
+    }
+    if (records.size() - phase_start >= parameters.n_newton)
+      stop_at_iteration_limit("the Newton method of dd-newton");
+
+    const double psi = interface.norm(newton_residual(p, Sp));
+    // The active set of the semismooth Newton step on min(c p, lambda):
+    // lambda < c p, i.e. d(p) + (c - theta) p > 0.
+    std::vector<bool> active(p.size());
+    unsigned int      n_active = 0, n_changed = 0;
+    for (unsigned int q = 0; q < p.size(); ++q)
+    {
+      active[q] =
+        d_0[q] - Sp[q] +
+          (interface.complementarity_scale(q) - interface.penalty(q)) * p[q] >
+        0;
+      n_active += active[q];
+      n_changed += last_active.empty() || (active[q] != last_active[q]);
+    }
+    // Warm start: p off the new active set is set to zero, and S p with it.
+    PointVector             x = p, Sx = Sp;
+    ContactProblem::Iterate u_x = u_p;
+    PointVector             dropped(p.size(), 0.);
+    bool                    any_dropped = false;
+    for (unsigned int q = 0; q < p.size(); ++q)
+      if (!active[q] && p[q] != 0.)
+      {
+        dropped[q]  = p[q];
+        x[q]        = 0.;
+        any_dropped = true;
+      }
+    if (any_dropped)
+    {
+      PointVector             S_dropped;
+      ContactProblem::Iterate u_dropped;
+      interface.apply(dropped, u_dropped, S_dropped);
+      add(Sx, -1., S_dropped);
+      add(u_x, -1., u_dropped);
+    }
+    // Inexact Newton: 0.1 of the residual while the active set moves, the
+    // final tolerance (with a margin) once it has settled.
+    const double final_tolerance = 0.5 * parameters.eps_residual * scale;
+    const double tolerance =
+      (n_changed == 0) ? final_tolerance : std::max(final_tolerance, 0.1 * psi);
+    const unsigned int factorizations = preconditioner.factorizations();
+    const unsigned int cg = solve_active_system(active, tolerance, x, Sx, u_x);
+    n_factorizations += preconditioner.factorizations() - factorizations;
+    krylov_iterations += cg;
+    last_active = active;
+
+    // Damping: the largest tau = 1, 1/2, ... that reduces ||Phi||_W (d is
+    // affine in p, so every trial is free); the full step if none does.
+    double tau     = 1;
+    double psi_new = interface.norm(newton_residual(x, Sx));
+    if (psi_new >= psi && psi > 0)
+      for (double t = 0.5; t > 1e-3; t /= 2)
+      {
+        PointVector p_t = p, Sp_t = Sp;
+        blend(p_t, t, x);
+        blend(Sp_t, t, Sx);
+        const double psi_t = interface.norm(newton_residual(p_t, Sp_t));
+        if (psi_t < (1 - 1e-4 * t) * psi)
+        {
+          tau     = t;
+          psi_new = psi_t;
+          break;
+        }
+      }
+    PointVector change = x;
+    add(change, -1., p);
+    const double increment = interface.norm(change);
+    // p + tau (x - p), and S p and u_p alike (both linear in p).
+    blend(p, tau, x);
+    blend(Sp, tau, Sx);
+    blend(u_p, tau, u_x);
+    store_iterate();
+
+    IterationRecord record;
+    record.iteration = records.size() + 1;
+    record.residual  = (scale > 0) ? psi_new / scale : psi_new;
+    record.increment = tau * increment / std::max(interface.norm(p), 1e-300);
+    record.gamma     = tau;
+    measure_contact(last_u_tilde, record);
+    record.time = timer.wall_time();
+    add_record(record);
+
+    const bool converged = psi_new <= parameters.eps_residual * scale;
+    pcout << "  Newton " << std::setw(3) << record.iteration << std::scientific
+          << std::setprecision(3) << "  residual " << record.residual
+          << "  active " << n_active << " (" << n_changed << " changed)  CG "
+          << cg << "  tau " << std::defaultfloat << tau << std::scientific
+          << "  force " << record.force << "  penetration "
+          << record.max_penetration << std::defaultfloat << "  body solve sets "
+          << n_dd_iterations() << "  factorizations " << n_factorizations
+          << std::fixed << std::setprecision(2) << "  t " << record.time << "s"
+          << std::defaultfloat << std::endl;
+    if (!std::isfinite(record.residual))
+      throw DivergenceError("the Newton method of dd-newton produced a "
+                            "non-finite residual at step " +
+                            std::to_string(record.iteration));
+    return converged;
+  }
+
+  SolverCounts
+  DDNewtonSolver::counts() const
+  {
+    SolverCounts c;
+    c.body_solve_sets               = n_dd_iterations();
+    c.preconditioner_solve_sets     = preconditioner.n_applications();
+    c.preconditioner_factorizations = n_factorizations;
+    c.newton_steps                  = records.size();
+    c.krylov_iterations             = krylov_iterations;
+    return c;
+  }
+
+  void
+  DDNewtonSolver::stop_at_iteration_limit(const std::string &what) const
+  {
+    // Falling: the residual of the last step is below that of five steps
+    // before (the active set still moves toward the solution); otherwise
+    // the active set cycles.
+    const unsigned int n = records.size();
+    const double       r = (n > 0) ? records.back().residual : 0.;
+    std::ostringstream s;
+    s << std::setprecision(3) << what << " has not converged in "
+      << n - phase_start << " Newton steps (" << n_dd_iterations()
+      << " sets of body solves; residual " << r << ", eps_residual "
+      << parameters.eps_residual << ")";
+    const bool falling =
+      n >= phase_start + 6 && r < 0.5 * records[n - 6].residual;
+    if (falling)
+    {
+      s << ", falling; raise Domain decomposition/Max Newton iterations or "
+           "Max iterations";
+      throw NotConvergedError(s.str());
+    }
+    s << ": the active set does not settle; raise " << penalty_entries()
+      << ", or use Domain decomposition/Solver = monolithic";
+    throw DivergenceError(s.str());
+  }
+} // namespace ddcontact
