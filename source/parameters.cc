@@ -495,9 +495,26 @@ namespace ddcontact
         body.mesh_file = directory + body.mesh_file;
   }
 
+  namespace
+  {
+    /** The units every listing of the entries starts with. */
+    void
+    print_units(std::ostream &out)
+    {
+      out << "# Units: any consistent system. Entries marked [length] and "
+             "[stress] are in its\n"
+          << "# length and stress units; forces and energies are per unit "
+             "thickness (plane\n"
+          << "# strain). Each shipped scene states its units in its header "
+             "(most use cm and\n"
+          << "# MPa; doc/method.md, section 8).\n";
+    }
+  } // namespace
+
   void
   ParameterReader::print(std::ostream &out) const
   {
+    print_units(out);
     prm.print_parameters(out, ParameterHandler::PRM);
   }
 
@@ -513,6 +530,7 @@ namespace ddcontact
   {
     ParameterHandler prm;
     SceneParameters::declare(prm, {"<name>"}, {"<name>"});
+    print_units(out);
     prm.print_parameters(out, ParameterHandler::PRM);
   }
 } // namespace ddcontact
