@@ -372,6 +372,19 @@ main(int argc, char **argv)
     check(true_error <= 1.25 * target, "true error within the target");
     check(true_error > 0.5 * target,
           "stopped at the first mesh within the target, not later");
+    // The estimate of every cycle (last column of statistics.csv): above
+    // the target on every mesh but the last.
+    std::ifstream       statistics("output/fem_bem_target/statistics.csv");
+    std::string         line;
+    std::vector<double> history;
+    std::getline(statistics, line); // header
+    while (std::getline(statistics, line))
+      history.push_back(std::stod(line.substr(line.rfind(',') + 1)));
+    bool earlier_above = history.size() == cycles + 1;
+    for (std::size_t c = 0; c + 1 < history.size(); ++c)
+      earlier_above = earlier_above && history[c] > target;
+    check(earlier_above && !history.empty() && history.back() <= target,
+          "statistics.csv: every earlier estimate above the target");
   }
 
   // 4. The largest indicator sits under the load (0, 1).

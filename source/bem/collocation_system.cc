@@ -121,8 +121,11 @@ namespace ddcontact
         control, SolverGMRES<Vector<double>>::AdditionalData(50, true));
       try
       {
+        // A zero load has the zero solution, whatever the warm start.
         if (b.l2_norm() > 0)
           gmres.solve(*this, x, b, Preconditioner{*this});
+        else
+          x = 0.;
         iterations        = control.last_step();
         previous_solution = x;
         b                 = x;

@@ -61,28 +61,26 @@ namespace ddcontact
     std::vector<bool>                row_used(m, false);
     double                           norm2 = 0;
 
+    // Entry (i, j) of the residual: the block minus the crosses so far.
+    const auto residual = [&](const unsigned int i, const unsigned int j)
+    {
+      double value = matrix(row_begin + i, column_begin + j);
+      for (std::size_t l = 0; l < us.size(); ++l)
+        value -= us[l][i] * vs[l][j];
+      return value;
+    };
     const auto residual_row = [&](const unsigned int i, std::vector<double> &r)
     {
       r.resize(n);
       for (unsigned int j = 0; j < n; ++j)
-      {
-        double value = matrix(row_begin + i, column_begin + j);
-        for (std::size_t l = 0; l < us.size(); ++l)
-          value -= us[l][i] * vs[l][j];
-        r[j] = value;
-      }
+        r[j] = residual(i, j);
     };
     const auto residual_column =
       [&](const unsigned int j, std::vector<double> &c)
     {
       c.resize(m);
       for (unsigned int i = 0; i < m; ++i)
-      {
-        double value = matrix(row_begin + i, column_begin + j);
-        for (std::size_t l = 0; l < us.size(); ++l)
-          value -= us[l][i] * vs[l][j];
-        c[i] = value;
-      }
+        c[i] = residual(i, j);
     };
     const auto largest = [](const std::vector<double> &v)
     {

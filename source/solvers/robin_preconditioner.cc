@@ -79,16 +79,18 @@ namespace ddcontact
     for (types::global_dof_index i = 0; i < K.m(); ++i)
       for (auto it = K.begin(i); it != K.end(i); ++it)
         dsp.add(i, it->column());
-    for (const auto &side : sides[b])
-      for (unsigned int q = 0;
-           q < problem.get_pairs()[side.pair]->points().size();
-           ++q)
-      {
-        const auto &dofs = coefficients(side, q).first;
-        for (const auto i : dofs)
-          for (const auto j : dofs)
-            dsp.add(i, j);
-      }
+    for_each_point(b,
+                   nullptr,
+                   [&](const Side &,
+                       const auto &,
+                       unsigned int,
+                       const auto &dofs,
+                       const auto &)
+                   {
+                     for (const auto i : dofs)
+                       for (const auto j : dofs)
+                         dsp.add(i, j);
+                   });
     factors[b] = std::make_unique<BodyFactor>();
     factors[b]->sparsity.copy_from(dsp);
   }
@@ -103,21 +105,21 @@ namespace ddcontact
       for (auto it = K.begin(i); it != K.end(i); ++it)
         factor.matrix.add(i, it->column(), it->value());
     // Springs w_q / (alpha theta_q) at the active points.
-    for (const auto &side : sides[b])
-      for (unsigned int q = 0;
-           q < problem.get_pairs()[side.pair]->points().size();
-           ++q)
+    for_each_point(
+      b,
+      &springs,
+      [&](const Side        &side,
+          const auto        &contact_point,
+          const unsigned int point,
+          const auto        &dofs,
+          const auto        &c)
       {
-        const unsigned int point = side.first + q;
-        if (!springs[point])
-          continue;
-        const auto [dofs, c] = coefficients(side, q);
-        const double spring  = problem.get_pairs()[side.pair]->points()[q].JxW /
-                              (side.alpha * interface->penalty(point));
+        const double spring =
+          contact_point.JxW / (side.alpha * interface->penalty(point));
         for (unsigned int i = 0; i < dofs.size(); ++i)
           for (unsigned int j = 0; j < dofs.size(); ++j)
             factor.matrix.add(dofs[i], dofs[j], spring * c[i] * c[j]);
-      }
+      });
     factor.direct.initialize(factor.matrix);
   }
 
@@ -128,25 +130,25 @@ namespace ddcontact
   {
     Assert(active == springs, ExcMessage("update() must be called first"));
     const auto &bodies = problem.get_bodies();
-    const auto &pairs  = problem.get_pairs();
 
     // C_b^T W Theta^{-1} r on every body, r restricted to the active set.
     std::vector<Vector<double>> rhs(bodies.size()), v(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
       rhs[b].reinit(bodies[b]->n_dofs());
-      for (const auto &side : sides[b])
-        for (unsigned int q = 0; q < pairs[side.pair]->points().size(); ++q)
-        {
-          const unsigned int point = side.first + q;
-          if (!active[point])
-            continue;
-          const auto [dofs, c] = coefficients(side, q);
-          const double s       = pairs[side.pair]->points()[q].JxW * r[point] /
-                           interface->penalty(point);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            rhs[b](dofs[i]) += s * c[i];
-        }
+      for_each_point(b,
+                     &active,
+                     [&](const Side &,
+                         const auto        &contact_point,
+                         const unsigned int point,
+                         const auto        &dofs,
+                         const auto        &c)
+                     {
+                       const double s = contact_point.JxW * r[point] /
+                                        interface->penalty(point);
+                       for (unsigned int i = 0; i < dofs.size(); ++i)
+                         rhs[b](dofs[i]) += s * c[i];
+                     });
     }
     problem.get_distribution().solve_and_share(
       [&](const unsigned int b)
@@ -163,16 +165,17 @@ namespace ddcontact
       if (active[q])
         z[q] = r[q];
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      for (const auto &side : sides[b])
-        for (unsigned int q = 0; q < pairs[side.pair]->points().size(); ++q)
-        {
-          const unsigned int point = side.first + q;
-          if (!active[point])
-            continue;
-          const auto [dofs, c] = coefficients(side, q);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            z[point] -= c[i] * v[b](dofs[i]);
-        }
+      for_each_point(b,
+                     &active,
+                     [&](const Side &,
+                         const auto &,
+                         const unsigned int point,
+                         const auto        &dofs,
+                         const auto        &c)
+                     {
+                       for (unsigned int i = 0; i < dofs.size(); ++i)
+                         z[point] -= c[i] * v[b](dofs[i]);
+                     });
     for (unsigned int q = 0; q < r.size(); ++q)
       z[q] /= interface->penalty(q);
   }

@@ -108,6 +108,27 @@ namespace ddcontact
               const std::vector<double> &>
     coefficients(const Side &side, unsigned int q) const;
 
+    /** Call f(side, point, index, dofs, coefficients) for every contact
+     * point of body @p b (index: its number in the interface) that
+     * @p mask flags, or for all of them without a mask. */
+    template <typename F>
+    void
+    for_each_point(const unsigned int       b,
+                   const std::vector<bool> *mask,
+                   const F                 &f) const
+    {
+      for (const auto &side : sides[b])
+      {
+        const auto &points = problem.get_pairs()[side.pair]->points();
+        for (unsigned int q = 0; q < points.size(); ++q)
+          if (!mask || (*mask)[side.first + q])
+          {
+            const auto [dofs, c] = coefficients(side, q);
+            f(side, points[q], side.first + q, dofs, c);
+          }
+      }
+    }
+
     /** The sparsity of the Robin matrix of body @p b. */
     void
     make_pattern(unsigned int b);
