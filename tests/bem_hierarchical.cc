@@ -24,11 +24,11 @@ using namespace ddcontact::testing;
 
 namespace
 {
-  /** The single-layer-like matrix of N points on the unit circle,
+  /** The single-layer-like matrix of @p n points on the unit circle,
    * A_ij = -log|x_i - x_j| h + delta_ij: smooth off the diagonal, singular
    * where the points meet, as the BEM's kernels are. */
-  void
-  check_log_kernel(const unsigned int n, const double tolerance)
+  FullMatrix<double>
+  log_kernel_matrix(const unsigned int n)
   {
     const double       h = 2 * numbers::PI / n;
     FullMatrix<double> A(n, n);
@@ -38,7 +38,16 @@ namespace
         const double d = 2 * std::abs(std::sin((i - double(j)) * h / 2));
         A(i, j)        = (i == j) ? 1. - h * std::log(h / 2) : -h * std::log(d);
       }
-    HodlrMatrix hodlr;
+    return A;
+  }
+
+  /** The HODLR solve of the log-kernel matrix. */
+  void
+  check_log_kernel(const unsigned int n, const double tolerance)
+  {
+    const double       h = 2 * numbers::PI / n;
+    FullMatrix<double> A = log_kernel_matrix(n);
+    HodlrMatrix        hodlr;
     hodlr.factorize(A, tolerance, 32);
     Vector<double> x(n), b(n), y(n);
     for (unsigned int i = 0; i < n; ++i)
@@ -63,14 +72,8 @@ namespace
   void
   check_collocation_system(const unsigned int n)
   {
-    const double       h = 2 * numbers::PI / n;
-    FullMatrix<double> A(n, n);
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = 0; j < n; ++j)
-      {
-        const double d = 2 * std::abs(std::sin((i - double(j)) * h / 2));
-        A(i, j)        = (i == j) ? 1. - h * std::log(h / 2) : -h * std::log(d);
-      }
+    const double        h = 2 * numbers::PI / n;
+    FullMatrix<double>  A = log_kernel_matrix(n);
     std::vector<double> keys(n);
     for (unsigned int i = 0; i < n; ++i)
       keys[i] = i;
