@@ -31,7 +31,18 @@ namespace ddcontact
   {
     laws.clear();
     for (const auto *pair : pairs)
+    {
       laws.emplace_back(*pair);
+      laws.back().set_exact(exact_contact);
+    }
+  }
+
+  void
+  ContactProblem::set_exact_contact(const bool exact)
+  {
+    exact_contact = exact;
+    for (auto &law : laws)
+      law.set_exact(exact);
   }
 
   ContactProblem::Iterate
@@ -168,7 +179,8 @@ namespace ddcontact
       state.max_penetration =
         std::max(state.max_penetration, state.u_1n[q] + state.u_2n[q] - pt.gap);
     }
-    state.half_width = (hi >= lo) ? 0.5 * (hi - lo) : 0.;
+    state.half_width   = (hi >= lo) ? 0.5 * (hi - lo) : 0.;
+    state.max_pressure = std::max(state.max_pressure, laws[p].peak_pressure());
     return state;
   }
 

@@ -12,6 +12,7 @@ namespace ddcontact
   PenaltyLaw::reset()
   {
     lambda.assign(pair.points().size(), 0.);
+    peak = 0;
     lambda_points.clear();
     for (const auto &p : pair.points())
       lambda_points.push_back(p.x);
@@ -61,5 +62,14 @@ namespace ddcontact
   {
     AssertDimension(sigma_n.size(), lambda.size());
     lambda = sigma_n;
+  }
+
+  void
+  PenaltyLaw::set_contact_pressure(const std::vector<double> &sigma_n,
+                                   const double               peak_pressure)
+  {
+    Assert(exact, ExcMessage("only for exact contact"));
+    set_multipliers(sigma_n);
+    peak = peak_pressure;
   }
 } // namespace ddcontact

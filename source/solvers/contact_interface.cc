@@ -1,34 +1,81 @@
 #include <ddcontact/solvers/contact_interface.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace ddcontact
 {
-  ContactInterface::ContactInterface(const ContactProblem &problem)
+  ContactInterface::ContactInterface(const ContactProblem &problem,
+                                     const bool            exact_contact)
     : problem(problem)
+    , nodal(exact_contact)
   {
   }
 
   void
   ContactInterface::reinit()
   {
-    offsets = {0};
     weights.clear();
     thetas.clear();
     scales.clear();
     points.clear();
-    for (const auto *pair : problem.get_pairs())
+    point_shares.clear();
+    const auto &pairs = problem.get_pairs();
+    for (unsigned int k = 0; k < pairs.size(); ++k)
     {
-      const double c = surface_compliance(pair->get_body_1()) +
-                       surface_compliance(pair->get_body_2());
-      for (const auto &point : pair->points())
+      const unsigned int first = point_shares.size();
+      if (nodal)
+        add_nodes(k);
+      else
+        for (unsigned int q = 0; q < pairs[k]->points().size(); ++q)
+        {
+          point_shares.push_back({{k, q, 1.}});
+          points.push_back(pairs[k]->points()[q].x);
+        }
+
+      // Exact contact has no penalty: theta = 0 in (Theta + S) p = d_0.
+      const double theta = nodal ? 0. : pairs[k]->penalty();
+      const double c     = surface_compliance(pairs[k]->get_body_1()) +
+                       surface_compliance(pairs[k]->get_body_2());
+      for (unsigned int i = first; i < point_shares.size(); ++i)
       {
-        weights.push_back(point.JxW);
-        thetas.push_back(pair->penalty());
-        scales.push_back(pair->penalty() + point.JxW * c);
-        points.push_back(point.x);
+        double m = 0;
+        for (const auto &share : point_shares[i])
+          m += share.psi * pairs[k]->points()[share.point].JxW;
+        weights.push_back(m);
+        thetas.push_back(theta);
+        scales.push_back(theta + m * c);
       }
-      offsets.push_back(weights.size());
+    }
+  }
+
+  void
+  ContactInterface::add_nodes(const unsigned int k)
+  {
+    // The vertices of adjacent faces of S_1 are the same doubles
+    // (ContactPair::zone_faces_1()), so they are matched exactly.
+    const auto &pair  = *problem.get_pairs()[k];
+    const auto &faces = pair.zone_faces_1();
+    std::map<std::pair<double, double>, unsigned int> node_of;
+    for (unsigned int q = 0; q < pair.points().size(); ++q)
+    {
+      const auto  &x = pair.points()[q].x;
+      const auto  &f = faces[pair.points()[q].face];
+      const double t =
+        std::clamp(x.distance(f[0]) / f[0].distance(f[1]), 0., 1.);
+      const double psi[2] = {1. - t, t};
+      for (unsigned int v = 0; v < 2; ++v)
+      {
+        const auto [it, inserted] = node_of.emplace(
+          std::make_pair(f[v][0], f[v][1]), point_shares.size());
+        if (inserted)
+        {
+          point_shares.emplace_back();
+          points.push_back(f[v]);
+        }
+        point_shares[it->second].push_back({k, q, psi[v]});
+      }
     }
   }
 
@@ -60,17 +107,20 @@ namespace ddcontact
   ContactInterface::normal_stresses(const PointVector &p) const
   {
     AssertDimension(p.size(), size());
-    std::vector<std::vector<double>> sigma_n(offsets.size() - 1);
-    for (unsigned int k = 0; k + 1 < offsets.size(); ++k)
-      for (unsigned int q = offsets[k]; q < offsets[k + 1]; ++q)
-        sigma_n[k].push_back(-p[q]);
+    const auto                      &pairs = problem.get_pairs();
+    std::vector<std::vector<double>> sigma_n(pairs.size());
+    for (unsigned int k = 0; k < pairs.size(); ++k)
+      sigma_n[k].assign(pairs[k]->points().size(), 0.);
+    for (unsigned int i = 0; i < p.size(); ++i)
+      for (const auto &share : point_shares[i])
+        sigma_n[share.pair][share.point] -= share.psi * p[i];
     return sigma_n;
   }
 
-  PointVector
+  std::vector<std::vector<double>>
   ContactInterface::jump(const ContactProblem::Iterate &u) const
   {
-    PointVector d;
+    std::vector<std::vector<double>> d;
     for (const auto *pair : problem.get_pairs())
     {
       std::vector<double> u_1n, u_2n;
@@ -79,19 +129,45 @@ namespace ddcontact
                                  u_1n,
                                  u_2n);
       for (unsigned int q = 0; q < u_1n.size(); ++q)
-        d.push_back(u_1n[q] + u_2n[q]);
+        u_1n[q] += u_2n[q];
+      d.push_back(std::move(u_1n));
     }
     return d;
   }
 
   PointVector
+  ContactInterface::average(
+    const std::vector<std::vector<double>> &values) const
+  {
+    PointVector averages;
+    // On the points the average is the value itself (taken as it is, so
+    // that the penalty runs do not change in the last bits).
+    if (!nodal)
+    {
+      for (const auto &v : values)
+        averages.insert(averages.end(), v.begin(), v.end());
+      return averages;
+    }
+    const auto &pairs = problem.get_pairs();
+    for (unsigned int i = 0; i < size(); ++i)
+    {
+      double sum = 0;
+      for (const auto &share : point_shares[i])
+        sum += share.psi * pairs[share.pair]->points()[share.point].JxW *
+               values[share.pair][share.point];
+      averages.push_back(sum / weights[i]);
+    }
+    return averages;
+  }
+
+  PointVector
   ContactInterface::penetration(const ContactProblem::Iterate &u) const
   {
-    PointVector d = jump(u);
-    for (unsigned int k = 0; k + 1 < offsets.size(); ++k)
-      for (unsigned int q = offsets[k]; q < offsets[k + 1]; ++q)
-        d[q] -= problem.law(k).shifted_gap(q - offsets[k]);
-    return d;
+    auto d = jump(u);
+    for (unsigned int k = 0; k < d.size(); ++k)
+      for (unsigned int q = 0; q < d[k].size(); ++q)
+        d[k][q] -= problem.law(k).shifted_gap(q);
+    return average(d);
   }
 
   void
@@ -101,7 +177,7 @@ namespace ddcontact
   {
     problem.solve_bodies(normal_stresses(x), u, true);
     // A pressure pushes the bodies apart: the jump is -S x.
-    Sx = jump(u);
+    Sx = average(jump(u));
     for (double &v : Sx)
       v = -v;
     ++applications;

@@ -52,6 +52,7 @@ namespace ddcontact
   void
   DDNewtonSolver::initialize()
   {
+    problem.set_exact_contact(parameters.exact_contact());
     ContactSolver::initialize();
     interface.reinit();
     p.assign(interface.size(), 0.);
@@ -63,16 +64,9 @@ namespace ddcontact
   DDNewtonSolver::reinit_after_refinement()
   {
     ContactSolver::reinit_after_refinement();
-    p          = nearest_point_values(interface.positions(),
-                             p,
-                             [&]
-                             {
-                               std::vector<Point<2>> points;
-                               for (const auto *pair : problem.get_pairs())
-                                 for (const auto &point : pair->points())
-                                   points.push_back(point.x);
-                               return points;
-                             }());
+    const std::vector<Point<2>> old_positions = interface.positions();
+    interface.reinit();
+    p          = nearest_point_values(old_positions, p, interface.positions());
     mesh_ready = false;
   }
 
@@ -177,6 +171,17 @@ namespace ddcontact
       bodies[b]->get_solution() = last_u_tilde[b];
     // u_0 + u_p solves the body problems (20) loaded by sigma_n = -p.
     last_sigma_n = interface.normal_stresses(p);
+    if (interface.on_nodes())
+    {
+      std::vector<double> peak(last_sigma_n.size(), 0.);
+      for (unsigned int i = 0; i < p.size(); ++i)
+      {
+        auto &largest = peak[interface.shares(i)[0].pair];
+        largest       = std::max(largest, p[i]);
+      }
+      for (unsigned int k = 0; k < last_sigma_n.size(); ++k)
+        problem.law(k).set_contact_pressure(last_sigma_n[k], peak[k]);
+    }
   }
 
   bool

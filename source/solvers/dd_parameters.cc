@@ -86,8 +86,12 @@ namespace ddcontact
     prm.declare_entry("Augmented Lagrangian",
                       "false",
                       Patterns::Bool(),
-                      "Outer Uzawa update of the contact pressure, so that "
-                      "the penetration of the penalty goes to zero.");
+                      "Exact contact instead of the penalty. With Solver = "
+                      "dd-newton it is solved directly (theta = 0, one "
+                      "contact-pressure multiplier per node of S_1, no "
+                      "Uzawa loop); with dd and monolithic, by outer Uzawa "
+                      "updates of the contact pressure, so that the "
+                      "penetration of the penalty goes to zero.");
     prm.declare_entry("AL tolerance",
                       "1e-3",
                       Patterns::Double(0),

@@ -2,6 +2,8 @@
 
 #include <ddcontact/solvers/robin_preconditioner.h>
 
+#include <map>
+
 namespace ddcontact
 {
   RobinPreconditioner::RobinPreconditioner(const ContactProblem &problem)
@@ -9,15 +11,49 @@ namespace ddcontact
   {
   }
 
-  std::pair<const std::vector<types::global_dof_index> &,
-            const std::vector<double> &>
-  RobinPreconditioner::coefficients(const Side        &side,
-                                    const unsigned int q) const
+  RobinPreconditioner::Row
+  RobinPreconditioner::make_row(const unsigned int i,
+                                const bool         body_1,
+                                const double       alpha) const
   {
-    const auto &point = problem.get_pairs()[side.pair]->points()[q];
-    if (side.body_1)
-      return {point.load_dofs_1, point.load_1};
-    return {point.load_dofs_2, point.load_2};
+    const auto  &shares = interface->shares(i);
+    const auto  &pair   = *problem.get_pairs()[shares[0].pair];
+    const double m      = interface->weight(i);
+    // Exact contact has theta = 0: the springs take 1e-3 of the compliance.
+    const double theta = (interface->penalty(i) > 0)
+                           ? interface->penalty(i)
+                           : 1e-3 * interface->complementarity_scale(i);
+    Row          row;
+    row.unknown = i;
+    row.spring  = m / (alpha * theta);
+    // rhs = C_b^T M (alpha Theta)^{-1} beta r: beta = alpha with both
+    // bodies, 1 with body 1 alone.
+    row.load = interface->on_nodes() ? m / (alpha * theta) : m / theta;
+
+    std::map<types::global_dof_index, double> merged;
+    for (const auto &share : shares)
+    {
+      const auto &point = pair.points()[share.point];
+      const auto &dofs  = body_1 ? point.load_dofs_1 : point.load_dofs_2;
+      const auto &c     = body_1 ? point.load_1 : point.load_2;
+      // psi w / m: exactly 1 for a point's own unknown.
+      const double factor = (share.psi * point.JxW) / m;
+      if (shares.size() == 1)
+      {
+        row.dofs = dofs;
+        for (const double v : c)
+          row.c.push_back(factor * v);
+        return row;
+      }
+      for (unsigned int j = 0; j < dofs.size(); ++j)
+        merged[dofs[j]] += factor * c[j];
+    }
+    for (const auto &[dof, v] : merged)
+    {
+      row.dofs.push_back(dof);
+      row.c.push_back(v);
+    }
+    return row;
   }
 
   void
@@ -26,22 +62,6 @@ namespace ddcontact
     interface          = &contact_interface;
     const auto &bodies = problem.get_bodies();
     const auto &pairs  = problem.get_pairs();
-    sides.assign(bodies.size(), {});
-    unsigned int first = 0;
-    for (unsigned int k = 0; k < pairs.size(); ++k)
-    {
-      const double c_1 =
-        ContactInterface::surface_compliance(pairs[k]->get_body_1());
-      const double c_2 =
-        ContactInterface::surface_compliance(pairs[k]->get_body_2());
-      const double alpha = c_1 / (c_1 + c_2);
-      sides[problem.body_index(pairs[k]->get_body_1())].push_back(
-        {k, first, true, alpha});
-      sides[problem.body_index(pairs[k]->get_body_2())].push_back(
-        {k, first, false, 1. - alpha});
-      first += pairs[k]->points().size();
-    }
-
     for (const auto *body : bodies)
       if (body->is_solved_distributed())
         throw InputError("Domain decomposition/Solver = dd-newton: body '" +
@@ -50,6 +70,23 @@ namespace ddcontact
                          "distributed matrix the preconditioner cannot "
                          "factorize; use at most one process per body "
                          "(Parallel/Body owners)");
+
+    rows.assign(bodies.size(), {});
+    for (unsigned int i = 0; i < interface->size(); ++i)
+    {
+      const auto  &pair = *pairs[interface->shares(i)[0].pair];
+      const double c_1 =
+        ContactInterface::surface_compliance(pair.get_body_1());
+      const double c_2 =
+        ContactInterface::surface_compliance(pair.get_body_2());
+      const double alpha = c_1 / (c_1 + c_2);
+      const auto   b_1   = problem.body_index(pair.get_body_1());
+      const auto   b_2   = problem.body_index(pair.get_body_2());
+      // Every process keeps the rows of every body: z needs them all.
+      rows[b_1].push_back(make_row(i, true, alpha));
+      if (!interface->on_nodes())
+        rows[b_2].push_back(make_row(i, false, 1. - alpha));
+    }
     factors.clear();
     factors.resize(bodies.size());
     springs.clear();
@@ -72,25 +109,17 @@ namespace ddcontact
   void
   RobinPreconditioner::make_pattern(const unsigned int b)
   {
-    // The stiffness plus the springs c_q c_q^T of the body's contact
-    // points, on the masters of their dofs.
+    // The stiffness plus the springs c_i c_i^T of the body's unknowns, on
+    // the masters of their dofs.
     const auto            &K = problem.get_bodies()[b]->get_stiffness_matrix();
     DynamicSparsityPattern dsp(K.m());
     for (types::global_dof_index i = 0; i < K.m(); ++i)
       for (auto it = K.begin(i); it != K.end(i); ++it)
         dsp.add(i, it->column());
-    for_each_point(b,
-                   nullptr,
-                   [&](const Side &,
-                       const auto &,
-                       unsigned int,
-                       const auto &dofs,
-                       const auto &)
-                   {
-                     for (const auto i : dofs)
-                       for (const auto j : dofs)
-                         dsp.add(i, j);
-                   });
+    for (const auto &row : rows[b])
+      for (const auto i : row.dofs)
+        for (const auto j : row.dofs)
+          dsp.add(i, j);
     factors[b] = std::make_unique<BodyFactor>();
     factors[b]->sparsity.copy_from(dsp);
   }
@@ -104,22 +133,13 @@ namespace ddcontact
     for (types::global_dof_index i = 0; i < K.m(); ++i)
       for (auto it = K.begin(i); it != K.end(i); ++it)
         factor.matrix.add(i, it->column(), it->value());
-    // Springs w_q / (alpha theta_q) at the active points.
-    for_each_point(
-      b,
-      &springs,
-      [&](const Side        &side,
-          const auto        &contact_point,
-          const unsigned int point,
-          const auto        &dofs,
-          const auto        &c)
-      {
-        const double spring =
-          contact_point.JxW / (side.alpha * interface->penalty(point));
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          for (unsigned int j = 0; j < dofs.size(); ++j)
-            factor.matrix.add(dofs[i], dofs[j], spring * c[i] * c[j]);
-      });
+    // Springs m_i / (alpha theta_i) at the active unknowns.
+    for (const auto &row : rows[b])
+      if (springs[row.unknown])
+        for (unsigned int i = 0; i < row.dofs.size(); ++i)
+          for (unsigned int j = 0; j < row.dofs.size(); ++j)
+            factor.matrix.add(
+              row.dofs[i], row.dofs[j], row.spring * row.c[i] * row.c[j]);
     factor.direct.initialize(factor.matrix);
   }
 
@@ -131,24 +151,19 @@ namespace ddcontact
     Assert(active == springs, ExcMessage("update() must be called first"));
     const auto &bodies = problem.get_bodies();
 
-    // C_b^T W Theta^{-1} r on every body, r restricted to the active set.
+    // C_b^T M (alpha Theta)^{-1} beta r on every body, r restricted to the
+    // active set.
     std::vector<Vector<double>> rhs(bodies.size()), v(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
       rhs[b].reinit(bodies[b]->n_dofs());
-      for_each_point(b,
-                     &active,
-                     [&](const Side &,
-                         const auto        &contact_point,
-                         const unsigned int point,
-                         const auto        &dofs,
-                         const auto        &c)
-                     {
-                       const double s = contact_point.JxW * r[point] /
-                                        interface->penalty(point);
-                       for (unsigned int i = 0; i < dofs.size(); ++i)
-                         rhs[b](dofs[i]) += s * c[i];
-                     });
+      for (const auto &row : rows[b])
+        if (active[row.unknown])
+        {
+          const double s = row.load * r[row.unknown];
+          for (unsigned int i = 0; i < row.dofs.size(); ++i)
+            rhs[b](row.dofs[i]) += s * row.c[i];
+        }
     }
     problem.get_distribution().solve_and_share(
       [&](const unsigned int b)
@@ -159,24 +174,20 @@ namespace ddcontact
       v);
     ++applications;
 
-    // z = Theta^{-1} (r - sum_b C_b v_b) on the active set.
+    // z = Theta^{-1} (r - sum_b C_b v_b) on the active set (sum_b beta_b =
+    // 1), with the preconditioner's theta.
     z.assign(r.size(), 0.);
     for (unsigned int q = 0; q < r.size(); ++q)
       if (active[q])
         z[q] = r[q];
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      for_each_point(b,
-                     &active,
-                     [&](const Side &,
-                         const auto &,
-                         const unsigned int point,
-                         const auto        &dofs,
-                         const auto        &c)
-                     {
-                       for (unsigned int i = 0; i < dofs.size(); ++i)
-                         z[point] -= c[i] * v[b](dofs[i]);
-                     });
+      for (const auto &row : rows[b])
+        if (active[row.unknown])
+          for (unsigned int i = 0; i < row.dofs.size(); ++i)
+            z[row.unknown] -= row.c[i] * v[b](row.dofs[i]);
     for (unsigned int q = 0; q < r.size(); ++q)
-      z[q] /= interface->penalty(q);
+      z[q] /= (interface->penalty(q) > 0)
+                ? interface->penalty(q)
+                : 1e-3 * interface->complementarity_scale(q);
   }
 } // namespace ddcontact

@@ -23,7 +23,9 @@ namespace ddcontact
   bool
   UzawaLoop::update(ContactProblem &problem)
   {
-    if (!parameters.augmented_lagrangian || n_mesh >= parameters.al_max_updates)
+    // Exact contact solved directly (dd-newton) needs no updates.
+    if (!parameters.augmented_lagrangian || parameters.exact_contact() ||
+        n_mesh >= parameters.al_max_updates)
       return false;
 
     const auto u                        = problem.current_iterate();
@@ -66,7 +68,7 @@ namespace ddcontact
   std::string
   UzawaLoop::shortfall(const ContactProblem &problem) const
   {
-    if (!parameters.augmented_lagrangian)
+    if (!parameters.augmented_lagrangian || parameters.exact_contact())
       return "";
     const double ratio = problem.penetration(problem.current_iterate()).second;
     if (ratio <= parameters.al_tolerance || mesh_limited)

@@ -87,6 +87,11 @@ namespace ddcontact
     void
     reset_laws();
 
+    /** Exact contact solved directly (PenaltyLaw::set_exact()), for the
+     * laws of reset_laws() on. */
+    void
+    set_exact_contact(bool exact);
+
     /** The bodies' current solutions. */
     Iterate
     current_iterate() const;
@@ -138,6 +143,7 @@ namespace ddcontact
     std::vector<ContactPair *>    pairs;
     const BodyDistribution       &distribution;
     std::vector<PenaltyLaw>       laws;
+    bool                          exact_contact = false;
   };
 } // namespace ddcontact
 

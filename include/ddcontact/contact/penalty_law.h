@@ -28,6 +28,12 @@ namespace ddcontact
    * multiplier of every point (zero without it). This is the only place
    * the law is written; the solvers ask it for pressures, and the Newton
    * solver for the gap that lambda shifts.
+   *
+   * For exact contact solved directly (DDParameters::exact_contact()) the
+   * law is the complementarity of the multiplier and the weak gap, which
+   * does not give the pressure pointwise from g: lambda is then the
+   * pressure itself, set by the solver (set_contact_pressure()), and the
+   * gap is not shifted.
    */
   class PenaltyLaw
   {
@@ -51,11 +57,25 @@ namespace ddcontact
       return pair.penalty();
     }
 
-    /** (20) at point @p q for the gap function value @p g. */
+    /** Exact contact: the pressure is the solver's multiplier. */
+    void
+    set_exact(const bool exact_contact)
+    {
+      exact = exact_contact;
+    }
+
+    bool
+    is_exact() const
+    {
+      return exact;
+    }
+
+    /** (20) at point @p q for the gap function value @p g (exact contact:
+     * the multiplier). */
     double
     pressure(const unsigned int q, const double g) const
     {
-      return std::min(0., lambda[q] + g / theta());
+      return exact ? lambda[q] : std::min(0., lambda[q] + g / theta());
     }
 
     /** (20) at every point. */
@@ -68,7 +88,7 @@ namespace ddcontact
     double
     shifted_gap(const unsigned int q) const
     {
-      return pair.points()[q].gap + theta() * lambda[q];
+      return pair.points()[q].gap + (exact ? 0. : theta() * lambda[q]);
     }
 
     /** The Uzawa update lambda <- sigma_n (the converged pressure). */
@@ -81,10 +101,25 @@ namespace ddcontact
       return lambda;
     }
 
+    /** Exact contact: the normal stress sigma_n = -p at the points, and
+     * the largest nodal value of p (the peak of the piecewise linear
+     * pressure, at a node, which the points between the nodes miss). */
+    void
+    set_contact_pressure(const std::vector<double> &sigma_n, double peak);
+
+    /** The peak set by set_contact_pressure(); 0 otherwise. */
+    double
+    peak_pressure() const
+    {
+      return peak;
+    }
+
   private:
     const ContactPair    &pair;
     std::vector<double>   lambda;
     std::vector<Point<2>> lambda_points; // where lambda lives
+    bool                  exact = false;
+    double                peak  = 0;
   };
 } // namespace ddcontact
 

@@ -11,62 +11,113 @@ namespace ddcontact
 {
   using namespace dealii;
 
-  /** A value at every contact point of all pairs, the pairs one after the
-   * other (the contact pressure p = -sigma_n, a penetration, ...). */
+  /** A value for every unknown of the contact interface (ContactInterface):
+   * at every contact point, or at every node of S_1, of all pairs, the
+   * pairs one after the other (the contact pressure p = -sigma_n, a
+   * penetration, ...). */
   using PointVector = std::vector<double>;
 
   /**
    * The contact pressure as the unknown of the contact problem, for
-   * DDNewtonSolver. On the contact points of all pairs, with the pressure
-   * p = -sigma_n >= 0 (compression positive), the bodies solved under p
-   * have the penetration
-   *   d(p) = u_1n + u_2n - f~_n = d_0 - S p,
+   * DDNewtonSolver, in one of two discrete spaces:
+   *
+   * - **points** (the penalty (20), as the paper and the other solvers):
+   *   one value at every contact point of ContactPair;
+   * - **nodes** (exact contact, DDParameters::exact_contact()): one
+   *   multiplier per vertex of the faces of S_1, the pressure
+   *   p(x) = sum_i p_i psi_i(x) piecewise linear (psi_i the hat functions
+   *   of the zone mesh of body 1), and the contact condition tested with
+   *   the same functions: the weak gap of node i is the average
+   *   d_i = (1/m_i) int_S1 psi_i d, m_i = int_S1 psi_i. As many multipliers
+   *   as normal displacements of body 1 on S_1 (no boundary vertex hangs in
+   *   2D), so that the trace of body 1 determines them (the mortar method's
+   *   choice of the slave side). The integrals use the pair's points (the
+   *   common refinement of the two zone meshes, doc/method.md section 7).
+   *
+   * Both are written with Psi, psi_i at the points (the identity for
+   * points): p at the points = Psi^T p. With the bodies solved under p the
+   * penetration is
+   *   d(p) = M^{-1} Psi W (u_1n + u_2n - f~_n) = d_0 - S p,
    * affine in p: d_0 that of the bodies without contact load, and
-   * S p = B K^{-1} B^T W p the approach of the bodies loaded by p alone
-   * (homogeneous data): B evaluates both bodies' normal displacements at
-   * the points, B^T W p is the load (20) of the pressure p (W the weights
-   * of the contact integral), K = blockdiag(K_a). f~_n = f_n + theta lambda
-   * is the gap shifted by the augmented Lagrangian's multipliers
+   * S p = M^{-1} Psi W B K^{-1} B^T W Psi^T p the averaged approach of the
+   * bodies loaded by p alone (homogeneous data): B evaluates both bodies'
+   * normal displacements at the points, B^T W Psi^T p is the load (20) of
+   * the pressure p (W the weights of the contact integral), K =
+   * blockdiag(K_a), M = diag(m_i) (M = W for points). f~_n = f_n + theta
+   * lambda is the gap shifted by the augmented Lagrangian's multipliers
    * (PenaltyLaw::shifted_gap()).
    *
-   * W S = (W B) K^{-1} (W B)^T is symmetric positive semidefinite: S is
-   * self-adjoint in the inner product (x, y)_W = sum_q w_q x_q y_q. Every
-   * application of S is one set of body solves (all bodies at once, each
-   * reusing its factorization), counted here.
+   * M S is symmetric positive semidefinite: S is self-adjoint in the inner
+   * product (x, y)_M = sum_i m_i x_i y_i. Every application of S is one set
+   * of body solves (all bodies at once, each reusing its factorization),
+   * counted here.
    */
   class ContactInterface
   {
   public:
-    explicit ContactInterface(const ContactProblem &problem);
+    /** With @p exact_contact, the nodal space with theta = 0; otherwise
+     * the points with the pairs' penalties. */
+    ContactInterface(const ContactProblem &problem, bool exact_contact);
 
-    /** Offsets, weights and penalties of the pairs' current points. */
+    /** The share psi_i(x_q) of point @p point of pair @p pair in an
+     * unknown. */
+    struct PointShare
+    {
+      unsigned int pair;
+      unsigned int point;
+      double       psi;
+    };
+
+    /** The unknowns, their weights, penalties and shares of the pairs'
+     * current points. */
     void
     reinit();
 
-    /** The number of contact points of all pairs. */
+    /** The number of unknowns of all pairs. */
     unsigned int
     size() const
     {
       return weights.size();
     }
 
-    /** (x, y)_W, summed in index order. */
+    /** Whether the unknowns are the nodal multipliers of exact contact. */
+    bool
+    on_nodes() const
+    {
+      return nodal;
+    }
+
+    /** m_i = sum_q w_q psi_i(x_q), the weight of unknown @p i in (.,.)_M. */
+    double
+    weight(const unsigned int i) const
+    {
+      return weights[i];
+    }
+
+    /** The points that unknown @p i spreads to, with psi_i there. */
+    const std::vector<PointShare> &
+    shares(const unsigned int i) const
+    {
+      return point_shares[i];
+    }
+
+    /** (x, y)_M, summed in index order. */
     double
     inner(const PointVector &x, const PointVector &y) const;
 
-    /** sqrt((x, x)_W). */
+    /** sqrt((x, x)_M). */
     double
     norm(const PointVector &x) const;
 
-    /** theta of the pair of point q. */
+    /** theta of the pair of unknown q (0 for exact contact). */
     double
     penalty(const unsigned int q) const
     {
       return thetas[q];
     }
 
-    /** c_q = theta_q + w_q (c_1 + c_2), c_a = (1 - nu_a^2) / E_a: the
-     * compliance of the point q (of the order of the diagonal of S) plus
+    /** c_q = theta_q + m_q (c_1 + c_2), c_a = (1 - nu_a^2) / E_a: the
+     * compliance of the unknown q (of the order of the diagonal of S) plus
      * the penalty. It scales the pressure in the complementarity function
      * min(c p, lambda) of DDNewtonSolver, so that a wrong sign of p counts
      * as much as the penetration it would cause, also for theta -> 0. */
@@ -76,20 +127,21 @@ namespace ddcontact
       return scales[q];
     }
 
-    /** Position of every point on S_1 (to move a pressure to new points). */
+    /** Position of every unknown on S_1 (to move a pressure to new
+     * points). */
     const std::vector<Point<2>> &
     positions() const
     {
       return points;
     }
 
-    /** The normal stresses sigma_n = -p, one vector per pair (the loads of
-     * ContactProblem::solve_bodies()). */
+    /** The normal stresses sigma_n = -Psi^T p at the points, one vector
+     * per pair (the loads of ContactProblem::solve_bodies()). */
     std::vector<std::vector<double>>
     normal_stresses(const PointVector &p) const;
 
-    /** The penetration d = u_1n + u_2n - f~_n of the displacements @p u at
-     * every point (f~_n with the current multipliers). */
+    /** The penetration d = M^{-1} Psi W (u_1n + u_2n - f~_n) of the
+     * displacements @p u (f~_n with the current multipliers). */
     PointVector
     penetration(const ContactProblem::Iterate &u) const;
 
@@ -113,15 +165,25 @@ namespace ddcontact
     }
 
   private:
-    /** u_1n + u_2n of @p u at every point. */
-    PointVector
+    /** u_1n + u_2n of @p u at every point, one vector per pair. */
+    std::vector<std::vector<double>>
     jump(const ContactProblem::Iterate &u) const;
 
-    const ContactProblem     &problem;
-    std::vector<unsigned int> offsets; // first point of every pair, and end
-    PointVector               weights, thetas, scales;
-    std::vector<Point<2>>     points;
-    mutable unsigned int      applications = 0;
+    /** M^{-1} Psi W @p values (values at the points, per pair). */
+    PointVector
+    average(const std::vector<std::vector<double>> &values) const;
+
+    /** One unknown per vertex of the faces of S_1 of pair @p k (in the
+     * order the points meet them). */
+    void
+    add_nodes(unsigned int k);
+
+    const ContactProblem                &problem;
+    const bool                           nodal;
+    PointVector                          weights, thetas, scales;
+    std::vector<Point<2>>                points;
+    std::vector<std::vector<PointShare>> point_shares;
+    mutable unsigned int                 applications = 0;
   };
 } // namespace ddcontact
 

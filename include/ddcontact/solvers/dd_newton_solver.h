@@ -43,8 +43,16 @@ namespace ddcontact
    * step() is one Newton step, what the combined algorithm of Fig. 2 calls
    * between two adaptation steps; the stopping test is ||Phi(p)||_W <=
    * eps_residual ||max(0, d_0)||_W (the overlap of the bodies without
-   * contact pressure). The augmented Lagrangian's Uzawa loop runs over the
-   * converged Newton iteration, with the gap shifted by theta lambda.
+   * contact pressure).
+   *
+   * With Augmented Lagrangian = true the solver takes exact contact
+   * directly: theta = 0 and the unknowns are one multiplier per node of
+   * S_1 (ContactInterface's nodal space, W replaced by the lumped weights
+   * M), so that S_AA is positive definite and the same Newton steps
+   * converge; no Uzawa loop runs. The pressure is then the piecewise
+   * linear multiplier field, handed to the pairs' laws
+   * (PenaltyLaw::set_contact_pressure()) for the output and the
+   * estimator.
    */
   class DDNewtonSolver : public ContactSolver
   {
@@ -120,7 +128,7 @@ namespace ddcontact
     store_iterate();
 
     ContactInterface interface {
-      problem
+      problem, parameters.exact_contact()
     };
     RobinPreconditioner preconditioner{problem};
     bool                mesh_ready  = false; // interface, u_0, S p

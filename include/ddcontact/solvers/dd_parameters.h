@@ -79,6 +79,15 @@ namespace ddcontact
     bool              print_every_iteration = false; // Output/Verbosity = full
     unsigned int      n_newton              = 50;
 
+    /** Exact contact (theta = 0) solved directly by dd-newton with one
+     * multiplier per node of S_1 (ContactInterface); the other solvers
+     * reach exact contact through the Uzawa loop. */
+    bool
+    exact_contact() const
+    {
+      return augmented_lagrangian && solver == ContactSolverType::dd_newton;
+    }
+
     static void
     declare(ParameterHandler &prm);
 

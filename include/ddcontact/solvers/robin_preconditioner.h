@@ -42,6 +42,17 @@ namespace ddcontact
    * at c = 1e-8.) This costs a factorization of every body whenever the
    * active set changes, about once per Newton step.
    *
+   * With the nodal multipliers of exact contact (theta = 0,
+   * ContactInterface::on_nodes()) only body 1 of a pair preconditions:
+   * its trace determines the multipliers, while that of body 2 may not (a
+   * coarser body 2 leaves modes of the multiplier that it does not feel,
+   * on which its share alpha_2 Theta^{-1} would blow up). Then
+   * z = alpha_1 (alpha_1 Theta + S_1)^{-1} r, exact when S_2 =
+   * (c_2 / c_1) S_1, and theta is replaced by 1e-3 of the unknown's
+   * compliance m (c_1 + c_2) in the preconditioner only: the springs are
+   * then a thousand times stiffer than the surface, and the preconditioner
+   * is the Dirichlet one of FETI to 1e-3.
+   *
    * One application is one set of body solves with these factorizations,
    * concurrently and on the bodies' processes, like the DD's solves.
    */
@@ -61,8 +72,8 @@ namespace ddcontact
     void
     update(const std::vector<bool> &active);
 
-    /** z = P_A r on the points with @p active (those of the last update()),
-     * zero elsewhere. */
+    /** z = P_A r on the unknowns with @p active (those of the last
+     * update()), zero elsewhere. */
     void
     vmult(PointVector             &z,
           const PointVector       &r,
@@ -83,15 +94,20 @@ namespace ddcontact
     }
 
   private:
-    /** A contact zone of a body: the pair (its points from @p first on in
-     * the interface's numbering), which side, and the body's share alpha
-     * of the pair's compliance. */
-    struct Side
+    /**
+     * An unknown i of the interface as body b sees it: the load
+     * coefficients c_i = (1/m_i) sum_q w_q psi_i(x_q) c_q of its points q
+     * (constraints resolved) on the body, so that C_b x = c_i . x is the
+     * body's part of the averaged normal displacement of i; the spring
+     * m_i / (alpha theta_i) and the factor of r_i in the right-hand side.
+     */
+    struct Row
     {
-      unsigned int pair;
-      unsigned int first;
-      bool         body_1;
-      double       alpha;
+      unsigned int                         unknown;
+      double                               spring;
+      double                               load;
+      std::vector<types::global_dof_index> dofs;
+      std::vector<double>                  c;
     };
 
     /** The Robin matrix of one body and its factorization. */
@@ -102,45 +118,23 @@ namespace ddcontact
       SparseDirectUMFPACK  direct;
     };
 
-    /** The load coefficients (constraints resolved) of point @p q of the
-     * pair of @p side, on that side's body. */
-    std::pair<const std::vector<types::global_dof_index> &,
-              const std::vector<double> &>
-    coefficients(const Side &side, unsigned int q) const;
-
-    /** Call f(side, point, index, dofs, coefficients) for every contact
-     * point of body @p b (index: its number in the interface) that
-     * @p mask flags, or for all of them without a mask. */
-    template <typename F>
-    void
-    for_each_point(const unsigned int       b,
-                   const std::vector<bool> *mask,
-                   const F                 &f) const
-    {
-      for (const auto &side : sides[b])
-      {
-        const auto &points = problem.get_pairs()[side.pair]->points();
-        for (unsigned int q = 0; q < points.size(); ++q)
-          if (!mask || (*mask)[side.first + q])
-          {
-            const auto [dofs, c] = coefficients(side, q);
-            f(side, points[q], side.first + q, dofs, c);
-          }
-      }
-    }
+    /** The rows of unknown @p i on the side @p body_1 of its pair, with
+     * the share @p alpha of the pair's compliance. */
+    Row
+    make_row(unsigned int i, bool body_1, double alpha) const;
 
     /** The sparsity of the Robin matrix of body @p b. */
     void
     make_pattern(unsigned int b);
 
     /** Assemble and factorize the Robin matrix of body @p b with springs
-     * on the current active points. */
+     * on the current active unknowns. */
     void
     factorize(unsigned int b);
 
     const ContactProblem                    &problem;
     const ContactInterface                  *interface = nullptr;
-    std::vector<std::vector<Side>>           sides; // per body
+    std::vector<std::vector<Row>>            rows; // per body
     std::vector<std::unique_ptr<BodyFactor>> factors;
     std::vector<bool>                        springs; // of the factors
     unsigned int                             n_factorizations = 0;
