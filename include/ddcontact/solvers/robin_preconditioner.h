@@ -67,8 +67,9 @@ namespace ddcontact
     setup(const ContactInterface &interface);
 
     /** Assemble and factorize the Robin matrix of every body solved here
-     * with springs on the points with @p active (nothing if they are those
-     * of the last call). */
+     * with springs on the unknowns with @p active (nothing if the last
+     * factorization has springs on a superset of them, at most a tenth
+     * more). */
     void
     update(const std::vector<bool> &active);
 
