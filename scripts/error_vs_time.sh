@@ -166,8 +166,8 @@ for d in $S_DELTA_FINE; do run "fembem-scaled-anderson-o4-d$d" fembem-scaled-and
 # Lagrangian) and plain penalty, both with Anderson.
 if [ "$quick" = 1 ]; then H_BOX="3"; else H_BOX="3 4 5 6 7 8"; fi
 run_scene="$root/prm/hertz.prm"
-for b in $H_BOX; do run "hertz-al-b$b" hertz-DD-anderson-AL hertz 1 1 "box refinement=$b" --set "Body upper/Mesh/Box refinement=$b" --set "Body lower/Mesh/Box refinement=$b"; done
-for b in $H_BOX; do run "hertz-penalty-b$b" hertz-DD-anderson-penalty hertz 1 1 "box refinement=$b" --set "Body upper/Mesh/Box refinement=$b" --set "Body lower/Mesh/Box refinement=$b" --set "Domain decomposition/Augmented Lagrangian=false"; done
+for b in $H_BOX; do run "hertz-exact-b$b" hertz-DD-newton-exact hertz 1 1 "box refinement=$b" --set "Body upper/Mesh/Box refinement=$b" --set "Body lower/Mesh/Box refinement=$b"; done
+for b in $H_BOX; do run "hertz-penalty-b$b" hertz-DD-anderson-penalty hertz 1 1 "box refinement=$b" --set "Domain decomposition/Solver=dd" --set "Domain decomposition/Relaxation=anderson" --set "Body upper/Mesh/Box refinement=$b" --set "Body lower/Mesh/Box refinement=$b" --set "Domain decomposition/Augmented Lagrangian=false"; done
 unset run_scene
 
 echo "machine load after: $(uptime)" | tee -a "$out/load.txt"
