@@ -159,7 +159,7 @@ namespace
   };
 
   Result
-  solve(const unsigned int refinement)
+  solve(const unsigned int refinement, const unsigned int degree = 1)
   {
     BodyParameters prm;
     prm.name                    = "block";
@@ -167,6 +167,7 @@ namespace
     prm.corner_2                = Point<2>(2., 1.);
     prm.subdivisions            = {16, 4};
     prm.initial_refinement      = refinement;
+    prm.degree                  = degree;
     prm.material.youngs_modulus = E;
     prm.material.poisson_ratio  = nu;
     prm.dirichlet               = "2: xy: " + u_expr;
@@ -328,6 +329,28 @@ main(int argc, char **argv)
     check(eff > 0.8 && eff < 1.25,
           "energy-norm effectivity " + std::to_string(eff) + " in [0.8, 1.25]");
   }
+
+  // 1b. Degree 2: Q2 body, quadratic boundary elements (the trace of Q2,
+  //    (22)-(23)). The Q2 stress error is O(h^2); the BEM's is of higher
+  //    order (bem_quadratic), so again |effectivity - 1| <=
+  //    ||sigma_B - sigma|| / ||sigma_F - sigma|| -> 0; on these coarse
+  //    meshes, where the load (width 0.25) is barely resolved, we ask for
+  //    the band [0.5, 2] of issue 16.
+  std::cout << "degree 2:" << std::endl;
+  for (const unsigned int r : {0u, 1u, 2u})
+  {
+    const Result q2  = solve(r, 2);
+    const double eff = q2.energy_estimate / q2.true_energy_error;
+    std::cout << "  h " << q2.h << ": relative energy-norm error "
+              << q2.true_energy_error << ", estimate " << q2.energy_estimate
+              << ", FEM stress error " << q2.true_error << ", BEM stress error "
+              << q2.bem_error << std::endl;
+    check(eff > 0.5 && eff < 2.,
+          "Q2 energy-norm effectivity " + std::to_string(eff) + " in [0.5, 2]");
+    check(q2.bem_error < 0.5 * q2.true_error,
+          "Q2: BEM stress error below half the FEM's");
+  }
+
   const double rate_fem =
     std::log2(results[1].true_error / results[2].true_error);
   const double rate_bem =
