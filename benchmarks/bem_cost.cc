@@ -5,7 +5,8 @@
 // LU, or the near-field preconditioner of GMRES), solve and the Somigliana
 // stresses at all cell quadrature points, and FEM setup + factorization
 // and solve. A second argument gives one size; a third, "lu" or "gmres",
-// forces the BEM's solver.
+// forces the BEM's solver ("auto" chooses by size); a fourth gives the
+// element degree (1, default, or 2: Q2 body, quadratic boundary elements).
 // Writes one CSV row per mesh to the file given as first argument (or to
 // stdout). Run in Release: scripts/bem_benchmark.sh.
 #include <deal.II/base/mpi.h>
@@ -58,6 +59,8 @@ main(int argc, char **argv)
     p.material.poisson_ratio  = 0.3;
     p.dirichlet               = "2: xy: 0; 0";
     p.neumann                 = "3: 0; -1";
+    if (argc > 4)
+      p.degree = std::stoul(argv[4]);
     ElasticBody<2> body(p, Constants());
     body.make_mesh();
 
@@ -70,7 +73,7 @@ main(int argc, char **argv)
 
     BoundaryElementSolver bem(body.get_material(),
                               body.get_boundary_conditions());
-    if (argc > 3)
+    if (argc > 3 && std::string(argv[3]) != "auto")
       bem.set_solver_method(std::string(argv[3]) == "lu"
                               ? CollocationSystem::Method::dense_lu
                               : CollocationSystem::Method::hierarchical);

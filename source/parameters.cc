@@ -319,16 +319,17 @@ namespace ddcontact
       if (it == body_names.end())
         throw InputError("Adaptation/Bodies: '" + b +
                          "' is not one of the Bodies");
-      // The BEM's basis is the trace of the FEM basis (26): linear only.
+      // The BEM's basis is the trace of the FEM basis (26): linear or
+      // quadratic boundary elements (degree 3 is refused with the Degree).
       if (adaptation.enabled() && adaptation.mode != AdaptationMode::uniform &&
           adaptation.estimator != EstimatorType::kelly &&
-          body_parameters(b).degree != 1)
+          body_parameters(b).degree > 2)
         throw InputError(
           "Adaptation/Estimator: " + to_string(adaptation.estimator) +
-          " builds a BEM with linear elements, but body '" + b +
+          " builds a BEM with linear or quadratic elements, but body '" + b +
           "' has Element/Degree = " +
           std::to_string(body_parameters(b).degree) +
-          "; use Estimator = kelly or Degree = 1");
+          "; use Estimator = kelly or Degree = 1 or 2");
     }
 
     contact_pairs.clear();

@@ -91,7 +91,6 @@ case_ "Refinement box of letters" "Mesh/Refinement box: 'a'" "$base" --set "Body
 case_ "Corner 1 = -inf, 0" "Mesh/Corner 1: '-inf'" "$base" --set "Body lower/Mesh/Corner 1=-inf, 0"
 case_ "empty Output directory" "Output directory: empty" "$base" --output ""
 case_ "contact zone not among the Contact ids" "Boundary id 2: 2 is not among" "$paper" --set "Contact pair S/Boundary id 2=2"
-case_ "FEM-BEM estimator with degree 2" "Adaptation/Estimator" "$paper" --set "Body omega2/Element/Degree=2"
 case_ "Target error = 0" "Adaptation/Target error" "$paper" --set "Adaptation/Target error=0"
 case_ "Target error = 1" "Adaptation/Target error" "$paper" --set "Adaptation/Target error=1"
 case_ "Target error not a number" "Adaptation/Target error" "$paper" --set "Adaptation/Target error=small"

@@ -4,7 +4,8 @@
 // quadrature points, for clamped edge, rollers, Dirichlet-Dirichlet
 // corner, all-Dirichlet, traction only (floating) and a contact traction
 // given at sample points; on a locally refined quadrilateral mesh and on
-// a triangle mesh. Degree-2 elements are rejected with an InputError.
+// a triangle mesh, with linear (Q1, P1) and quadratic (Q2, P2) boundary
+// elements. Degree-3 elements are rejected with an InputError.
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
 
@@ -87,20 +88,6 @@ namespace
                                                   Tensor<1, 2>{{0., -1.}},
                                                   Tensor<1, 2>{{0., 1.}}}};
 
-  void
-  set_rectangle_ids(Triangulation<2> &tria)
-  {
-    for (const auto &face : tria.active_face_iterators())
-      if (face->at_boundary())
-      {
-        const auto c = face->center();
-        face->set_boundary_id(c[0] < 1e-10       ? 0
-                              : c[0] > 2 - 1e-10 ? 1
-                              : c[1] < 1e-10     ? 2
-                                                 : 3);
-      }
-  }
-
   struct Case
   {
     std::string                                 name;
@@ -161,21 +148,7 @@ namespace
 
     // Nodal displacements. A floating body is determined up to a rigid
     // motion: remove the least-squares rigid part of the difference.
-    double                    u_max = 0;
-    std::vector<Tensor<1, 2>> difference(bem.n_nodes());
-    for (unsigned int i = 0; i < bem.n_nodes(); ++i)
-    {
-      Tensor<1, 2> u_exact;
-      for (unsigned int c = 0; c < 2; ++c)
-        u_exact[c] = exact->value(bem.node_position(i), c);
-      difference[i] = bem.node_displacement(i) - u_exact;
-      u_max         = std::max(u_max, u_exact.norm());
-    }
-    if (bem.n_rigid_modes() > 0)
-      remove_rigid_motion(bem, difference);
-    double u_error = 0;
-    for (const auto &d : difference)
-      u_error = std::max(u_error, d.norm() / u_max);
+    const auto [u_error, u_max] = nodal_displacement_error(bem, *exact);
 
     // Element-end tractions, also the unknown ones on Dirichlet sides and
     // at D-D corners (two different normals meet there).
@@ -187,7 +160,7 @@ namespace
         bem.node_position(x[1]) - bem.node_position(x[0]);
       const Tensor<1, 2> normal =
         Tensor<1, 2>{{tangent[1], -tangent[0]}} / tangent.norm();
-      for (unsigned int end = 0; end < 2; ++end)
+      for (unsigned int end = 0; end <= bem.degree(); ++end)
         t_error =
           std::max(t_error,
                    (bem.element_traction(e, end) - sigma * normal).norm() /
@@ -264,8 +237,12 @@ main()
      true,
      false}};
 
+  // Locally refined quadrilateral mesh (hanging nodes, boundary elements
+  // of different lengths) and a triangle mesh, for degree 1 and 2.
+  for (const unsigned int degree : {1u, 2u})
   {
-    std::cout << "=== Q1, locally refined quadrilateral mesh (hanging nodes, "
+    std::cout << "=== Q" << degree
+              << ", locally refined quadrilateral mesh (hanging nodes, "
                  "boundary elements of different lengths)"
               << std::endl;
     Triangulation<2> tria;
@@ -281,30 +258,30 @@ main()
           cell->set_refine_flag();
       tria.execute_coarsening_and_refinement();
     }
-    const Q1Displacement space(tria);
-    for (const auto &c : cases)
-      run_case(c, space.dof_handler, space.mapping, QGauss<2>(2));
-  }
-
-  {
-    std::cout << "=== P1, triangle mesh" << std::endl;
-    Triangulation<2> tria;
-    GridGenerator::subdivided_hyper_rectangle_with_simplices(
-      tria, {6, 3}, Point<2>(0, 0), Point<2>(2, 1));
-    set_rectangle_ids(tria);
-    FESystem<2>   fe(FE_SimplexP<2>(1), 2);
+    FESystem<2>   fe(FE_Q<2>(degree), 2);
     DoFHandler<2> dof_handler(tria);
     dof_handler.distribute_dofs(fe);
+    for (const auto &c : cases)
+      run_case(c, dof_handler, MappingQ<2>(1), QGauss<2>(degree + 1));
+
+    std::cout << "=== P" << degree << ", triangle mesh" << std::endl;
+    Triangulation<2> triangles;
+    GridGenerator::subdivided_hyper_rectangle_with_simplices(
+      triangles, {6, 3}, Point<2>(0, 0), Point<2>(2, 1));
+    set_rectangle_ids(triangles);
+    FESystem<2>   fe_p(FE_SimplexP<2>(degree), 2);
+    DoFHandler<2> dofs_p(triangles);
+    dofs_p.distribute_dofs(fe_p);
     MappingFE<2> mapping(FE_SimplexP<2>(1));
     for (const auto &c : cases)
-      run_case(c, dof_handler, mapping, QGaussSimplex<2>(2));
+      run_case(c, dofs_p, mapping, QGaussSimplex<2>(degree + 1));
   }
 
   {
-    std::cout << "=== degree 2 is rejected" << std::endl;
+    std::cout << "=== degree 3 is rejected" << std::endl;
     Triangulation<2> tria;
     GridGenerator::hyper_cube(tria);
-    FESystem<2>   fe(FE_Q<2>(2), 2);
+    FESystem<2>   fe(FE_Q<2>(3), 2);
     DoFHandler<2> dof_handler(tria);
     dof_handler.distribute_dofs(fe);
     Material material;
@@ -323,7 +300,7 @@ main()
     }
     if (!thrown)
     {
-      std::cout << "  FAIL: no InputError for FE_Q(2)" << std::endl;
+      std::cout << "  FAIL: no InputError for FE_Q(3)" << std::endl;
       ++failures;
     }
   }

@@ -154,12 +154,15 @@ namespace
   {
     double h, true_error, estimate, bem_error, eta_max_printed, eta_max_scaled;
     // Relative energy-norm error of sigma_F and its FEM-BEM estimate.
-    double   true_energy_error, energy_estimate;
+    double true_energy_error, energy_estimate;
+    // ||sigma_B interpolated from the support points - sigma_B at the
+    // quadrature points||, the shortcut the estimator takes on one process.
+    double   interpolation_error;
     Point<2> worst_cell;
   };
 
   Result
-  solve(const unsigned int refinement)
+  solve(const unsigned int refinement, const unsigned int degree = 1)
   {
     BodyParameters prm;
     prm.name                    = "block";
@@ -167,6 +170,7 @@ namespace
     prm.corner_2                = Point<2>(2., 1.);
     prm.subdivisions            = {16, 4};
     prm.initial_refinement      = refinement;
+    prm.degree                  = degree;
     prm.material.youngs_modulus = E;
     prm.material.poisson_ratio  = nu;
     prm.dirichlet               = "2: xy: " + u_expr;
@@ -227,7 +231,10 @@ namespace
                           body.get_fe(),
                           body.get_cell_quadrature(),
                           update_quadrature_points | update_JxW_values);
-    double      fem2 = 0, bem2 = 0, energy_error2 = 0, energy_norm2 = 0;
+    const auto  sigma_I =
+      printed.get_bem().interpolated_stress_at_quadrature_points(
+        body.get_dof_handler(), body.get_mapping(), body.get_cell_quadrature());
+    double fem2 = 0, bem2 = 0, energy_error2 = 0, energy_norm2 = 0, int2 = 0;
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
     {
       fe_values.reinit(cell);
@@ -241,15 +248,18 @@ namespace
           (sigma_B[c][q] - exact) * (sigma_B[c][q] - exact) * fe_values.JxW(q);
         energy_error2 += energy(sigma_F[c][q] - exact) * fe_values.JxW(q);
         energy_norm2 += energy(exact) * fe_values.JxW(q);
+        int2 += (sigma_I[c][q] - sigma_B[c][q]) *
+                (sigma_I[c][q] - sigma_B[c][q]) * fe_values.JxW(q);
       }
     }
 
     Result r;
-    r.h                 = body.get_mesh().min_cell_diameter();
-    r.true_error        = std::sqrt(fem2);
-    r.bem_error         = std::sqrt(bem2);
-    r.estimate          = printed.global_error();
-    r.true_energy_error = std::sqrt(energy_error2 / energy_norm2);
+    r.interpolation_error = std::sqrt(int2);
+    r.h                   = body.get_mesh().min_cell_diameter();
+    r.true_error          = std::sqrt(fem2);
+    r.bem_error           = std::sqrt(bem2);
+    r.estimate            = printed.global_error();
+    r.true_energy_error   = std::sqrt(energy_error2 / energy_norm2);
     r.energy_estimate =
       printed.energy_norm_error() / printed.energy_norm_of_stress();
     r.eta_max_printed = printed.indicators().linfty_norm();
@@ -328,6 +338,44 @@ main(int argc, char **argv)
     check(eff > 0.8 && eff < 1.25,
           "energy-norm effectivity " + std::to_string(eff) + " in [0.8, 1.25]");
   }
+
+  // 1b. Degree 2: Q2 body, quadratic boundary elements (the trace of Q2,
+  //    (22)-(23)). The Q2 stress error is O(h^2); the BEM's is of higher
+  //    order (bem_quadratic), so again |effectivity - 1| <=
+  //    ||sigma_B - sigma|| / ||sigma_F - sigma|| -> 0; on these coarse
+  //    meshes, where the load (width 0.25) is barely resolved, we ask for
+  //    the band [0.5, 2] of issue 16.
+  std::cout << "degree 2:" << std::endl;
+  std::vector<double> interpolation_errors, q2_errors;
+  for (const unsigned int r : {0u, 1u, 2u})
+  {
+    const Result q2 = solve(r, 2);
+    interpolation_errors.push_back(q2.interpolation_error);
+    q2_errors.push_back(q2.true_error);
+    const double eff = q2.energy_estimate / q2.true_energy_error;
+    std::cout << "  h " << q2.h << ": relative energy-norm error "
+              << q2.true_energy_error << ", estimate " << q2.energy_estimate
+              << ", FEM stress error " << q2.true_error << ", BEM stress error "
+              << q2.bem_error << ", sigma_B interpolated - direct "
+              << q2.interpolation_error << std::endl;
+    check(eff > 0.5 && eff < 2.,
+          "Q2 energy-norm effectivity " + std::to_string(eff) + " in [0.5, 2]");
+    check(q2.bem_error < 0.5 * q2.true_error,
+          "Q2: BEM stress error below half the FEM's");
+  }
+  // The Q2 interpolant of sigma_B from the support points of the inner
+  // cells (the estimator's shortcut on one process) against sigma_B at the
+  // quadrature points: for a smooth field O(h^3), but near the boundary
+  // sigma_B carries the BEM's own error, O(h^2) on the Dirichlet side
+  // (bem_quadratic) and varying on the element scale, so we measured rate
+  // ~2 (1.6, 2.1) at 5 % of the Q2 stress error. What the estimator needs:
+  // the shortcut moves the estimate by well under the effectivity band,
+  // i.e. at most 10 % of the FEM stress error on every mesh.
+  for (std::size_t i = 0; i < interpolation_errors.size(); ++i)
+    check(interpolation_errors[i] < 0.1 * q2_errors[i],
+          "Q2: interpolated - direct sigma_B below 10 % of the FEM error (" +
+            std::to_string(interpolation_errors[i] / q2_errors[i]) + ")");
+
   const double rate_fem =
     std::log2(results[1].true_error / results[2].true_error);
   const double rate_bem =

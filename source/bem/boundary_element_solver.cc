@@ -46,14 +46,16 @@ namespace ddcontact
                        std::to_string(fe.n_components()) +
                        " components, but a 2D displacement needs 2");
     // The BEM basis is the trace of the FEM basis (26): straight 2-node
-    // elements with linear shape functions, i.e. Q1 quadrilaterals or P1
-    // triangles only.
-    if (fe.degree != 1 || fe.n_dofs_per_vertex() != 2 ||
-        fe.n_dofs_per_line() != 0)
+    // elements with linear shape functions for Q1 quadrilaterals or P1
+    // triangles, 3-node quadratic ones for Q2 or P2 (vertex dofs and one
+    // line dof per component; no face-interior dofs in 2D).
+    if ((fe.degree != 1 && fe.degree != 2) || fe.n_dofs_per_vertex() != 2 ||
+        fe.n_dofs_per_line() != 2 * (fe.degree - 1))
       throw InputError(
         "BoundaryElementSolver: the finite element " + fe.get_name() +
         " has degree " + std::to_string(fe.degree) +
-        ", but the boundary elements support only degree 1 (Q1 or P1)");
+        ", but the boundary elements support only degree 1 (Q1 or P1) and "
+        "degree 2 (Q2 or P2)");
 
     mesh.reinit(dof_handler, mapping);
     mesh.number_unknowns(boundary_conditions, material.mu());
@@ -82,9 +84,10 @@ namespace ddcontact
     // The element end points and boundary ids determine the boundary mesh
     // and, with the body's fixed boundary data, the whole system.
     std::vector<double> signature;
-    signature.reserve(5 * mesh.get_elements().size() + 2);
+    signature.reserve(5 * mesh.get_elements().size() + 3);
     signature.push_back(mesh.length_scale());
     signature.push_back(mesh.get_rigid_modes().size());
+    signature.push_back(mesh.degree());
     for (const auto &element : mesh.get_elements())
       signature.insert(signature.end(),
                        {element.x_a[0],
@@ -104,14 +107,19 @@ namespace ddcontact
     if (!mesh.get_rigid_modes().empty())
       return {};
 
-    // Number the nodes along each closed boundary curve in turn, so that
-    // contiguous keys are contiguous pieces of the boundary.
+    // Number the vertices along each closed boundary curve in turn, so
+    // that contiguous keys are contiguous pieces of the boundary; a
+    // midpoint node sits half-way along its element.
     std::vector<double> node_key(nodes.size(), -1.);
     double              counter = 0;
     for (unsigned int start = 0; start < nodes.size(); ++start)
-      for (unsigned int i = start; node_key[i] < 0;
-           i              = elements[nodes[i].element_out].nodes[1])
-        node_key[i] = counter++;
+      if (!nodes[start].is_midpoint)
+        for (unsigned int i = start; node_key[i] < 0;
+             i              = elements[nodes[i].element_out].nodes[1])
+          node_key[i] = counter++;
+    for (const auto &element : elements)
+      if (mesh.degree() == 2)
+        node_key[element.nodes[2]] = node_key[element.nodes[0]] + 0.5;
 
     // Element-end tractions sit just inside their element.
     std::array<std::vector<double>, 2> keys;
@@ -123,11 +131,12 @@ namespace ddcontact
         if (!nodes[m].known[j])
           column_keys[nodes[m].unknown[j]] = node_key[m];
     for (const auto &element : elements)
-      for (unsigned int k = 0; k < 2; ++k)
+      for (unsigned int k = 0; k < mesh.n_element_nodes(); ++k)
         for (unsigned int j = 0; j < 2; ++j)
           if (element.dirichlet[j])
             column_keys[element.unknown[k][j]] =
-              node_key[element.nodes[k]] + (k == 0 ? 0.25 : -0.25);
+              node_key[element.nodes[k]] +
+              (k == 0 ? 0.25 : (k == 1 ? -0.25 : 0.));
     for (const auto &point : mesh.get_collocation_points())
       for (const unsigned int row : point.rows)
         row_keys[row] = point.node != numbers::invalid_unsigned_int
@@ -148,7 +157,9 @@ namespace ddcontact
     const unsigned int n                   = n_boundary_unknowns + n_modes;
     system_matrix.reinit(n, n);
     body_rhs.reinit(n);
-    contact_matrix.reinit(n_boundary_unknowns, 4 * mesh.n_contact_elements());
+    const unsigned int per_contact = mesh.contact_values_per_element();
+    contact_matrix.reinit(n_boundary_unknowns,
+                          per_contact * mesh.n_contact_elements());
     diagonal_blocks.assign(nodes.size(), Tensor<2, 2>());
 
     // Every collocation point fills its own rows only, so the points can
@@ -185,7 +196,7 @@ namespace ddcontact
             for (unsigned int e = 0; e < elements.size(); ++e)
             {
               const auto &element = elements[e];
-              for (unsigned int k = 0; k < 2; ++k)
+              for (unsigned int k = 0; k < mesh.n_element_nodes(); ++k)
                 for (unsigned int j = 0; j < 2; ++j)
                 {
                   const double value = blocks.g[e][k][i][j];
@@ -193,7 +204,8 @@ namespace ddcontact
                     system_matrix(row, element.unknown[k][j]) -= value;
                   else if (element.is_contact)
                     contact_matrix(
-                      row, 4 * element.contact_index + 2 * k + j) += value;
+                      row, per_contact * element.contact_index + 2 * k + j) +=
+                      value;
                   else
                     rhs += value * element.traction[k][j];
                 }
@@ -227,7 +239,8 @@ namespace ddcontact
   {
     const auto        &elements           = mesh.get_elements();
     const unsigned int n_contact_elements = mesh.n_contact_elements();
-    contact_values.reinit(4 * n_contact_elements);
+    const unsigned int per_element        = mesh.contact_values_per_element();
+    contact_values.reinit(per_element * n_contact_elements);
     if (contact.points.empty())
       return;
     if (contact.weights.size() != contact.points.size() ||
@@ -244,7 +257,7 @@ namespace ddcontact
         contact_elements.push_back(e);
 
     // Moments sum_q w_q t_q N_a(x_q) per element end, physical units.
-    std::vector<std::array<Tensor<1, 2>, 2>> moments(n_contact_elements);
+    std::vector<std::array<Tensor<1, 2>, 3>> moments(n_contact_elements);
     for (unsigned int q = 0; q < contact.points.size(); ++q)
     {
       const Point<2> x        = mesh.scaled(contact.points[q]);
@@ -263,27 +276,38 @@ namespace ddcontact
       const auto  &element = elements[nearest];
       const double s =
         BoundaryIntegration::segment_coordinate(x, element.x_a, element.x_b);
-      moments[element.contact_index][0] +=
-        contact.weights[q] * (1. - s) * contact.traction[q];
-      moments[element.contact_index][1] +=
-        contact.weights[q] * s * contact.traction[q];
+      const auto shape = mesh.shape_values(s);
+      for (unsigned int k = 0; k < mesh.n_element_nodes(); ++k)
+        moments[element.contact_index][k] +=
+          contact.weights[q] * shape[k] * contact.traction[q];
     }
 
-    // L2 projection onto the linear element-end traction: the element mass
-    // matrix L/6 [[2,1],[1,2]] has the inverse 2/L [[2,-1],[-1,2]].
+    // L2 projection onto the element's traction polynomial. Linear: the
+    // element mass matrix L/6 [[2,1],[1,2]] has the inverse
+    // 2/L [[2,-1],[-1,2]]. Quadratic (start, end, midpoint): L/30
+    // [[4,-1,2],[-1,4,2],[2,2,16]] has the inverse 1/L [[9,3,-3/2],
+    // [3,9,-3/2],[-3/2,-3/2,9/4]].
     const double mu = material.mu();
     for (const unsigned int e : contact_elements)
     {
-      const unsigned int  ci  = elements[e].contact_index;
-      const double        L   = elements[e].length * mesh.length_scale();
-      const Tensor<1, 2> &m_a = moments[ci][0], &m_b = moments[ci][1];
-      const Tensor<1, 2>  t_a = 2. / L * (2. * m_a - m_b) / mu;
-      const Tensor<1, 2>  t_b = 2. / L * (2. * m_b - m_a) / mu;
-      for (unsigned int c = 0; c < 2; ++c)
+      const unsigned int          ci = elements[e].contact_index;
+      const double                L  = elements[e].length * mesh.length_scale();
+      const auto                 &m  = moments[ci];
+      std::array<Tensor<1, 2>, 3> t;
+      if (mesh.degree() == 1)
       {
-        contact_values(4 * ci + c)     = t_a[c];
-        contact_values(4 * ci + 2 + c) = t_b[c];
+        t[0] = 2. / L * (2. * m[0] - m[1]) / mu;
+        t[1] = 2. / L * (2. * m[1] - m[0]) / mu;
       }
+      else
+      {
+        t[0] = (9. * m[0] + 3. * m[1] - 1.5 * m[2]) / (L * mu);
+        t[1] = (3. * m[0] + 9. * m[1] - 1.5 * m[2]) / (L * mu);
+        t[2] = (-1.5 * m[0] - 1.5 * m[1] + 2.25 * m[2]) / (L * mu);
+      }
+      for (unsigned int k = 0; k < mesh.n_element_nodes(); ++k)
+        for (unsigned int c = 0; c < 2; ++c)
+          contact_values(per_element * ci + 2 * k + c) = t[k][c];
     }
   }
 
@@ -504,7 +528,7 @@ namespace ddcontact
                                           const unsigned int end) const
   {
     AssertIndexRange(e, mesh.get_elements().size());
-    AssertIndexRange(end, 2);
+    AssertIndexRange(end, mesh.n_element_nodes());
     return material.mu() * mesh.get_elements()[e].traction[end];
   }
 
@@ -512,7 +536,21 @@ namespace ddcontact
   BoundaryElementSolver::element_nodes(const unsigned int e) const
   {
     AssertIndexRange(e, mesh.get_elements().size());
-    return mesh.get_elements()[e].nodes;
+    const auto &nodes = mesh.get_elements()[e].nodes;
+    return {{nodes[0], nodes[1]}};
+  }
+
+  unsigned int
+  BoundaryElementSolver::element_midpoint_node(const unsigned int e) const
+  {
+    AssertIndexRange(e, mesh.get_elements().size());
+    return mesh.get_elements()[e].nodes[2];
+  }
+
+  unsigned int
+  BoundaryElementSolver::degree() const
+  {
+    return mesh.degree();
   }
 
   types::boundary_id

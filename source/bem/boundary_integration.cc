@@ -149,19 +149,19 @@ namespace ddcontact
                                   const unsigned int  e,
                                   Integrand         &&f)
       {
-        const auto         &nodes   = mesh.get_nodes();
-        const auto         &element = mesh.get_elements()[e];
-        const Tensor<1, 2> &u_a     = nodes[element.nodes[0]].displacement;
-        const Tensor<1, 2> &u_b     = nodes[element.nodes[1]].displacement;
-        const Tensor<1, 2> &t_a     = element.traction[0],
-                           &t_b     = element.traction[1];
+        const auto        &nodes   = mesh.get_nodes();
+        const auto        &element = mesh.get_elements()[e];
+        const unsigned int n_shape = mesh.n_element_nodes();
         auto integrand = [&](const Point<2> &x, const double s, const double w)
         {
-          f(x,
-            element.normal,
-            (1. - s) * t_a + s * t_b,
-            (1. - s) * u_a + s * u_b,
-            w);
+          const auto   shape = mesh.shape_values(s);
+          Tensor<1, 2> t, u;
+          for (unsigned int k = 0; k < n_shape; ++k)
+          {
+            t += shape[k] * element.traction[k];
+            u += shape[k] * nodes[element.nodes[k]].displacement;
+          }
+          f(x, element.normal, t, u, w);
         };
         integrate_element(
           xi, element.x_a, element.x_b, element.length, integrand);
@@ -190,6 +190,83 @@ namespace ddcontact
     } // namespace
 
     void
+    singular_element_blocks(const BoundaryMesh          &mesh,
+                            const KelvinSolution        &kelvin,
+                            const double                 length,
+                            const Tensor<1, 2>          &tau,
+                            const Tensor<1, 2>          &n,
+                            const double                 s0,
+                            std::array<Tensor<2, 2>, 3> &g,
+                            std::array<Tensor<2, 2>, 3> &h)
+    {
+      // On a straight element through the source, r_vec = (s - s0) L tau,
+      // so with t = s - s0 (doc/bem-method.md §2.4, §2.7):
+      //   U N_k = c_U [(3-4nu)(ln L + ln|t|) delta - tau tau] N_k,
+      //   T N_k = A (tau n - n tau) N_k / (L t)   (dr/dn = 0).
+      // Writing N_k as a polynomial sum_m c_m t^m, every integral is a sum
+      // of exact moments over t in [-s0, 1-s0]: int t^m, int ln|t| t^m, and
+      // the principal value of int t^(m-1) (ln((1-s0)/s0) for m = 0). This
+      // is exact for any polynomial degree (no singular quadrature rule and
+      // its error to justify); for linear shapes it reproduces the closed
+      // forms of doc/bem-method.md §2.4 and §2.7.
+      const double       nu  = kelvin.nu;
+      const double       c_u = -1. / (8. * numbers::PI * (1. - nu));
+      const double       a_t = (1. - 2. * nu) / (4. * numbers::PI * (1. - nu));
+      const Tensor<2, 2> identity = unit_symmetric_tensor<2>();
+      const Tensor<2, 2> twist    = a_t * (outer(tau, n) - outer(n, tau));
+      const double       a = s0, b = 1. - s0;
+
+      // F(x, m) = int_0^x ln(t) t^m dt.
+      const auto log_moment = [](const double x, const unsigned int m)
+      {
+        const double p = m + 1.;
+        return x > 0 ? std::pow(x, p) * (std::log(x) / p - 1. / (p * p)) : 0.;
+      };
+      std::array<double, 3> power, log_power;
+      for (unsigned int m = 0; m < 3; ++m)
+      {
+        power[m]     = (std::pow(b, m + 1.) - std::pow(-a, m + 1.)) / (m + 1.);
+        log_power[m] = log_moment(b, m) + (m % 2 ? -1. : 1.) * log_moment(a, m);
+      }
+
+      // Monomial coefficients in s of the shape functions (start, end,
+      // midpoint), then shifted to t = s - s0.
+      const std::array<std::array<double, 3>, 3> monomials =
+        mesh.degree() == 1
+          ? std::array<std::array<double, 3>, 3>{{{{1., -1., 0.}},
+                                                  {{0., 1., 0.}},
+                                                  {{0., 0., 0.}}}}
+          : std::array<std::array<double, 3>, 3>{
+              {{{1., -3., 2.}}, {{0., -1., 2.}}, {{0., 4., -4.}}}};
+      for (unsigned int k = 0; k < 3; ++k)
+      {
+        const auto                 &p = monomials[k];
+        const std::array<double, 3> c{
+          {p[0] + p[1] * s0 + p[2] * s0 * s0, p[1] + 2. * p[2] * s0, p[2]}};
+        double integral = 0, log_integral = 0;
+        for (unsigned int m = 0; m < 3; ++m)
+        {
+          integral += c[m] * power[m];
+          log_integral += c[m] * log_power[m];
+        }
+        g[k] =
+          c_u * ((3. - 4. * nu) * length *
+                   (std::log(length) * integral + log_integral) * identity -
+                 length * integral * outer(tau, tau));
+
+        // N_k(s0) = c_0: where it is nonzero at an end of the element the
+        // integral diverges; that block is left to the rigid-body trick.
+        const bool singular = std::abs(c[0]) > 1e-14;
+        if (singular && (a == 0. || b == 0.))
+          h[k] = Tensor<2, 2>();
+        else
+          h[k] = ((singular ? c[0] * std::log(b / a) : 0.) + c[1] * power[0] +
+                  c[2] * power[1]) *
+                 twist;
+      }
+    }
+
+    void
     collocation_row_blocks(const BoundaryMesh                   &mesh,
                            const KelvinSolution                 &kelvin,
                            const BoundaryMesh::CollocationPoint &point,
@@ -203,7 +280,7 @@ namespace ddcontact
       const Tensor<2, 2> identity = unit_symmetric_tensor<2>();
 
       blocks.h.assign(nodes.size(), Tensor<2, 2>());
-      blocks.g.assign(elements.size(), std::array<Tensor<2, 2>, 2>());
+      blocks.g.assign(elements.size(), std::array<Tensor<2, 2>, 3>());
       const Point<2> &xi = point.x;
 
       for (unsigned int e = 0; e < elements.size(); ++e)
@@ -212,8 +289,11 @@ namespace ddcontact
         const double                 L       = element.length;
         const auto                  &tau = element.tangent, &n = element.normal;
 
-        if (point.node != numbers::invalid_unsigned_int &&
-            (element.nodes[0] == point.node || element.nodes[1] == point.node))
+        const bool on_node =
+          point.node != numbers::invalid_unsigned_int &&
+          (element.nodes[0] == point.node || element.nodes[1] == point.node ||
+           element.nodes[2] == point.node);
+        if (mesh.degree() == 1 && on_node)
         {
           // Closed forms on the two elements adjacent to the collocation
           // node (doc/bem-method.md §2.4): the log kernel integrated exactly,
@@ -232,7 +312,7 @@ namespace ddcontact
           blocks.h[element.nodes[1 - k]] +=
             a_t * (outer(rhat, n) - outer(n, rhat));
         }
-        else if (e == point.element)
+        else if (mesh.degree() == 1 && e == point.element)
         {
           // Off-node collocation point inside its own element
           // (doc/bem-method.md §2.7): Cauchy principal values of T N_a, T N_b
@@ -258,20 +338,44 @@ namespace ddcontact
           blocks.g[e][1] += c_u * ((3. - 4. * nu) * log_b * identity -
                                    0.5 * L * outer(tau, tau));
         }
+        else if (on_node || e == point.element)
+        {
+          // Quadratic element through the collocation point: exact
+          // moments (singular_element_blocks()) at its start (s = 0), end
+          // (1), midpoint (1/2) or off-node point (s0). The block of the
+          // collocation node itself is replaced by the rigid-body trick
+          // below; an off-node point is a smooth point of its element and
+          // adds the free term delta/2, spread by the shape functions.
+          const double                s0 = e == point.element ? point.s0
+                                           : element.nodes[0] == point.node ? 0.
+                                           : element.nodes[1] == point.node ? 1.
+                                                                            : 0.5;
+          std::array<Tensor<2, 2>, 3> g, h;
+          singular_element_blocks(mesh, kelvin, L, tau, n, s0, g, h);
+          const auto shape = mesh.shape_values(s0);
+          for (unsigned int k = 0; k < 3; ++k)
+          {
+            blocks.g[e][k] += g[k];
+            blocks.h[element.nodes[k]] += h[k];
+            if (e == point.element)
+              blocks.h[element.nodes[k]] += 0.5 * shape[k] * identity;
+          }
+        }
         else
         {
-          Tensor<2, 2> &h_a = blocks.h[element.nodes[0]];
-          Tensor<2, 2> &h_b = blocks.h[element.nodes[1]];
-          auto         &g   = blocks.g[e];
-          auto          integrand =
+          auto              &g       = blocks.g[e];
+          const unsigned int n_shape = mesh.n_element_nodes();
+          auto               integrand =
             [&](const Point<2> &x, const double s, const double w)
           {
-            const Tensor<2, 2> u = kelvin.displacement_kernel(xi, x);
-            const Tensor<2, 2> t = kelvin.traction_kernel(xi, x, n);
-            g[0] += (w * (1. - s)) * u;
-            g[1] += (w * s) * u;
-            h_a += (w * (1. - s)) * t;
-            h_b += (w * s) * t;
+            const Tensor<2, 2> u     = kelvin.displacement_kernel(xi, x);
+            const Tensor<2, 2> t     = kelvin.traction_kernel(xi, x, n);
+            const auto         shape = mesh.shape_values(s);
+            for (unsigned int k = 0; k < n_shape; ++k)
+            {
+              g[k] += (w * shape[k]) * u;
+              blocks.h[element.nodes[k]] += (w * shape[k]) * t;
+            }
           };
           integrate_element(xi, element.x_a, element.x_b, L, integrand);
         }

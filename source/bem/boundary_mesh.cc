@@ -16,14 +16,15 @@ namespace ddcontact
 {
   namespace
   {
-    /** A boundary face (25) with the global dofs of its two vertices,
-     * and whether the body lies on the left of x[1] -> x[0] (deal.II does
-     * not orient faces), as sent between the processes of a distributed
-     * mesh. */
+    /** A boundary face (25) with the global dofs of its two vertices and,
+     * for degree 2, of its line (the midpoint), and whether the body lies on
+     * the left of x[1] -> x[0] (deal.II does not orient faces), as sent between
+     * the processes of a distributed mesh. */
     struct BoundaryFace
     {
       std::array<Point<2>, 2>                               x;
       std::array<std::array<types::global_dof_index, 2>, 2> dofs;
+      std::array<types::global_dof_index, 2>                line_dofs;
       types::boundary_id                                    boundary_id;
       bool                                                  reversed;
 
@@ -31,7 +32,7 @@ namespace ddcontact
       void
       serialize(Archive &archive, const unsigned int)
       {
-        archive &x &dofs &boundary_id &reversed;
+        archive &x &dofs &line_dofs &boundary_id &reversed;
       }
     };
   } // namespace
@@ -42,6 +43,16 @@ namespace ddcontact
   {
     nodes.clear();
     elements.clear();
+
+    // The BEM basis is the trace of the FEM basis (26): 2-node elements
+    // for Q1/P1 (vertex dofs only), 3-node elements for Q2/P2 (one line dof
+    // per component at the face midpoint).
+    const FiniteElement<2> &fe = dof_handler.get_fe();
+    element_degree             = fe.degree;
+    Assert((element_degree == 1 || element_degree == 2) &&
+             fe.n_dofs_per_vertex() == 2 &&
+             fe.n_dofs_per_line() == 2 * (element_degree - 1),
+           ExcInternalError());
 
     std::vector<BoundaryFace> faces;
 
@@ -84,6 +95,18 @@ namespace ddcontact
                        .first == c,
                    ExcInternalError());
             boundary_face.dofs[v][c] = face->vertex_dof_index(v, c);
+          }
+        }
+        // Line dofs of FESystem(Q2 or P2, 2): one per component, after the
+        // four vertex dofs of the face.
+        for (unsigned int c = 0; c < 2; ++c)
+        {
+          boundary_face.line_dofs[c] = numbers::invalid_dof_index;
+          if (element_degree == 2)
+          {
+            Assert(fe.face_system_to_component_index(4 + c).first == c,
+                   ExcInternalError());
+            boundary_face.line_dofs[c] = face->dof_index(c);
           }
         }
         const Tensor<1, 2> tangent = boundary_face.x[1] - boundary_face.x[0];
@@ -130,6 +153,21 @@ namespace ddcontact
     if (elements.empty())
       throw InputError("BoundaryElementSolver: the mesh has no boundary faces");
 
+    // Quadratic elements: the midpoint nodes, after all vertices (a
+    // boundary face belongs to one cell, so its line dofs are its own).
+    if (element_degree == 2)
+      for (unsigned int e = 0; e < elements.size(); ++e)
+      {
+        Node node;
+        node.x_physical      = Point<2>(0.5 * (faces[e].x[0] + faces[e].x[1]));
+        node.dofs            = faces[e].line_dofs;
+        node.element_in      = e;
+        node.element_out     = e;
+        node.is_midpoint     = true;
+        elements[e].nodes[2] = nodes.size();
+        nodes.push_back(node);
+      }
+
     // Every node must have exactly one incoming and one outgoing element:
     // the boundary is a set of closed polygons.
     for (unsigned int e = 0; e < elements.size(); ++e)
@@ -153,7 +191,8 @@ namespace ddcontact
 
     // In 2D no hanging node lies on the boundary of a single body
     // (doc/bem-method.md §2.8), so the trace of the constrained Q1 space is the
-    // space of continuous piecewise linears on this boundary mesh.
+    // space of continuous piecewise linears (quadratics for degree 2) on
+    // this boundary mesh.
     {
       AffineConstraints<double> hanging_nodes;
       DoFTools::make_hanging_node_constraints(dof_handler, hanging_nodes);
@@ -216,7 +255,7 @@ namespace ddcontact
 
       const auto neumann =
         boundary_conditions.neumann.find(element.boundary_id);
-      for (unsigned int k = 0; k < 2; ++k)
+      for (unsigned int k = 0; k < n_element_nodes(); ++k)
       {
         element.traction[k] = Tensor<1, 2>();
         if (neumann != boundary_conditions.neumann.end())
@@ -286,11 +325,18 @@ namespace ddcontact
         else
           element.unknown[0][c] = n++;
       }
+    // Degree 2: the midpoint traction where the displacement is prescribed
+    // (the midpoint node is a smooth point of its element).
+    for (auto &element : elements)
+      for (unsigned int c = 0; c < 2; ++c)
+        element.unknown[2][c] = (element_degree == 2 && element.dirichlet[c])
+                                  ? n++
+                                  : numbers::invalid_unsigned_int;
     n_boundary_unknowns = n;
 
     // Collocation: both components at every node, rows 2i + c, then the
-    // extra off-node rows at D-D corners, inside the outgoing element at
-    // s0 = 1/4 (any s0 in (0,1) works).
+    // extra off-node rows at D-D corners (vertices), inside the outgoing
+    // element at s0 = 1/4 (any s0 in (0,1) that is not a node works).
     collocation_points.clear();
     for (unsigned int i = 0; i < nodes.size(); ++i)
     {
@@ -304,6 +350,8 @@ namespace ddcontact
     unsigned int row = 2 * nodes.size();
     for (unsigned int i = 0; i < nodes.size(); ++i)
     {
+      if (nodes[i].is_midpoint)
+        continue;
       const unsigned int e_in  = nodes[i].element_in,
                          e_out = nodes[i].element_out;
       CollocationPoint point;
@@ -374,13 +422,14 @@ namespace ddcontact
       for (unsigned int c = 0; c < 2; ++c)
         if (!node.known[c])
           node.displacement[c] = x(node.unknown[c]);
+    const unsigned int per_element = contact_values_per_element();
     for (auto &element : elements)
-      for (unsigned int k = 0; k < 2; ++k)
+      for (unsigned int k = 0; k < n_element_nodes(); ++k)
         for (unsigned int c = 0; c < 2; ++c)
           if (element.dirichlet[c])
             element.traction[k][c] = x(element.unknown[k][c]);
           else if (element.is_contact)
             element.traction[k][c] =
-              contact_values(4 * element.contact_index + 2 * k + c);
+              contact_values(per_element * element.contact_index + 2 * k + c);
   }
 } // namespace ddcontact

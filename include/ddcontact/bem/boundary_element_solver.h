@@ -33,9 +33,13 @@ namespace ddcontact
    * Direct boundary element method for 2D plane-strain elastostatics on
    * the boundary of one FEM body, the reference solution of the FEM-BEM
    * estimator (22)-(27):
-   *  - one straight 2-node element per active boundary face (25), one node
-   *    per boundary vertex, linear shape functions = the trace of the Q1 (or
-   *    P1) basis (26); in 2D no hanging node lies on the boundary of a body;
+   *  - one straight element per active boundary face (25), one node per
+   *    boundary vertex, linear shape functions = the trace of the Q1 (or
+   *    P1) basis (26); for a body of degree 2 quadratic shape functions with
+   *    one more node at each face midpoint = the trace of the Q2 (or P2)
+   *    basis, which keeps the BEM a priori more accurate than the FEM, as
+   *    (22)-(23) require; in 2D no hanging node lies on the boundary of a
+   *    body;
    *  - Kelvin fundamental solution, nodal collocation, element-end
    *    tractions (they may jump at corners and at Dirichlet/Neumann
    *    junctions), one extra collocation row where the same displacement
@@ -201,15 +205,25 @@ namespace ddcontact
     /** @{ */
 
     /** Boundary solution: traction at end @p end (0 = start, 1 = end in the
-     * direction of travel, body on the left) of element @p e, physical
-     * units. Tractions are stored per element end (doc/bem-method.md §2.2). */
+     * direction of travel, body on the left; 2 = midpoint for degree 2) of
+     * element @p e, physical units. Tractions are stored per element end
+     * (doc/bem-method.md §2.2). */
     Tensor<1, 2>
     element_traction(unsigned int e, unsigned int end) const;
 
-    /** The two nodes of element @p e, ordered so that the body lies on the
-     * left of the element (outer boundaries counter-clockwise). */
+    /** The two vertex nodes of element @p e, ordered so that the body lies
+     * on the left of the element (outer boundaries counter-clockwise). */
     std::array<unsigned int, 2>
     element_nodes(unsigned int e) const;
+
+    /** The midpoint node of element @p e (degree 2; invalid for degree 1).
+     */
+    unsigned int
+    element_midpoint_node(unsigned int e) const;
+
+    /** Polynomial degree of the boundary elements, that of the body's FE. */
+    unsigned int
+    degree() const;
 
     types::boundary_id
     element_boundary_id(unsigned int e) const;

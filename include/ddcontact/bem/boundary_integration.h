@@ -22,7 +22,8 @@ namespace ddcontact
    *    number of points grows as the source point approaches the element,
    *    with adaptive bisection close to it;
    *  - the singular integrals on the elements adjacent to a collocation
-   *    point in closed form, and the free term by the rigid-body trick;
+   *    point in closed form (for quadratic elements by exact moments of
+   *    the shape polynomials), and the free term by the rigid-body trick;
    *  - the Somigliana identities for interior points (doc/bem-method.md §1.3,
    * §4.1).
    */
@@ -39,13 +40,33 @@ namespace ddcontact
     double
     segment_coordinate(const Point<2> &p, const Point<2> &a, const Point<2> &b);
 
-    /** One 2x2 block per node (H) and per element end (G) of the BIE row
-     * at one collocation point. */
+    /** One 2x2 block per node (H) and per element node (G, indexed like
+     * BoundaryMesh::Element::nodes) of the BIE row at one collocation
+     * point. */
     struct RowBlocks
     {
       std::vector<Tensor<2, 2>>                h;
-      std::vector<std::array<Tensor<2, 2>, 2>> g;
+      std::vector<std::array<Tensor<2, 2>, 3>> g;
     };
+
+    /**
+     * The exact integrals over a straight element of length @p length
+     * (scaled), tangent @p tau and normal @p n, of the kernels times the
+     * shape functions of @p mesh, for a source point on the element at local
+     * coordinate @p s0: G_k = int U N_k and, where finite, the principal
+     * value H_k = PV int T N_k. H_k is set to zero where N_k(s0) != 0 and s0
+     * is an end (the diagonal block of the rigid-body trick). Used for
+     * quadratic elements; exposed for the tests.
+     */
+    void
+    singular_element_blocks(const BoundaryMesh          &mesh,
+                            const KelvinSolution        &kelvin,
+                            const double                 length,
+                            const Tensor<1, 2>          &tau,
+                            const Tensor<1, 2>          &n,
+                            const double                 s0,
+                            std::array<Tensor<2, 2>, 3> &g,
+                            std::array<Tensor<2, 2>, 3> &h);
 
     /**
      * The H and G blocks of the boundary integral equation collocated at

@@ -23,10 +23,14 @@ namespace ddcontact
    * The boundary mesh of one FEM body for the direct boundary element
    * method (doc/bem-method.md §2), with its boundary data and the numbering of
    * the unknowns:
-   *  - one node per boundary vertex, one straight 2-node element per active
+   *  - one node per boundary vertex, one straight element per active
    *    boundary face (25), oriented so that the body lies on the left
    *    (outer boundaries counter-clockwise); on a distributed mesh (p4est)
    *    the faces of all processes are gathered on every process;
+   *  - for a body of degree 2 (Q2 or P2) the elements are quadratic: one
+   *    more node at each face midpoint, the support point of the face's line
+   *    dofs, so that the BEM basis is again the trace of the FEM basis (26);
+   *    midpoint nodes are numbered after all vertices;
    *  - coordinates scaled by the bounding-box diagonal of the boundary
    *    (doc/bem-method.md §3.3), tractions by mu;
    *  - the unknowns: nodal displacement components that are not prescribed,
@@ -39,15 +43,18 @@ namespace ddcontact
   class BoundaryMesh
   {
   public:
-    /** A boundary node = a boundary vertex of the mesh. Coordinates and
-     * displacements are scaled by length_scale(). */
+    /** A boundary node = a boundary vertex of the mesh, or the midpoint of
+     * a quadratic element. Coordinates and displacements are scaled by
+     * length_scale(). */
     struct Node
     {
       Point<2>                               x;
       Point<2>                               x_physical;
       std::array<types::global_dof_index, 2> dofs;
+      // For a midpoint node both are its own element.
       unsigned int element_in  = numbers::invalid_unsigned_int;
       unsigned int element_out = numbers::invalid_unsigned_int;
+      bool         is_midpoint = false;
       // Per component: prescribed value (scaled) or index of the unknown.
       std::array<bool, 2>         known{{false, false}};
       std::array<unsigned int, 2> unknown{
@@ -55,11 +62,15 @@ namespace ddcontact
       Tensor<1, 2> displacement;
     };
 
-    /** A straight 2-node boundary element = an active boundary face (25),
-     * scaled coordinates. */
+    /** A straight boundary element = an active boundary face (25), scaled
+     * coordinates. Its nodes are the start vertex (local coordinate s = 0),
+     * the end vertex (s = 1) and, for degree 2, the midpoint (s = 1/2);
+     * "ends" below are these element nodes. */
     struct Element
     {
-      std::array<unsigned int, 2> nodes;
+      std::array<unsigned int, 3> nodes{{numbers::invalid_unsigned_int,
+                                         numbers::invalid_unsigned_int,
+                                         numbers::invalid_unsigned_int}};
       Point<2>                    x_a, x_b;
       Tensor<1, 2>                tangent, normal;
       double                      length;
@@ -70,9 +81,10 @@ namespace ddcontact
       // Index of the element among the contact elements, if it is one.
       unsigned int contact_index = numbers::invalid_unsigned_int;
       // [end][component]: index of the unknown traction (ends may be tied).
-      std::array<std::array<unsigned int, 2>, 2> unknown;
-      // Tractions (scaled by mu) at the two ends: prescribed or solved for.
-      std::array<Tensor<1, 2>, 2> traction;
+      std::array<std::array<unsigned int, 2>, 3> unknown;
+      // Tractions (scaled by mu) at the element nodes: prescribed or solved
+      // for.
+      std::array<Tensor<1, 2>, 3> traction;
     };
 
     /** A collocation point xi with the BIE components collocated there:
@@ -88,7 +100,8 @@ namespace ddcontact
     };
 
     /** Build the nodes and elements from the active boundary faces of the
-     * mesh of @p dof_handler (Q1 or P1 vertex dofs) and scale them. */
+     * mesh of @p dof_handler (vertex dofs of Q1 or P1, vertex and line dofs
+     * of Q2 or P2) and scale them. */
     void
     reinit(const DoFHandler<2> &dof_handler, const Mapping<2> &mapping);
 
@@ -100,8 +113,9 @@ namespace ddcontact
                     const double                 mu);
 
     /** Store the solution @p x of the collocation system and the contact
-     * element-end tractions @p contact_values (4 per contact element,
-     * scaled by mu) on the nodes and element ends. */
+     * element-end tractions @p contact_values
+     * (contact_values_per_element() per contact element, scaled by mu) on
+     * the nodes and element ends. */
     void
     set_solution(const Vector<double> &x, const Vector<double> &contact_values);
 
@@ -110,6 +124,39 @@ namespace ddcontact
     scaled(const Point<2> &x) const
     {
       return Point<2>((x - reference_center) / reference_length);
+    }
+
+    /** Polynomial degree of the elements (1 or 2), that of the FEM body. */
+    unsigned int
+    degree() const
+    {
+      return element_degree;
+    }
+
+    /** Nodes per element: degree() + 1. */
+    unsigned int
+    n_element_nodes() const
+    {
+      return element_degree + 1;
+    }
+
+    /** Contact traction values per contact element: two components at each
+     * element node. */
+    unsigned int
+    contact_values_per_element() const
+    {
+      return 2 * n_element_nodes();
+    }
+
+    /** The values at local coordinate @p s of the shape functions of the
+     * element nodes (start, end, midpoint): (1 - s, s) for degree 1, the
+     * quadratic Lagrange polynomials for degree 2. */
+    std::array<double, 3>
+    shape_values(const double s) const
+    {
+      if (element_degree == 1)
+        return {{1. - s, s, 0.}};
+      return {{(1. - s) * (1. - 2. * s), s * (2. * s - 1.), 4. * s * (1. - s)}};
     }
 
     /** Length scale L_ref (bounding-box diagonal of the boundary). */
@@ -170,8 +217,9 @@ namespace ddcontact
     void
     find_rigid_modes();
 
-    double   reference_length = 1;
-    Point<2> reference_center;
+    unsigned int element_degree   = 1;
+    double       reference_length = 1;
+    Point<2>     reference_center;
 
     std::vector<Node>             nodes;
     std::vector<Element>          elements;
