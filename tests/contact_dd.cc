@@ -207,11 +207,13 @@ main(int argc, char **argv)
   }
 
   // 5. Augmented Lagrangian: the penetration falls below 1e-3 of the
-  //    approach Delta without changing theta.
+  //    approach Delta without changing theta. (Pointwise contact on these
+  //    non-matching meshes stops at 9.7e-4: a tolerance below that ends
+  //    "stalled", see tests/dd_newton.cc.)
   {
     const auto   sim = run(source_dir,
                          {"Domain decomposition/Augmented Lagrangian=true",
-                            "Domain decomposition/AL tolerance=2e-4"});
+                            "Domain decomposition/AL tolerance=1e-3"});
     const double p   = sim->get_dd_solver().contact_state(0).max_penetration;
     std::cout << "augmented Lagrangian: penetration " << p << " = "
               << p / 1.366e-3 << " of the approach, after "

@@ -71,9 +71,25 @@ namespace ddcontact
     if (!parameters.augmented_lagrangian || parameters.exact_contact())
       return "";
     const double ratio = problem.penetration(problem.current_iterate()).second;
-    if (ratio <= parameters.al_tolerance || mesh_limited)
+    if (ratio <= parameters.al_tolerance)
       return "";
     std::ostringstream s;
+    if (mesh_limited)
+    {
+      // Pointwise conditions at the contact points of non-matching meshes
+      // cannot all hold: the tolerance is out of reach on this mesh.
+      s << std::setprecision(3)
+        << "the augmented Lagrangian stopped with a penetration of " << ratio
+        << " of the approach, above Domain decomposition/AL tolerance = "
+        << parameters.al_tolerance
+        << ": the penetration no longer decreases (the limit of pointwise "
+           "contact on non-matching zone meshes); results are written with "
+           "status \"stalled\". For exact contact use Domain "
+           "decomposition/Solver = dd-newton (multipliers on the nodes of "
+           "S_1), or raise AL tolerance above "
+        << ratio;
+      return s.str();
+    }
     s << std::setprecision(3)
       << "the augmented Lagrangian stopped with a penetration of " << ratio
       << " of the approach, above Domain decomposition/AL tolerance = "

@@ -49,10 +49,11 @@ namespace ddcontact
     bool
     update(ContactProblem &problem);
 
-    /** Empty when the loop is off, met its tolerance on the current
-     * iterate, or stopped at the limit of non-matching meshes; otherwise
-     * the one-line message that says how far it is off and what to change
-     * (the run must not say "converged"). */
+    /** Empty when the loop is off (or exact contact is solved directly)
+     * or met its tolerance on the current iterate; otherwise the one-line
+     * message that says how far it is off and what to change, also when
+     * it stopped at the limit of non-matching meshes (the run must not say
+     * "converged"). */
     std::string
     shortfall(const ContactProblem &problem) const;
 
