@@ -132,6 +132,11 @@ unset DDCONTACT_GMSH_TIMEOUT
 
 mpi_case_ "distributed mesh for a body on one process" "Parallel/Mesh" "$base" --set "Parallel/Mesh=distributed"
 
+# Per-component mixed conditions: an id may be Dirichlet in one component and
+# loaded in the other, but no component is given twice.
+case_ "Neumann on a Dirichlet component" "Body lower/Neumann: boundary id 2 has a Dirichlet condition on y" "$base" --set "Body lower/Boundary conditions/Neumann=2: 0; -p"
+case_ "roller with a load in the fixed direction" "Body lower/Neumann: boundary id 3 has a Dirichlet condition on x" "$base" --set "Body lower/Boundary conditions/Dirichlet=2: xy: 0; 0 | 3: x: 0; 0" --set "Body lower/Boundary conditions/Neumann=3: p; -p"
+
 total=$(( $(grep -c -E '^(mpi_)?case_ ' "$0") + 2 ))  # and two checks of outputs
 echo "$((total - failures)) passed, $failures failed"
 [ $failures -eq 0 ]

@@ -183,7 +183,9 @@ main(int argc, char **argv)
   check_refused("Neumann", "1: -p*x", {"2 expression(s)"});
   check_refused("Neumann", "1: 0; -p*", {"cannot parse", "0; -p*"});
   check_refused(
-    "Neumann", "2: 0; 1", {"boundary id 2 already has a boundary condition"});
+    "Neumann",
+    "2: 0; 1",
+    {"boundary id 2 has a Dirichlet condition on y", "must be 0, not '1'"});
   check_refused("Neumann",
                 "1: 0; 0 | 1: 0; 1",
                 {"boundary id 1 already has a boundary condition"});

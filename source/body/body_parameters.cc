@@ -24,6 +24,53 @@ namespace ddcontact
                       {"direct", BodySolverType::direct},
                       {"cg-amg", BodySolverType::cg_amg})
 
+  namespace
+  {
+    /**
+     * An id may hold a Dirichlet condition on some components and a
+     * traction on the others (a roller with a load): every component is
+     * either a displacement (5) or a traction (6), never both. The
+     * traction's expression for a component that Dirichlet prescribes
+     * must therefore be the number 0 (its reaction is unknown); anything
+     * else gives that component twice.
+     */
+    void
+    check_mixed_condition(const BoundaryConditions<2> &bc,
+                          const types::boundary_id     id,
+                          const std::string           &expression,
+                          const std::string           &what)
+    {
+      const auto dirichlet = bc.dirichlet.find(id);
+      if (dirichlet == bc.dirichlet.end())
+        return;
+      const auto parts = Utilities::split_string_list(expression, ';');
+      for (unsigned int c = 0; c < 2; ++c)
+      {
+        if (!dirichlet->second.mask[c])
+          continue;
+        const auto   text  = Utilities::trim(parts[c]);
+        std::size_t  end   = 0;
+        const double value = [&]
+        {
+          try
+          {
+            return std::stod(text, &end);
+          }
+          catch (...)
+          {
+            return 1.;
+          }
+        }();
+        if (end != text.size() || value != 0)
+          throw InputError(
+            what + ": boundary id " + std::to_string(id) + " has a Dirichlet " +
+            "condition on " + (c == 0 ? "x" : "y") + ", so its traction's " +
+            (c == 0 ? "x" : "y") + " component must be 0, not '" + text +
+            "' (a component is either displaced or loaded)");
+      }
+    }
+  } // namespace
+
   BoundaryConditions<2>
   make_boundary_conditions(const BodyParameters &body,
                            const Constants      &constants)
@@ -62,10 +109,12 @@ namespace ddcontact
       if (c1 == std::string::npos)
         throw InputError(what + ": '" + item + "' is not 'id: expr_x; expr_y'");
       const auto id = parse_boundary_id(item.substr(0, c1), what);
-      if (bc.neumann.count(id) || bc.dirichlet.count(id))
+      if (bc.neumann.count(id))
         throw InputError(what + ": boundary id " + std::to_string(id) +
                          " already has a boundary condition");
-      bc.neumann[id] = make_function(item.substr(c1 + 1), 2, constants, what);
+      const auto expression = item.substr(c1 + 1);
+      bc.neumann[id]        = make_function(expression, 2, constants, what);
+      check_mixed_condition(bc, id, expression, what);
     }
 
     for (const auto &item : split(body.contact_ids, ','))
@@ -197,13 +246,20 @@ namespace ddcontact
                         "Prescribed displacements (5) (Gamma_u): 'id: "
                         "components: expr_x; expr_y | id: ...' with "
                         "components x, y or xy; expressions in x, y and the "
-                        "scene's constants [length].");
+                        "scene's constants [length]. A component not listed "
+                        "may be loaded by a Neumann traction on the same "
+                        "id.");
       prm.declare_entry("Neumann",
                         "",
                         Patterns::Anything(),
                         "Prescribed tractions p (6) (Gamma_p): 'id: expr_x; "
                         "expr_y | ...' [stress]. Ids with no condition are "
-                        "traction free.");
+                        "traction free. An id may also have a Dirichlet "
+                        "condition on one component (a roller with a load, "
+                        "e.g. Dirichlet '3: x: 0; 0' and Neumann '3: 0; "
+                        "-p'): the traction then loads the other component "
+                        "only, and its expression for the prescribed "
+                        "component must be 0.");
       prm.declare_entry("Contact ids",
                         "",
                         Patterns::List(Patterns::Integer(0, 254)),

@@ -278,11 +278,19 @@ namespace ddcontact
       std::vector<Vector<double>> traction(fe_face.n_quadrature_points,
                                            Vector<double>(dim));
       it->second->vector_value_list(fe_face.get_quadrature_points(), traction);
+      // On an id that is also Dirichlet (a roller with a load) the traction
+      // loads only the free components; the prescribed ones carry the
+      // unknown reaction.
+      const auto dirichlet =
+        boundary_conditions.dirichlet.find(cell->face(face_no)->boundary_id());
       auto &cell_rhs = copy.vectors[0];
       for (const unsigned int q : fe_face.quadrature_point_indices())
         for (unsigned int i = 0; i < fe_face.dofs_per_cell; ++i)
         {
           const unsigned int c = fe->system_to_component_index(i).first;
+          if (dirichlet != boundary_conditions.dirichlet.end() &&
+              dirichlet->second.mask[c])
+            continue;
           cell_rhs(i) +=
             fe_face.shape_value(i, q) * traction[q](c) * fe_face.JxW(q);
         }

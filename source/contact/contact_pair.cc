@@ -5,6 +5,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <ddcontact/contact/contact_pair.h>
+#include <ddcontact/contact/segment_search.h>
 
 #include <algorithm>
 #include <array>
@@ -321,14 +322,13 @@ namespace ddcontact
                        "' has no face with boundary id " +
                        std::to_string(parameters.boundary_id_2));
 
-    // Vertices of S_2: their projections split the faces of S_1.
-    std::vector<Point<2>> vertices_2;
+    // The R-trees of S_2 (O(n log n) in all): its vertices, whose
+    // projections split the faces of S_1, and its closest points.
+    std::vector<std::array<Point<2>, 2>> segments_2;
     for (const auto &f : faces_2)
-    {
-      vertices_2.push_back(f.a);
-      vertices_2.push_back(f.b);
-    }
-    const auto ends_2 = zone_ends(faces_2);
+      segments_2.push_back({{f.a, f.b}});
+    const SegmentSearch search_2(segments_2);
+    const auto          ends_2 = zone_ends(faces_2);
 
     const QGauss<1> gauss(parameters.n_gauss);
     contact_points.clear();
@@ -343,7 +343,7 @@ namespace ddcontact
       const Tensor<1, 2>  t      = face.b - face.a;
       const double        length = t.norm();
       std::vector<double> breaks = {0., 1.};
-      for (const auto &v : vertices_2)
+      for (const auto &v : search_2.end_points_over(face.a, face.b))
       {
         const double s = (v - face.a) * t / (length * length);
         if (s > 1e-10 && s < 1. - 1e-10)
@@ -383,22 +383,8 @@ namespace ddcontact
           p.face   = zone_1.size() - 1;
 
           // Orthogonal projection P(x) on S_2: the closest point.
-          double          best  = std::numeric_limits<double>::max();
-          const ZoneFace *owner = nullptr;
-          for (const auto &f : faces_2)
-          {
-            const Tensor<1, 2> d = f.b - f.a;
-            const double       r =
-              std::clamp((p.x - f.a) * d / d.norm_square(), 0., 1.);
-            const Point<2> candidate = f.a + r * d;
-            const double   distance  = candidate.distance(p.x);
-            if (distance < best)
-            {
-              best         = distance;
-              owner        = &f;
-              p.projection = candidate;
-            }
-          }
+          const auto [owner, projection] = search_2.closest_point(p.x);
+          p.projection                   = projection;
           // A point beyond an end of S_2 has no partner on S_2 and cannot
           // touch it: the closest point would be that end, and the point
           // would be pressed against the end's displacement (a zone S_1
@@ -413,7 +399,7 @@ namespace ddcontact
                              "on the whole zone");
           if (!body_2.is_mesh_distributed())
             shapes_2.push_back(
-              point_shapes_at(body_2, owner->cell, {p.projection})[0]);
+              point_shapes_at(body_2, faces_2[owner].cell, {p.projection})[0]);
           xs.push_back(p.x);
           contact_points.push_back(p);
         }

@@ -33,6 +33,12 @@ namespace ddcontact
    * The boundary description of one body, keyed by boundary id: Gamma_u
    * (Dirichlet, (5)), Gamma_p (Neumann tractions p, (6)) and the ids that
    * form the possible contact zone S. Ids not listed are traction free.
+   *
+   * An id may be in both dirichlet and neumann (a roller with a load): the
+   * components of its Dirichlet mask are prescribed displacements, the
+   * others are loaded by the traction, whose prescribed components are
+   * ignored (make_boundary_conditions() requires them to be written 0).
+   * A contact id has no other condition.
    */
   template <int dim>
   struct BoundaryConditions
