@@ -33,16 +33,16 @@ namespace ddcontact
     for (const auto *pair : pairs)
     {
       laws.emplace_back(*pair);
-      laws.back().set_exact(exact_contact);
+      laws.back().set_solver_pressure(solver_pressure);
     }
   }
 
   void
-  ContactProblem::set_exact_contact(const bool exact)
+  ContactProblem::set_pressure_from_solver(const bool from_solver)
   {
-    exact_contact = exact;
+    solver_pressure = from_solver;
     for (auto &law : laws)
-      law.set_exact(exact);
+      law.set_solver_pressure(from_solver);
   }
 
   ContactProblem::Iterate

@@ -7,9 +7,11 @@
 namespace ddcontact
 {
   ContactInterface::ContactInterface(const ContactProblem &problem,
+                                     const bool            on_nodes,
                                      const bool            exact_contact)
     : problem(problem)
-    , nodal(exact_contact)
+    , nodal(on_nodes)
+    , exact(exact_contact)
   {
   }
 
@@ -35,7 +37,7 @@ namespace ddcontact
         }
 
       // Exact contact has no penalty: theta = 0 in (Theta + S) p = d_0.
-      const double theta = nodal ? 0. : pairs[k]->penalty();
+      const double theta = exact ? 0. : pairs[k]->penalty();
       const double c     = surface_compliance(pairs[k]->get_body_1()) +
                        surface_compliance(pairs[k]->get_body_2());
       for (unsigned int i = first; i < point_shares.size(); ++i)

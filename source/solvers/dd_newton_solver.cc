@@ -52,7 +52,7 @@ namespace ddcontact
   void
   DDNewtonSolver::initialize()
   {
-    problem.set_exact_contact(parameters.exact_contact());
+    problem.set_pressure_from_solver(parameters.multipliers_on_nodes());
     ContactSolver::initialize();
     interface.reinit();
     p.assign(interface.size(), 0.);
@@ -332,8 +332,11 @@ namespace ddcontact
            "Max iterations";
       throw NotConvergedError(s.str());
     }
-    s << ": the active set does not settle; raise " << penalty_entries()
-      << ", or use Domain decomposition/Solver = monolithic";
+    s << ": the active set does not settle; raise " << penalty_entries();
+    if (!interface.on_nodes())
+      s << ", or set Domain decomposition/Contact pressure = nodes (one "
+           "pressure per node of S_1, for stiff penalties)";
+    s << ", or use Domain decomposition/Solver = monolithic";
     throw DivergenceError(s.str());
   }
 } // namespace ddcontact

@@ -111,6 +111,17 @@ namespace ddcontact
                       "Iteration limit of the monolithic Newton solver "
                       "and of the Newton steps of dd-newton on one mesh "
                       "and multiplier.");
+    prm.declare_entry(
+      "Contact pressure",
+      "points",
+      Patterns::Selection("points|nodes"),
+      "The discrete contact pressure of Solver = dd-newton with the penalty: "
+      "'points', a value at every contact point, the law (20) pointwise as "
+      "the paper and the other solvers; 'nodes', one value per node of S_1 "
+      "(piecewise linear), the law (20) for the gap averaged with the hat "
+      "functions, whose Newton iteration converges also for stiff penalties "
+      "(c <= 1e-4). Exact contact (Augmented Lagrangian = true) always uses "
+      "nodes.");
   }
 
   void
@@ -130,6 +141,11 @@ namespace ddcontact
     al_max_updates        = prm.get_integer("AL max updates");
     write_every_iteration = prm.get_bool("Write every iteration");
     n_newton              = prm.get_integer("Max Newton iterations");
+    pressure_on_nodes     = (prm.get("Contact pressure") == "nodes");
+    if (pressure_on_nodes && solver != ContactSolverType::dd_newton)
+      throw InputError("Domain decomposition/Contact pressure = nodes needs "
+                       "Solver = dd-newton (the other solvers take the "
+                       "pressure at the contact points)");
     if (!(gamma > 0. && gamma <= 1.))
       throw InputError("Domain decomposition/Gamma: " + prm.get("Gamma") +
                        " must lie in (0, 1]");

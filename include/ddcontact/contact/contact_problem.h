@@ -87,10 +87,11 @@ namespace ddcontact
     void
     reset_laws();
 
-    /** Exact contact solved directly (PenaltyLaw::set_exact()), for the
-     * laws of reset_laws() on. */
+    /** The pressure is the solver's nodal multiplier
+     * (PenaltyLaw::set_solver_pressure()), for the laws of reset_laws()
+     * on. */
     void
-    set_exact_contact(bool exact);
+    set_pressure_from_solver(bool from_solver);
 
     /** The bodies' current solutions. */
     Iterate
@@ -143,7 +144,7 @@ namespace ddcontact
     std::vector<ContactPair *>    pairs;
     const BodyDistribution       &distribution;
     std::vector<PenaltyLaw>       laws;
-    bool                          exact_contact = false;
+    bool                          solver_pressure = false;
   };
 } // namespace ddcontact
 

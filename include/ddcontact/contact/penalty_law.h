@@ -29,11 +29,12 @@ namespace ddcontact
    * the law is written; the solvers ask it for pressures, and the Newton
    * solver for the gap that lambda shifts.
    *
-   * For exact contact solved directly (DDParameters::exact_contact()) the
-   * law is the complementarity of the multiplier and the weak gap, which
-   * does not give the pressure pointwise from g: lambda is then the
-   * pressure itself, set by the solver (set_contact_pressure()), and the
-   * gap is not shifted.
+   * When dd-newton takes the pressure on the nodes of S_1
+   * (DDParameters::multipliers_on_nodes(): exact contact, or the penalty
+   * for the averaged gap) the law holds node by node for the gap averaged
+   * with the hat functions, which does not give the pressure pointwise
+   * from g: lambda is then the pressure itself, set by the solver
+   * (set_contact_pressure()), and the gap is not shifted.
    */
   class PenaltyLaw
   {
@@ -57,21 +58,15 @@ namespace ddcontact
       return pair.penalty();
     }
 
-    /** Exact contact: the pressure is the solver's multiplier. */
+    /** The pressure is the solver's (nodal) multiplier. */
     void
-    set_exact(const bool exact_contact)
+    set_solver_pressure(const bool solver_pressure)
     {
-      exact = exact_contact;
+      exact = solver_pressure;
     }
 
-    bool
-    is_exact() const
-    {
-      return exact;
-    }
-
-    /** (20) at point @p q for the gap function value @p g (exact contact:
-     * the multiplier). */
+    /** (20) at point @p q for the gap function value @p g (the solver's
+     * pressure with set_solver_pressure()). */
     double
     pressure(const unsigned int q, const double g) const
     {
@@ -101,7 +96,8 @@ namespace ddcontact
       return lambda;
     }
 
-    /** Exact contact: the normal stress sigma_n = -p at the points, and
+    /** The solver's pressure: the normal stress sigma_n = -p at the
+     * points, and
      * the largest nodal value of p (the peak of the piecewise linear
      * pressure, at a node, which the points between the nodes miss). */
     void
@@ -118,7 +114,7 @@ namespace ddcontact
     const ContactPair    &pair;
     std::vector<double>   lambda;
     std::vector<Point<2>> lambda_points; // where lambda lives
-    bool                  exact = false;
+    bool                  exact = false; // the solver's pressure
     double                peak  = 0;
   };
 } // namespace ddcontact

@@ -23,7 +23,8 @@ namespace ddcontact
    *
    * - **points** (the penalty (20), as the paper and the other solvers):
    *   one value at every contact point of ContactPair;
-   * - **nodes** (exact contact, DDParameters::exact_contact()): one
+   * - **nodes** (exact contact, or Contact pressure = nodes,
+   *   DDParameters::multipliers_on_nodes()): one
    *   multiplier per vertex of the faces of S_1, the pressure
    *   p(x) = sum_i p_i psi_i(x) piecewise linear (psi_i the hat functions
    *   of the zone mesh of body 1), and the contact condition tested with
@@ -55,9 +56,11 @@ namespace ddcontact
   class ContactInterface
   {
   public:
-    /** With @p exact_contact, the nodal space with theta = 0; otherwise
-     * the points with the pairs' penalties. */
-    ContactInterface(const ContactProblem &problem, bool exact_contact);
+    /** With @p on_nodes the nodal space, otherwise the points; theta = 0
+     * with @p exact_contact, otherwise the pairs' penalties. */
+    ContactInterface(const ContactProblem &problem,
+                     bool                  on_nodes,
+                     bool                  exact_contact);
 
     /** The share psi_i(x_q) of point @p point of pair @p pair in an
      * unknown. */
@@ -179,7 +182,7 @@ namespace ddcontact
     add_nodes(unsigned int k);
 
     const ContactProblem                &problem;
-    const bool                           nodal;
+    const bool                           nodal, exact;
     PointVector                          weights, thetas, scales;
     std::vector<Point<2>>                points;
     std::vector<std::vector<PointShare>> point_shares;

@@ -128,7 +128,7 @@ namespace ddcontact
     store_iterate();
 
     ContactInterface interface {
-      problem, parameters.exact_contact()
+      problem, parameters.multipliers_on_nodes(), parameters.exact_contact()
     };
     RobinPreconditioner preconditioner{problem};
     bool                mesh_ready  = false; // interface, u_0, S p

@@ -78,6 +78,7 @@ namespace ddcontact
     bool              write_every_iteration = false;
     bool              print_every_iteration = false; // Output/Verbosity = full
     unsigned int      n_newton              = 50;
+    bool              pressure_on_nodes     = false; // Contact pressure
 
     /** Exact contact (theta = 0) solved directly by dd-newton with one
      * multiplier per node of S_1 (ContactInterface); the other solvers
@@ -86,6 +87,15 @@ namespace ddcontact
     exact_contact() const
     {
       return augmented_lagrangian && solver == ContactSolverType::dd_newton;
+    }
+
+    /** dd-newton's unknowns are one pressure per node of S_1: for exact
+     * contact, and for the penalty with Contact pressure = nodes. */
+    bool
+    multipliers_on_nodes() const
+    {
+      return exact_contact() ||
+             (pressure_on_nodes && solver == ContactSolverType::dd_newton);
     }
 
     static void
