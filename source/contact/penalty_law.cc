@@ -68,7 +68,7 @@ namespace ddcontact
   PenaltyLaw::set_contact_pressure(const std::vector<double> &sigma_n,
                                    const double               peak_pressure)
   {
-    Assert(exact, ExcMessage("only with set_solver_pressure()"));
+    Assert(from_solver, ExcMessage("only with set_solver_pressure()"));
     set_multipliers(sigma_n);
     peak = peak_pressure;
   }

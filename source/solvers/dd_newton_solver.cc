@@ -81,7 +81,6 @@ namespace ddcontact
   void
   DDNewtonSolver::setup_mesh()
   {
-    interface.reinit();
     AssertDimension(p.size(), interface.size());
     preconditioner.setup(interface);
     problem.solve_all(ContactProblem::Iterate(problem.get_bodies().size()),

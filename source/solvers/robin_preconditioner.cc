@@ -11,6 +11,15 @@ namespace ddcontact
   {
   }
 
+  double
+  RobinPreconditioner::penalty(const unsigned int i) const
+  {
+    // Exact contact has theta = 0: the springs take 1e-3 of the compliance.
+    return (interface->penalty(i) > 0)
+             ? interface->penalty(i)
+             : 1e-3 * interface->complementarity_scale(i);
+  }
+
   RobinPreconditioner::Row
   RobinPreconditioner::make_row(const unsigned int i,
                                 const bool         body_1,
@@ -19,10 +28,7 @@ namespace ddcontact
     const auto  &shares = interface->shares(i);
     const auto  &pair   = *problem.get_pairs()[shares[0].pair];
     const double m      = interface->weight(i);
-    // Exact contact has theta = 0: the springs take 1e-3 of the compliance.
-    const double theta = (interface->penalty(i) > 0)
-                           ? interface->penalty(i)
-                           : 1e-3 * interface->complementarity_scale(i);
+    const double theta  = penalty(i);
     Row          row;
     row.unknown = i;
     row.spring  = m / (alpha * theta);
@@ -217,8 +223,6 @@ namespace ddcontact
           for (unsigned int i = 0; i < row.dofs.size(); ++i)
             z[row.unknown] -= row.c[i] * v[b](row.dofs[i]);
     for (unsigned int q = 0; q < r.size(); ++q)
-      z[q] /= (interface->penalty(q) > 0)
-                ? interface->penalty(q)
-                : 1e-3 * interface->complementarity_scale(q);
+      z[q] /= penalty(q);
   }
 } // namespace ddcontact

@@ -62,7 +62,7 @@ namespace ddcontact
     void
     set_solver_pressure(const bool solver_pressure)
     {
-      exact = solver_pressure;
+      from_solver = solver_pressure;
     }
 
     /** (20) at point @p q for the gap function value @p g (the solver's
@@ -70,7 +70,7 @@ namespace ddcontact
     double
     pressure(const unsigned int q, const double g) const
     {
-      return exact ? lambda[q] : std::min(0., lambda[q] + g / theta());
+      return from_solver ? lambda[q] : std::min(0., lambda[q] + g / theta());
     }
 
     /** (20) at every point. */
@@ -83,7 +83,7 @@ namespace ddcontact
     double
     shifted_gap(const unsigned int q) const
     {
-      return pair.points()[q].gap + (exact ? 0. : theta() * lambda[q]);
+      return pair.points()[q].gap + (from_solver ? 0. : theta() * lambda[q]);
     }
 
     /** The Uzawa update lambda <- sigma_n (the converged pressure). */
@@ -113,9 +113,9 @@ namespace ddcontact
   private:
     const ContactPair    &pair;
     std::vector<double>   lambda;
-    std::vector<Point<2>> lambda_points; // where lambda lives
-    bool                  exact = false; // the solver's pressure
-    double                peak  = 0;
+    std::vector<Point<2>> lambda_points;       // where lambda lives
+    bool                  from_solver = false; // the solver's pressure
+    double                peak        = 0;
   };
 } // namespace ddcontact
 

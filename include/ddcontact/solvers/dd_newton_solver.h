@@ -100,8 +100,9 @@ namespace ddcontact
     void
     start_phase() override;
 
-    /** For new meshes: the interface, the preconditioner, the bodies
-     * without contact load u_0 (one set of solves), and S p for the
+    /** For new meshes, once the interface has been set up for them
+     * (initialize(), reinit_after_refinement()): the preconditioner, the
+     * bodies without contact load u_0 (one set of solves), and S p for the
      * transferred pressure. */
     void
     setup_mesh();

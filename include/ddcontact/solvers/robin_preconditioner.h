@@ -119,6 +119,11 @@ namespace ddcontact
       SparseDirectUMFPACK  direct;
     };
 
+    /** The theta of unknown @p i in the preconditioner: the interface's,
+     * or 1e-3 of its compliance where that is 0 (exact contact). */
+    double
+    penalty(unsigned int i) const;
+
     /** The rows of unknown @p i on the side @p body_1 of its pair, with
      * the share @p alpha of the pair's compliance. */
     Row
