@@ -9,16 +9,24 @@ that the quick mode runs on any python3, without numpy or matplotlib).
       in the penalty c -> 0 of the h-extrapolated values at c = 0.05, 0.025,
       0.0125.
 
+  error_vs_time_eval.py energy-reference RUNS REF_JSON
+      Replaces the energy F of the penalised problem in REF_JSON by the limit
+      of the nested adaptive degree-2 runs p2_adaptive_c<n>/ (Aitken's
+      extrapolation along the sequence), checked against the uniform value.
+
   error_vs_time_eval.py floor RUNS OUT_CSV
       Collects the single-body runs floor_<celltype>_p<deg>_r<r>/ into a table
       of (cell type, degree, dofs, setup + solve time).
 
-  error_vs_time_eval.py evaluate MANIFEST RUNS REF_JSON REF_PROFILE FLOOR_CSV OUT_CSV
+  error_vs_time_eval.py evaluate MANIFEST RUNS REF_JSON REF_PROFILE FLOOR_CSV OUT_CSV [TARGETS_MD]
       One row per run of the manifest (name, series, problem, omega1 degree,
-      omega2 degree, setting): time, unknowns, the six relative errors against
-      the reference of the problem the run solves, and the ratio of the run's
-      wall time to the floor. Exit status 1 if a run has no summary, did not
-      converge, or an error is not finite.
+      omega2 degree, setting): time (the median over the run's repeats
+      NAME.rep<k>/), unknowns, the relative errors against the reference of
+      the problem the run solves, the estimator's effectivity, and the ratio
+      of the run's wall time to the floor; TARGETS_MD gets the table of the
+      targets of doc/error-vs-time.md. Exit status 1 if a run has no
+      summary, did not converge, its repeats disagree, or an error is not
+      finite.
 
 doc/error-vs-time.md explains the measures.
 """
@@ -179,6 +187,79 @@ def make_reference(runs, out_json, out_profile):
             print("  %-13s %.9g +- %.2g" % (k, r["value"], r["uncertainty"]))
 
 
+def aitken(f0, f1, f2):
+    """The limit of a geometrically converging sequence from three terms."""
+    d1, d2 = f1 - f0, f2 - f1
+    if d1 == 0 or d2 == 0 or d2 / d1 >= 1:
+        return f2
+    r = d2 / d1
+    return f2 + d2 * r / (1 - r)
+
+
+def make_energy_reference(runs, ref_json):
+    """F of the penalised problem from the nested adaptive degree-2 runs:
+    along the sequence F_h - F ~ N^-2 (the estimator's optimal rate), the
+    successive changes shrink by a nearly constant factor (~0.5), so
+    Aitken's Delta^2 of the last three runs is the limit; the uncertainty
+    is the largest change of that extrapolation over the last three triples.
+    The uniform degree-2 value must agree within the two uncertainties."""
+    with open(ref_json) as f:
+        ref = json.load(f)
+    names = sorted((d for d in os.listdir(runs)
+                    if d.startswith("p2_adaptive_c") and
+                    os.path.isdir(os.path.join(runs, d))),
+                   key=lambda d: int(d[len("p2_adaptive_c"):]))
+    seq = []
+    for d in names:
+        q = quantities(os.path.join(runs, d))[0]
+        s = read_summary(os.path.join(runs, d))
+        seq.append({"run": d, "dofs": sum(b["dofs"] for b in s["bodies"]),
+                    "F": q["F"], "E1": q["E1"], "E2": q["E2"],
+                    "estimate": s.get("relative_energy_error_estimate"),
+                    "wall_time_s": s["wall_time_s"]})
+    if len(seq) < 5:
+        print("energy-reference: need at least 5 adaptive runs, found %d" %
+              len(seq), file=sys.stderr)
+        return 1
+    F = [r["F"] for r in seq]
+    ext = [aitken(*F[i - 2:i + 1]) for i in range(2, len(F))]
+    value = ext[-1]
+    unc = max(abs(ext[-1] - ext[-2]), abs(ext[-2] - ext[-3]))
+    pen = ref["penalty"]
+    uniform = pen["F"].get("uniform_p2", {
+        "value": pen["F"]["value"], "uncertainty": pen["F"]["uncertainty"],
+        "observed_order": pen["F"].get("observed_order")})
+    # Effectivity of the FEM-BEM estimate along the sequence, against the
+    # relative energy-norm error of both bodies it estimates:
+    # ||e||_A / ||u||_A <= sqrt((F_h - F) / (E_1 + E_2)).
+    for r in seq:
+        exact = math.sqrt(max(r["F"] - value, 0.0) / (r["E1"] + r["E2"]))
+        r["effectivity"] = (r["estimate"] / exact
+                            if exact > 0 and r["estimate"] else None)
+    pen["F"] = {"value": value, "uncertainty": unc,
+                "method": "Aitken extrapolation of nested adaptive P2/Q2 "
+                          "(FEM-BEM, Doerfler 0.5) monolithic runs",
+                "uniform_p2": uniform, "sequence": seq}
+    with open(ref_json, "w") as f:
+        json.dump(ref, f, indent=2)
+        f.write("\n")
+    print("%-18s %9s %18s %10s %8s" % ("run", "dofs", "F", "estimate",
+                                        "effect."))
+    for r in seq:
+        print("%-18s %9d %18.13f %10.3e %8s" % (
+            r["run"], r["dofs"], r["F"], r["estimate"] or float("nan"),
+            "%.3f" % r["effectivity"] if r["effectivity"] else "-"))
+    res = math.sqrt(unc / pen["E2"]["value"])
+    print("F = %.13f +- %.2g (energy measure resolved to %.1e); uniform P2: "
+          "%.13f +- %.2g" % (value, unc, res, uniform["value"],
+                             uniform["uncertainty"]))
+    if abs(value - uniform["value"]) > unc + uniform["uncertainty"]:
+        print("energy-reference: the adaptive and uniform values disagree",
+              file=sys.stderr)
+        return 1
+    return 0
+
+
 # ---------------------------------------------------------------- floor
 def make_floor(runs, out_csv):
     rows = []
@@ -287,12 +368,15 @@ def relative(a, b):
 
 
 HEADER = ["name", "series", "problem", "setting", "status",
-          "wall_time_s", "floor_s", "time_over_floor", "dofs_omega1",
+          "wall_time_s", "repeats", "time_min_s", "time_max_s", "floor_s",
+          "time_over_floor", "dofs_omega1",
           "dofs_omega2", "dofs", "bem_unknowns", "cells_omega2",
           "dd_iterations", "uzawa_updates", "u1", "u2", "max_pressure",
           "half_width", "force", "E2", "F", "err_u", "err_u1", "err_u2",
           "err_max_pressure", "err_half_width", "err_force",
-          "err_pressure_L2", "err_energy", "err_u_vs_exact"]
+          "err_pressure_L2", "err_energy", "err_energy_both",
+          "estimate", "effectivity", "bem_s", "bem_over_floor",
+          "err_u_vs_exact"]
 
 
 def check(row, failures):
@@ -316,7 +400,7 @@ def hertz_row(name, series, setting, s, q, prof, d, failures):
     row.update({
         "name": name, "series": series, "problem": "hertz",
         "setting": setting, "status": s.get("status", "?"),
-        "wall_time_s": s["wall_time_s"], "dofs_omega1": dofs[0],
+        "dofs_omega1": dofs[0],
         "dofs_omega2": dofs[1], "dofs": dofs[0] + dofs[1],
         "cells_omega2": s["bodies"][1]["cells"],
         "dd_iterations": s.get("dd_iterations", 0),
@@ -326,11 +410,157 @@ def hertz_row(name, series, setting, s, q, prof, d, failures):
         "F": q["F"], "err_max_pressure": h["err_max_pressure"],
         "err_half_width": h["err_half_width"],
         "err_pressure_L2": h["err_pressure_L2"]})
+    row["wall_time_s"], row["repeats"], row["time_min_s"], \
+        row["time_max_s"] = repeated_timing(os.path.dirname(d), name, q,
+                                            failures)
     check(row, failures)
     return row
 
 
-def evaluate(manifest, runs, ref_json, ref_profile, floor_csv, out_csv):
+def reach(rows, level, measure="err_energy"):
+    """When a series reaches an error level: the first run (by median time)
+    from which every later run stays at or below it -- a lucky crossing
+    does not count -- and the time and unknowns interpolated log-log
+    between that run and the one before it. None if never."""
+    rows = sorted(rows, key=lambda r: r["wall_time_s"])
+    i = len(rows)
+    while i > 0 and rows[i - 1][measure] is not None and \
+            rows[i - 1][measure] <= level:
+        i -= 1
+    if i == len(rows):
+        return None
+    hit = rows[i]
+    t, n = hit["wall_time_s"], hit["dofs"]
+    if i > 0:
+        a = rows[i - 1]
+        s = math.log(level / a[measure]) / math.log(hit[measure] / a[measure])
+        t = a["wall_time_s"] * (hit["wall_time_s"] / a["wall_time_s"]) ** s
+        n = a["dofs"] * (hit["dofs"] / a["dofs"]) ** s
+    return {"run": hit["name"], "time": hit["wall_time_s"],
+            "dofs": hit["dofs"], "time_interp": t, "dofs_interp": n}
+
+
+# The targets of the benchmark (doc/error-vs-time.md): which series are
+# compared at which energy-norm level.
+TARGETS = [
+    ("degree 1, 1 %", 1e-2, ["fembem-scaled-combined-doerfler-P1",
+                             "fembem-scaled-nested-doerfler-P1"],
+     "uniform-", "-P1", "kelly-"),
+    ("degree 2, 0.1 %", 1e-3, ["fembem-scaled-combined-doerfler-P2",
+                               "fembem-scaled-nested-doerfler-P2"],
+     "uniform-", "-P2", None),
+]
+
+
+def write_targets(out, path):
+    """Time and unknowns at which each penalty series reaches 1 % and 0.1 %
+    energy-norm error, and the factors the targets ask for."""
+    series = {}
+    for r in out:
+        if r["problem"] == "penalty":
+            series.setdefault(r["series"], []).append(r)
+    lines = ["| series | level | first run there | median time [s] | dofs "
+             "| interpolated time [s] | interpolated dofs |",
+             "| --- | ---: | --- | ---: | ---: | ---: | ---: |"]
+    hits = {}
+    for level in (1e-2, 1e-3):
+        for name in sorted(series):
+            h = reach(series[name], level)
+            hits[(name, level)] = h
+            if h:
+                lines.append("| %s | %g | %s | %.3g | %d | %.3g | %.0f |" % (
+                    name, level, h["run"], h["time"], h["dofs"],
+                    h["time_interp"], h["dofs_interp"]))
+            else:
+                lines.append("| %s | %g | not reached | | | | |" % (name,
+                                                                  level))
+    lines += ["", "| target | adaptive series | time [s] | best uniform "
+              "(same degree) | time [s] | uniform / adaptive (first run; "
+              "interpolated) | dofs: uniform / adaptive | Kelly | time [s] "
+              "| adaptive / Kelly |",
+              "| --- | --- | ---: | --- | ---: | ---: | ---: | --- | ---: "
+              "| ---: |"]
+
+    def best(prefix, suffix, level):
+        c = [(hits[(n, level)]["time"], n) for n in series
+             if n.startswith(prefix) and n.endswith(suffix)
+             and hits.get((n, level))]
+        return min(c) if c else None
+
+    for label, level, adaptive, uprefix, suffix, kprefix in TARGETS:
+        u = best(uprefix, suffix, level)
+        k = best(kprefix, suffix, level) if kprefix else None
+        for name in adaptive:
+            h = hits.get((name, level))
+            if not h:
+                lines.append("| %s | %s | not reached | | | | | | | |" % (
+                    label, name))
+                continue
+            cells = [label, name, "%.3g" % h["time"]]
+            if u:
+                hu = hits[(u[1], level)]
+                cells += [u[1], "%.3g" % hu["time"], "%.2f; %.2f" % (
+                    hu["time"] / h["time"],
+                    hu["time_interp"] / h["time_interp"]),
+                    "%.1f" % (hu["dofs"] / h["dofs"])]
+            else:
+                cells += ["not reached", "", "", ""]
+            if k:
+                cells += [k[1], "%.3g" % k[0], "%.2f" % (h["time"] / k[0])]
+            else:
+                cells += ["-", "", ""]
+            lines.append("| " + " | ".join(cells) + " |")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+def bem_cost(run_dir, summary, curves, degrees):
+    """The run's BEM time (assembly and factorization, solves, interior
+    stresses) and its ratio to the floor summed over the meshes the BEM
+    checked (one factorization + solve of each body per estimated cycle of
+    statistics.csv): the target "the BEM costs no more than the FEM
+    factorization and solve it checks"."""
+    t = summary["timings"]
+    bem = sum(v for k, v in t.items() if k.startswith("BEM"))
+    path = os.path.join(run_dir, "statistics.csv")
+    if bem == 0 or not os.path.isfile(path):
+        return None, None
+    fem = 0.0
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            if r.get("estimated") == "1":
+                fem += (floor_time(curves[("triangle", degrees[0])],
+                                   int(r["dofs_omega1"])) +
+                        floor_time(curves[("quadrilateral", degrees[1])],
+                                   int(r["dofs_omega2"])))
+    return bem, (bem / fem if fem > 0 else None)
+
+
+def repeated_timing(runs, name, q, failures):
+    """Median, minimum and maximum wall time over the run and its repeats
+    NAME.rep<k>; the repeats must give the same answer (the code is
+    deterministic for a fixed thread count)."""
+    times = [read_summary(os.path.join(runs, name))["wall_time_s"]]
+    k = 2
+    while os.path.isfile(os.path.join(runs, "%s.rep%d" % (name, k),
+                                      "summary.json")):
+        d = os.path.join(runs, "%s.rep%d" % (name, k))
+        times.append(read_summary(d)["wall_time_s"])
+        qk = quantities(d)[0]
+        if any(qk[x] != q[x] and relative(qk[x], q[x]) > 1e-12
+               for x in ("u1", "u2", "force", "E1", "E2")):
+            failures.append("%s: repeat %d gives another answer" % (name, k))
+        k += 1
+    times.sort()
+    n = len(times)
+    median = times[n // 2] if n % 2 else 0.5 * (times[n // 2 - 1] +
+                                               times[n // 2])
+    return median, n, times[0], times[-1]
+
+
+def evaluate(manifest, runs, ref_json, ref_profile, floor_csv, out_csv,
+             targets_md=None):
     with open(ref_json) as f:
         ref = json.load(f)
     profile = {"penalty": [], "exact": []}
@@ -377,14 +607,23 @@ def evaluate(manifest, runs, ref_json, ref_profile, floor_csv, out_csv):
         # data, so sqrt(|F_h - F| / E2) bounds the relative energy-norm error
         # of Omega_2 (||u_2||_{a_2}^2 = 2 E2).
         err_e = math.sqrt(abs(q["F"] - v["F"]) / v["E2"])
+        # The same bound relative to both bodies' energy norm, which the
+        # FEM-BEM estimate (relative_energy_error_estimate) estimates.
+        err_both = math.sqrt(abs(q["F"] - v["F"]) / (v["E1"] + v["E2"]))
+        estimate = s.get("relative_energy_error_estimate")
+        if not isinstance(estimate, float) or not math.isfinite(estimate):
+            estimate = None
+        wall, repeats, tmin, tmax = repeated_timing(runs, name, q, failures)
+        bem, bem_ratio = bem_cost(d, s, curves, (int(deg1), int(deg2)))
         dofs = [b["dofs"] for b in s["bodies"]]
         floor = (floor_time(curves[("triangle", int(deg1))], dofs[0]) +
                  floor_time(curves[("quadrilateral", int(deg2))], dofs[1]))
         row = {
             "name": name, "series": series, "problem": problem,
             "setting": setting, "status": s.get("status", "?"),
-            "wall_time_s": s["wall_time_s"], "floor_s": floor,
-            "time_over_floor": s["wall_time_s"] / floor,
+            "wall_time_s": wall, "repeats": repeats, "time_min_s": tmin,
+            "time_max_s": tmax, "floor_s": floor,
+            "time_over_floor": wall / floor,
             "dofs_omega1": dofs[0], "dofs_omega2": dofs[1],
             "dofs": dofs[0] + dofs[1],
             "bem_unknowns": s.get("bem_unknowns", 0),
@@ -400,6 +639,10 @@ def evaluate(manifest, runs, ref_json, ref_profile, floor_csv, out_csv):
             "err_half_width": relative(q["half_width"], v["half_width"]),
             "err_force": relative(q["force"], v["force"]),
             "err_pressure_L2": err_p, "err_energy": err_e,
+            "err_energy_both": err_both if problem == "penalty" else None,
+            "estimate": estimate, "bem_s": bem, "bem_over_floor": bem_ratio,
+            "effectivity": (estimate / err_both if estimate and
+                            problem == "penalty" and err_both > 0 else None),
             "err_u_vs_exact": max(relative(q["u1"], ref["exact"]["u1"]["value"]),
                                   relative(q["u2"], ref["exact"]["u2"]["value"])),
         }
@@ -424,6 +667,8 @@ def evaluate(manifest, runs, ref_json, ref_profile, floor_csv, out_csv):
             f(r["err_half_width"], "%.2e"), f(r["err_force"], "%.2e"),
             f(r["err_pressure_L2"], "%.2e"), f(r["err_energy"], "%.2e"),
             r["dofs"]))
+    if targets_md:
+        write_targets(out, targets_md)
     if len(out) != len(entries) or failures:
         for m in failures:
             print("FAILED: " + m, file=sys.stderr)
@@ -435,9 +680,11 @@ if __name__ == "__main__":
     cmd = sys.argv[1] if len(sys.argv) > 1 else ""
     if cmd == "reference" and len(sys.argv) == 5:
         make_reference(*sys.argv[2:])
+    elif cmd == "energy-reference" and len(sys.argv) == 4:
+        sys.exit(make_energy_reference(*sys.argv[2:]))
     elif cmd == "floor" and len(sys.argv) == 4:
         make_floor(*sys.argv[2:])
-    elif cmd == "evaluate" and len(sys.argv) == 8:
+    elif cmd == "evaluate" and len(sys.argv) in (8, 9):
         sys.exit(evaluate(*sys.argv[2:]))
     else:
         print(__doc__, file=sys.stderr)
