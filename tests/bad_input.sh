@@ -97,7 +97,6 @@ case_ "Target error not a number" "Adaptation/Target error" "$paper" --set "Adap
 case_ "Target error with Kelly" "Adaptation/Target error" "$paper" --set "Adaptation/Target error=0.01" --set "Adaptation/Estimator=kelly" --set "Adaptation/Marking=fraction"
 case_ "degree 3" "Degree" "$paper" --set "Body omega2/Element/Degree=3"
 case_ "Contact pressure = nodes without dd-newton" "Domain decomposition/Contact pressure = nodes needs Solver = dd-newton" "$paper" --set "Domain decomposition/Contact pressure=nodes"
-case_ "Kelly on a triangle body" "Adaptation/Estimator: kelly cannot adapt body 'omega1'" "$paper" --set "Adaptation/Bodies=omega1, omega2" --set "Adaptation/Estimator=kelly" --set "Adaptation/Marking=fraction"
 case_ "gap NaN on part of S" "Contact pair S/Gap" "$paper" $flat --set "Contact pair S/Gap=sqrt(x)"
 case_ "gap overlap deeper than the bodies" "Contact pair S/Gap" "$paper" $flat --set "Contact pair S/Gap=-1e308"
 case_ "Neumann load NaN on part of the boundary" "Body lower/Boundary conditions/Neumann" "$base" --set "Body lower/Boundary conditions/Neumann=3: 0; sqrt(x)"

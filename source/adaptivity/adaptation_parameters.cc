@@ -60,7 +60,7 @@ namespace ddcontact
       "||sigma_B||/|Omega|; fem-bem-scaled: the same with square roots of "
       "the areas (local RMS stress error over global RMS stress, which "
       "decreases with h); kelly: the Kelly gradient-jump estimator (no "
-      "BEM).");
+      "BEM), on quadrilaterals and triangles.");
     prm.declare_entry("Marking",
                       "threshold",
                       selection_pattern<MarkingType>(),

@@ -65,16 +65,9 @@ namespace ddcontact
   {
     if (parameters.mode == AdaptationMode::uniform)
       return;
-    // Triangles refine locally like quadrilaterals, but deal.II 9.4's
-    // KellyErrorEstimator aborts on a triangle with a refined neighbour
-    // (QProjector has no subfaces for simplices); the FEM-BEM estimators
-    // need only cell stresses and boundary faces.
-    if (parameters.estimator == EstimatorType::kelly && body.is_simplex())
-      throw InputError("Adaptation/Estimator: kelly cannot adapt body '" +
-                       body.name() +
-                       "', which has triangles (deal.II 9.4 has no Kelly "
-                       "face jumps on refined triangle neighbours); use "
-                       "fem-bem-scaled or fem-bem");
+    // Triangles refine locally like quadrilaterals; Kelly's indicator on
+    // them is KellyEstimator's own face-jump integral (deal.II 9.4's
+    // KellyErrorEstimator aborts on a triangle with a refined neighbour).
     estimator = ErrorEstimator::create(parameters.estimator, body);
     if (parameters.marking == MarkingType::threshold &&
         !estimator->comparable_with_delta())

@@ -45,8 +45,8 @@ namespace ddcontact
    * prepare_coarsening_and_refinement() adds the flags that keep it so on
    * quadrilateral and triangle meshes alike (no smoothing flag needed; a
    * random refinement of triangle meshes never left it, and
-   * tests/triangle_adaptivity checks it). Triangles adapt with the FEM-BEM
-   * estimators; Kelly is refused on them.
+   * tests/triangle_adaptivity checks it). Triangles adapt with every
+   * estimator (Kelly through face_jump_indicators()).
    */
   class AdaptiveRefinement
   {

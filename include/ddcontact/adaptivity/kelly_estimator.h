@@ -1,16 +1,52 @@
 #ifndef ddcontact_kelly_estimator_h
 #define ddcontact_kelly_estimator_h
 
+#include <deal.II/base/quadrature.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/mapping.h>
+
 #include <ddcontact/adaptivity/error_estimator.h>
 
 namespace ddcontact
 {
   /**
+   * Kelly's indicator computed face by face for any cell type: the formula
+   * of deal.II's KellyErrorEstimator with its default strategy
+   * (cell_diameter_over_24), no coefficient and all components,
+   * @f[
+   *   \eta_K^2 = \frac{h_K}{24} \sum_{F \subset \partial K}
+   *              \int_F |[\nabla u_h\, n]|^2,
+   * @f]
+   * with h_K = cell->diameter(), the sum over the interior faces of K
+   * (boundary faces contribute nothing: no Neumann data) and a face of K
+   * with a finer neighbour contributing its sub-faces. deal.II 9.4's class
+   * aborts on a triangle with a refined neighbour (QProjector has no
+   * sub-faces for simplices); here every face is integrated from its finer
+   * side, with @p face_quadrature mapped to that (smaller) face, and the
+   * other side's gradient is evaluated at the same real points, so the
+   * result equals deal.II's wherever that one runs (tests/kelly_triangles).
+   *
+   * Only the locally owned cells get their value (others stay zero), so
+   * that on a shared mesh the MPI sum of the processes' vectors is the
+   * whole indicator. @p eta is resized to the number of active cells.
+   */
+  void
+  face_jump_indicators(const Mapping<2>     &mapping,
+                       const DoFHandler<2>  &dof_handler,
+                       const Quadrature<1>  &face_quadrature,
+                       const Vector<double> &solution,
+                       Vector<double>       &eta);
+
+  /**
    * Kelly's indicator: the jump of the normal derivative of the FEM
-   * displacement across the faces of each cell (deal.II's
-   * KellyErrorEstimator), the baseline against which the FEM-BEM
-   * estimator is measured. It has the units of the displacement gradient
-   * times a length, so threshold marking does not apply.
+   * displacement across the faces of each cell, the baseline against which
+   * the FEM-BEM estimator is measured. Quadrilateral bodies use deal.II's
+   * KellyErrorEstimator, triangle bodies (locally refined, with hanging
+   * nodes) face_jump_indicators(), the same formula. It has the units of
+   * the displacement gradient times a length, so threshold marking does
+   * not apply.
    */
   class KellyEstimator : public ErrorEstimator
   {
