@@ -23,21 +23,23 @@
 # Also prm/hertz.prm against the closed form of doc/verification.md §2.2.
 # Options: --exe PATH (no build), --out DIR (runs and, in quick mode, the
 # CSV go there), --no-plot, --repeat N (timings per run, median; default 3,
-# 1 in quick mode; runs over 30 s are timed once).
+# 1 in quick mode; runs over 30 s are timed once), --resume (keep the runs
+# of an interrupted sweep and skip those that finished).
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
-quick=0; reference=0; energy_reference=0; plot=1; exe=""; out=""; repeat=""
+quick=0; reference=0; energy_reference=0; plot=1; exe=""; out=""; repeat=""; resume=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) quick=1 ;;
     --reference) reference=1 ;;
     --energy-reference) energy_reference=1 ;;
     --repeat) repeat="$2"; shift ;;
+    --resume) resume=1 ;;
     --no-plot) plot=0 ;;
     --exe) exe="$2"; shift ;;
     --out) out="$2"; shift ;;
-    -h|--help) sed -n '2,27p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,28p' "$0"; exit 0 ;;
     *) echo "error_vs_time.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
@@ -120,7 +122,7 @@ if [ "$reference" = 1 ] || [ "$energy_reference" = 1 ]; then
 fi
 [ -f "$ref_json" ] || { echo "error_vs_time.sh: no reference $ref_json (run with --reference)" >&2; exit 1; }
 
-runs="$out/runs"; rm -rf "$runs"; mkdir -p "$runs"
+runs="$out/runs"; [ "$resume" = 1 ] || rm -rf "$runs"; mkdir -p "$runs"
 manifest="$out/manifest.txt"; : > "$manifest"
 failed=0
 [ -n "$repeat" ] || { if [ "$quick" = 1 ]; then repeat=1; else repeat=3; fi; }
@@ -138,6 +140,10 @@ run() {
   local k dir
   for k in $(seq 1 "$repeat"); do
     dir="$runs/$name"; [ "$k" = 1 ] || dir="$runs/$name.rep$k"
+    if [ "$resume" = 1 ] && [ -f "$dir/summary.json" ]; then
+      awk '/^wall time/ { exit !($3 > 30) }' "$dir.log" && break
+      continue
+    fi
     if ! "$exe" "${run_scene:-$scene}" --output "$dir" "${common[@]}" "$@" > "$dir.log" 2>&1; then
       echo "FAILED: $name (exit status $?, see $dir.log)" >&2; failed=1; break
     fi
@@ -152,12 +158,13 @@ dg() { DG=(--set "Body omega1/Element/Degree=$1" --set "Body omega2/Element/Degr
 
 if [ "$quick" = 1 ]; then
   U_MONO="0"; U_P2="0"; U_DD="0"; U_DD_P2="0"; U_FIXED="0"; U_AUTO="0"; U_AL="0"
-  K_CYC1="1"; K_CYC2="1"; K_CYC_AL="1"; T_ERR1="0.1"; T_ERR2="0.05"
+  KN1="1"; KC1="1"; KN2="1"; KC2="1"; K_CYC_AL="1"; T_ERR1="0.1"; T_ERR2="0.05"
   P_CAP="100"; S_DELTA="0.2"; S_DELTA_FIXED="0.2"
 else
   U_MONO="0 1 2 3 4 5"; U_P2="0 1 2 3 4"; U_DD="0 1 2 3 4 5"; U_DD_P2="0 1 2 3 4 5"
   U_FIXED="0 1 2 3 4"; U_AUTO="0 1 2 3 4"; U_AL="0 1 2 3 4 5"
-  K_CYC1="2 4 6 8 10 12 14 16"; K_CYC2="2 4 6 8 10 12"; K_CYC_AL="2 4 6 8"
+  KN1="2 4 5 6 7 8"; KC1="4 6 8 10 11 12 13"; KN2="2 3 4 5 6 7"; KC2="4 6 8 10 12"
+  K_CYC_AL="2 4 6 8"
   T_ERR1="0.04 0.02 0.014 0.01 0.007 0.005"; T_ERR2="0.01 0.005 0.002 0.001 0.0007 0.0005"
   P_CAP="300 1200 5000 20000"; S_DELTA="0.2 0.1 0.07 0.05 0.035"; S_DELTA_FIXED="0.1 0.05"
 fi
@@ -185,8 +192,9 @@ adapt=(--set "Adaptation/Bodies=omega1, omega2" --set "Adaptation/Max level=12" 
 kelly_n=(--set "Adaptation/Mode=nested" --set "Adaptation/Estimator=kelly" --set "Adaptation/Marking=fraction" --set "Adaptation/Fraction=0.3")
 kelly_c=(--set "Adaptation/Mode=combined" --set "Adaptation/Estimator=kelly" --set "Adaptation/Marking=doerfler" --set "Adaptation/Fraction=0.5")
 for p in 1 2; do
-  dg $p; cyc=K_CYC$p
+  dg $p; cyc=KN$p
   for n in ${!cyc}; do run "kelly-nested-p$p-c$n" kelly-nested-P$p penalty $p $p "cycles=$n" "${adapt[@]}" "${kelly_n[@]}" "${DG[@]}" --set "Adaptation/Max cycles=$n"; done
+  cyc=KC$p
   for n in ${!cyc}; do run "kelly-combined-p$p-c$n" kelly-combined-doerfler-P$p penalty $p $p "cycles=$n" "${adapt[@]}" "${kelly_c[@]}" "${DG[@]}" --set "Adaptation/Max cycles=$n"; done
 done
 dg 1

@@ -448,7 +448,7 @@ TARGETS = [
      "uniform-", "-P1", "kelly-"),
     ("degree 2, 0.1 %", 1e-3, ["fembem-scaled-combined-doerfler-P2",
                                "fembem-scaled-nested-doerfler-P2"],
-     "uniform-", "-P2", None),
+     "uniform-", "-P2", "kelly-"),
 ]
 
 

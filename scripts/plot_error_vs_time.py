@@ -22,7 +22,7 @@ MEASURES = [
     ("err_half_width", "contact half-width (Hertz: fitted a)", "half_width"),
     ("err_force", "total contact force", "force"),
     ("err_pressure_L2", "L2 error of the contact pressure", None),
-    ("err_energy", "energy-norm error of Omega_2 (bound)", "F"),
+    ("err_energy", "energy-norm error, sqrt(|F_h - F| / E_2)", "F"),
 ]
 LEVELS = [1e-2, 1e-3, 1e-4]
 # The rows of each figure: the strategies whose series name starts with the
@@ -34,18 +34,20 @@ FAMILIES = [("uniform meshes (monolithic Newton and DD)", "uniform"),
 
 
 def style(series):
-    colors = {"uniform-monolithic-P1": "black", "uniform-monolithic-P2": "grey",
-              "uniform-DD": "tab:blue", "kelly-nested": "tab:green",
-              "kelly-combined": "tab:olive", "fembem-printed": "tab:red",
-              "fembem-scaled": "tab:purple"}
-    color = "tab:brown"
-    for k, c in colors.items():
-        if series.startswith(k):
-            color = c
+    """Colour by strategy (family and mode), marker by degree (circle P1,
+    diamond P2, square exact contact), dashes for the paper's fixed gamma,
+    dots for the compliance-optimal gamma."""
+    colors = [("uniform-monolithic", "black"), ("uniform-DDnewton", "tab:cyan"),
+              ("uniform-DD", "tab:blue"), ("kelly-nested", "tab:green"),
+              ("kelly-combined", "tab:olive"), ("fembem-printed", "tab:red"),
+              ("fembem-scaled-nested", "tab:purple"),
+              ("fembem-scaled-combined-doerfler", "tab:pink"),
+              ("fembem-scaled-combined-threshold", "tab:brown"),
+              ("hertz-DD-newton", "tab:cyan"), ("hertz", "tab:blue")]
+    color = next((c for k, c in colors if series.startswith(k)), "tab:grey")
     ls = "--" if "fixed" in series else (":" if "auto" in series else "-")
-    marker = "s" if series.endswith("AL") else ("^" if "r4" in series else "o")
-    if series == "uniform-monolithic-P2":
-        marker = "D"
+    marker = "s" if "exact" in series else ("D" if series.endswith("P2")
+                                            else "o")
     return dict(color=color, linestyle=ls, marker=marker, markersize=4,
                 linewidth=1.2)
 
@@ -78,7 +80,7 @@ def plot_measure(series, ref, measure, title, key, out_dir):
     """One figure per error measure: a row of two panels (against wall time
     and against unknowns) per family of strategies, each with its own
     legend, so that no legend has more than eight entries; the adaptive rows
-    repeat the uniform monolithic P1 baseline in grey for comparison."""
+    repeat the uniform P1 and P2 baselines in grey for comparison."""
     drawn = {}
     for name, rs in series.items():
         rs = [r for r in rs if isinstance(r[measure], float)]
@@ -89,7 +91,8 @@ def plot_measure(series, ref, measure, title, key, out_dir):
     rows = [(label, names) for label, names in rows if names]
     fig, axes = plt.subplots(len(rows), 2, figsize=(13, 3.3 * len(rows) + 0.8),
                              sharex="col", sharey=True, squeeze=False)
-    baseline = "uniform-monolithic-P1"
+    baselines = [("uniform-monolithic-P1", "0.75"),
+                 ("uniform-DD-anderson-P2", "0.55")]
     for (family, names), row in zip(rows, axes):
         for name in names:
             label = name + {"exact": " [vs exact]", "hertz": " [vs Hertz]"}.get(
@@ -97,12 +100,14 @@ def plot_measure(series, ref, measure, title, key, out_dir):
             for ax, x in zip(row, ("wall_time_s", "dofs")):
                 draw_series(ax, drawn[name], name, measure, x,
                             label if x == "dofs" else None)
-        if baseline in drawn and baseline not in names \
-                and drawn[names[0]][0]["problem"] == "penalty":
-            for ax, x in zip(row, ("wall_time_s", "dofs")):
-                draw_series(ax, drawn[baseline], baseline, measure, x,
-                            baseline + " (for comparison)" if x == "dofs" else None,
-                            color="0.75", linewidth=2.5, zorder=0)
+        for baseline, grey in baselines:
+            if baseline in drawn and not family.startswith("uniform") \
+                    and drawn[names[0]][0]["problem"] == "penalty":
+                for ax, x in zip(row, ("wall_time_s", "dofs")):
+                    draw_series(ax, drawn[baseline], baseline, measure, x,
+                                baseline + " (for comparison)"
+                                if x == "dofs" else None,
+                                color=grey, linewidth=2.5, zorder=0)
         for ax in row:
             for lv in LEVELS:
                 ax.axhline(lv, color="0.8", linewidth=0.8, zorder=0)

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace ddcontact
 {
@@ -82,7 +83,11 @@ namespace ddcontact
   {
     AssertThrow(estimator, ExcMessage("uniform refinement estimates nothing"));
     estimator->estimate(u_fem, contact);
-    eta = estimator->indicators();
+    eta                     = estimator->indicators();
+    refinable_contributions = estimator->error_contributions();
+    for (const auto &cell : body.get_triangulation().active_cell_iterators())
+      if (static_cast<unsigned int>(cell->level()) >= parameters.max_level)
+        refinable_contributions(cell->active_cell_index()) = 0.;
     // A distributed mesh holds eta on its own cells (zero elsewhere).
     eta_maximum = eta.linfty_norm();
     eta_total   = eta.l1_norm();
@@ -100,7 +105,7 @@ namespace ddcontact
     mark_cells(body.get_triangulation(),
                parameters.marking == MarkingType::threshold
                  ? eta
-                 : estimator->error_contributions(),
+                 : refinable_contributions,
                parameters);
     return apply_caps();
   }
@@ -108,11 +113,12 @@ namespace ddcontact
   unsigned int
   AdaptiveRefinement::mark_above(const double threshold)
   {
-    const Vector<double> &contributions = estimator->error_contributions();
     for (const auto &cell : body.get_triangulation().active_cell_iterators())
     {
       cell->clear_refine_flag();
-      if (contributions(cell->active_cell_index()) >= threshold)
+      const double contribution =
+        refinable_contributions(cell->active_cell_index());
+      if (contribution > 0 && contribution >= threshold)
         cell->set_refine_flag();
     }
     return apply_caps();
@@ -142,14 +148,40 @@ namespace ddcontact
     }
     // Each refined cell, quadrilateral or triangle, becomes four (the
     // one-irregularity closure adds a few more, not counted here).
-    if (body.n_active_cells() + 3 * marked > parameters.max_cells)
-    {
-      for (const auto &cell : tria.active_cell_iterators())
+    const unsigned int n_cells = body.n_active_cells();
+    if (n_cells + 3 * marked <= parameters.max_cells)
+      return marked;
+    // Over Max cells: an adaptive step keeps the flagged cells with the
+    // largest error contributions that fit (dropping them all stalled one
+    // body while the other went on); uniform refinement and partitioned
+    // meshes refine all or nothing.
+    const unsigned int budget =
+      (parameters.mode == AdaptationMode::uniform ||
+       body.is_mesh_distributed() || n_cells >= parameters.max_cells)
+        ? 0
+        : (parameters.max_cells - n_cells) / 3;
+    std::vector<std::pair<double, unsigned int>> flagged;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->refine_flag_set())
+        flagged.emplace_back(refinable_contributions(cell->active_cell_index()),
+                             cell->active_cell_index());
+    // Largest first, ties by cell index: the same cells on every run.
+    std::sort(flagged.begin(),
+              flagged.end(),
+              [](const auto &a, const auto &b) {
+                return a.first > b.first ||
+                       (a.first == b.first && a.second < b.second);
+              });
+    std::vector<bool> keep(n_cells, false);
+    for (unsigned int k = 0; k < std::min<std::size_t>(budget, flagged.size());
+         ++k)
+      keep[flagged[k].second] = true;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (!keep[cell->active_cell_index()])
         cell->clear_refine_flag();
-      capped += marked;
-      marked = 0;
-    }
-    return marked;
+    const unsigned int kept = std::min<unsigned int>(budget, marked);
+    capped += marked - kept;
+    return kept;
   }
 
   unsigned int

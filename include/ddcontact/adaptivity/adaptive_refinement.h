@@ -81,11 +81,15 @@ namespace ddcontact
     unsigned int
     mark_above(double threshold);
 
-    /** The cells' error contributions of the last estimate. */
+    /** The cells' error contributions of the last estimate, zero on the
+     * cells at Max level: fraction and Doerfler marking rank only cells
+     * that can be refined, so that cells kept at Max level (corners,
+     * contact edges) do not use up the fraction and stall the refinement
+     * elsewhere. */
     const Vector<double> &
     error_contributions() const
     {
-      return estimator->error_contributions();
+      return refinable_contributions;
     }
 
     /** Flag every cell (uniform refinement). */
@@ -118,8 +122,8 @@ namespace ddcontact
       return eta_total;
     }
 
-    /** Cells that eta marked but Max level or Max cells kept unrefined in
-     * the last mark(). */
+    /** Cells that the last mark() flagged but Max level (threshold
+     * marking) or Max cells kept unrefined. */
     unsigned int
     n_capped() const
     {
@@ -150,6 +154,7 @@ namespace ddcontact
     // Null with uniform refinement.
     std::unique_ptr<ErrorEstimator> estimator;
     Vector<double>                  eta;
+    Vector<double>                  refinable_contributions;
     double                          eta_maximum = 0, eta_total = 0;
     unsigned int                    capped = 0;
   };
