@@ -44,6 +44,49 @@ namespace ddcontact
         u[b].sadd(1 - tau, tau, v[b]);
     }
 
+    /**
+     * The nodal multipliers of exact contact (hat functions on S_1) on the
+     * nodes @p to of a refined zone from their values on the old nodes
+     * @p from: linear between the two nearest old nodes where the new node
+     * lies between them (a bisected face of S_1), else the nearest node's
+     * value. The piecewise constant transfer left every new node with its
+     * neighbour's value, and the first Newton step on the new mesh had to
+     * be damped to 1/8.
+     */
+    std::vector<double>
+    interpolated_node_values(const std::vector<Point<2>> &from,
+                             const std::vector<double>   &values,
+                             const std::vector<Point<2>> &to)
+    {
+      std::vector<double> moved = nearest_point_values(from, values, to);
+      if (from.size() < 2 || values.size() != from.size())
+        return moved;
+      for (unsigned int q = 0; q < to.size(); ++q)
+      {
+        unsigned int a = 0, b = 1;
+        if (to[q].distance_square(from[b]) < to[q].distance_square(from[a]))
+          std::swap(a, b);
+        for (unsigned int i = 2; i < from.size(); ++i)
+          if (to[q].distance_square(from[i]) < to[q].distance_square(from[a]))
+          {
+            b = a;
+            a = i;
+          }
+          else if (to[q].distance_square(from[i]) <
+                   to[q].distance_square(from[b]))
+            b = i;
+        // Between a and b: its projection on the chord falls inside it, and
+        // it lies near the chord (a curved zone bows by ~ h^2 / (8 R)).
+        const Tensor<1, 2> ab = from[b] - from[a];
+        const double       t  = ((to[q] - from[a]) * ab) / ab.norm_square();
+        const double       off =
+          (to[q] - (from[a] + t * ab)).norm() / std::sqrt(ab.norm_square());
+        if (t > 0 && t < 1 && off < 0.1)
+          moved[q] = (1 - t) * values[a] + t * values[b];
+      }
+      return moved;
+    }
+
     /** The Newton iteration stops after at most this many CG iterations
      * per step (a safeguard; the counts are tens). */
     constexpr unsigned int max_cg_iterations = 500;
@@ -66,7 +109,9 @@ namespace ddcontact
     ContactSolver::reinit_after_refinement();
     const std::vector<Point<2>> old_positions = interface.positions();
     interface.reinit();
-    p          = nearest_point_values(old_positions, p, interface.positions());
+    p          = interface.on_nodes()
+                   ? interpolated_node_values(old_positions, p, interface.positions())
+                   : nearest_point_values(old_positions, p, interface.positions());
     mesh_ready = false;
   }
 
