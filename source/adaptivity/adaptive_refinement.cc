@@ -160,9 +160,10 @@ namespace ddcontact
        body.is_mesh_distributed() || n_cells >= parameters.max_cells)
         ? 0
         : (parameters.max_cells - n_cells) / 3;
+    // (Uniform refinement has no contributions to rank: budget 0 clears.)
     std::vector<std::pair<double, unsigned int>> flagged;
     for (const auto &cell : tria.active_cell_iterators())
-      if (cell->refine_flag_set())
+      if (budget > 0 && cell->refine_flag_set())
         flagged.emplace_back(refinable_contributions(cell->active_cell_index()),
                              cell->active_cell_index());
     // Largest first, ties by cell index: the same cells on every run.
