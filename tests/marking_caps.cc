@@ -20,8 +20,8 @@ namespace
   std::vector<double>
   csv_column(const std::string &file, const std::string &name)
   {
-    std::ifstream      in(file);
-    std::string        line, cell;
+    std::ifstream in(file);
+    std::string   line, cell;
     std::getline(in, line);
     std::istringstream header(line);
     int                column = -1;
@@ -51,13 +51,12 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::string                source_dir = (argc > 1) ? argv[1] : "..";
-  const std::vector<std::string>   kelly      = {
-    "Adaptation/Bodies=omega1, omega2",
-    "Adaptation/Mode=nested",
-    "Adaptation/Estimator=kelly",
-    "Adaptation/Marking=fraction",
-    "Adaptation/Fraction=0.3",
-    "Adaptation/Write every mesh=false"};
+  const std::vector<std::string>   kelly = {"Adaptation/Bodies=omega1, omega2",
+                                            "Adaptation/Mode=nested",
+                                            "Adaptation/Estimator=kelly",
+                                            "Adaptation/Marking=fraction",
+                                            "Adaptation/Fraction=0.3",
+                                            "Adaptation/Write every mesh=false"};
 
   // 1. Max level 4 (Omega_2 starts at level 1, Omega_1 at level 1): after
   // a few cycles the corner and contact-edge cells sit at level 4, and
@@ -77,10 +76,9 @@ main(int argc, char **argv)
       total_capped += c;
     for (const double m : marked)
       total_marked += m;
-    std::cout << "Max level 4: " << marked.size() << " cycles, "
-              << total_marked << " cells marked, " << total_capped
-              << " capped; cells " << cells(*sim, 0) << ", " << cells(*sim, 1)
-              << std::endl;
+    std::cout << "Max level 4: " << marked.size() << " cycles, " << total_marked
+              << " cells marked, " << total_capped << " capped; cells "
+              << cells(*sim, 0) << ", " << cells(*sim, 1) << std::endl;
     check(marked.size() == 6, "six rows (cycles 0 to 5) in statistics.csv");
     check(total_marked > 0 && total_capped == 0,
           "no cell is flagged and then capped for its level");
