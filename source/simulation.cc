@@ -173,8 +173,10 @@ namespace ddcontact
 
     // Semismooth Newton on the penalised problem, inside the same Uzawa
     // loop as the DD when the augmented Lagrangian is on.
-    MonolithicContactSolver newton(
-      dd_solver->get_problem(), parameters.dd.n_newton, pcout);
+    MonolithicContactSolver newton(dd_solver->get_problem(),
+                                   parameters.dd.pressure_on_nodes,
+                                   parameters.dd.n_newton,
+                                   pcout);
     do
       n_newton_iterations += newton.run();
     while (dd_solver->start_uzawa_phase());

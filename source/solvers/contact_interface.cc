@@ -119,6 +119,19 @@ namespace ddcontact
     return sigma_n;
   }
 
+  std::vector<double>
+  ContactInterface::peak_pressures(const PointVector &p) const
+  {
+    AssertDimension(p.size(), size());
+    std::vector<double> peak(problem.get_pairs().size(), 0.);
+    for (unsigned int i = 0; i < p.size(); ++i)
+    {
+      auto &largest = peak[point_shares[i][0].pair];
+      largest       = std::max(largest, p[i]);
+    }
+    return peak;
+  }
+
   std::vector<std::vector<double>>
   ContactInterface::jump(const ContactProblem::Iterate &u) const
   {

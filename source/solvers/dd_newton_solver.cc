@@ -217,12 +217,7 @@ namespace ddcontact
     last_sigma_n = interface.normal_stresses(p);
     if (interface.on_nodes())
     {
-      std::vector<double> peak(last_sigma_n.size(), 0.);
-      for (unsigned int i = 0; i < p.size(); ++i)
-      {
-        auto &largest = peak[interface.shares(i)[0].pair];
-        largest       = std::max(largest, p[i]);
-      }
+      const auto peak = interface.peak_pressures(p);
       for (unsigned int k = 0; k < last_sigma_n.size(); ++k)
         problem.law(k).set_contact_pressure(last_sigma_n[k], peak[k]);
     }

@@ -115,13 +115,13 @@ namespace ddcontact
       "Contact pressure",
       "points",
       Patterns::Selection("points|nodes"),
-      "The discrete contact pressure of Solver = dd-newton with the penalty: "
-      "'points', a value at every contact point, the law (20) pointwise as "
-      "the paper and the other solvers; 'nodes', one value per node of S_1 "
-      "(piecewise linear), the law (20) for the gap averaged with the hat "
-      "functions, whose Newton iteration converges also for stiff penalties "
-      "(c <= 1e-4). Exact contact (Augmented Lagrangian = true) always uses "
-      "nodes.");
+      "The discrete contact pressure of Solver = dd-newton and monolithic "
+      "with the penalty: 'points', a value at every contact point, the law "
+      "(20) pointwise as the paper and the DD; 'nodes', one value per node "
+      "of S_1 (piecewise linear), the law (20) for the gap averaged with the "
+      "hat functions, whose Newton iteration converges also for stiff "
+      "penalties (c <= 1e-4). Exact contact (Augmented Lagrangian = true) "
+      "with dd-newton always uses nodes; with monolithic, only points.");
   }
 
   void
@@ -142,10 +142,18 @@ namespace ddcontact
     write_every_iteration = prm.get_bool("Write every iteration");
     n_newton              = prm.get_integer("Max Newton iterations");
     pressure_on_nodes     = (prm.get("Contact pressure") == "nodes");
-    if (pressure_on_nodes && solver != ContactSolverType::dd_newton)
+    if (pressure_on_nodes && solver == ContactSolverType::dd)
       throw InputError("Domain decomposition/Contact pressure = nodes needs "
-                       "Solver = dd-newton (the other solvers take the "
+                       "Solver = dd-newton or monolithic (the DD takes the "
                        "pressure at the contact points)");
+    // The Uzawa loop updates pointwise multipliers; dd-newton solves exact
+    // contact on the nodes directly.
+    if (pressure_on_nodes && augmented_lagrangian &&
+        solver == ContactSolverType::monolithic)
+      throw InputError("Domain decomposition/Contact pressure = nodes with "
+                       "Solver = monolithic is a penalty; for exact contact "
+                       "(Augmented Lagrangian = true) on the nodes use Solver "
+                       "= dd-newton");
     if (!(gamma > 0. && gamma <= 1.))
       throw InputError("Domain decomposition/Gamma: " + prm.get("Gamma") +
                        " must lie in (0, 1]");

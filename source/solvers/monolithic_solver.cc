@@ -4,36 +4,45 @@
 #include <ddcontact/solvers/errors.h>
 #include <ddcontact/solvers/monolithic_solver.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace ddcontact
 {
   MonolithicContactSolver::MonolithicContactSolver(
-    const ContactProblem &problem,
-    const unsigned int    max_iterations,
-    ConditionalOStream   &pcout)
+    ContactProblem     &problem,
+    const bool          on_nodes,
+    const unsigned int  max_iterations,
+    ConditionalOStream &pcout)
     : problem(problem)
+    , on_nodes(on_nodes)
     , max_iterations(max_iterations)
     , pcout(pcout)
+    , interface(problem, on_nodes, false)
   {
   }
 
-  unsigned int
-  MonolithicContactSolver::run()
+  double
+  MonolithicContactSolver::Penetration::operator()(
+    const Vector<double> &u) const
+  {
+    double gu = 0;
+    for (unsigned int j = 0; j < dofs.size(); ++j)
+      gu += g[j] * u(dofs[j]);
+    return gu - f;
+  }
+
+  void
+  MonolithicContactSolver::setup_constraints()
   {
     const auto &bodies = problem.get_bodies();
-    const auto &pairs  = problem.get_pairs();
-    // lambda + g/theta = (f_n + theta lambda - u_1n - u_2n)/theta: the
-    // multipliers shift the gap of every contact point.
-    const auto gap = [&](const unsigned int p, const unsigned int q)
-    { return problem.law(p).shifted_gap(q); };
-
     // One global numbering: the bodies' dofs one after another.
-    std::vector<types::global_dof_index> offset(bodies.size() + 1, 0);
+    offset.assign(bodies.size() + 1, 0);
     for (unsigned int b = 0; b < bodies.size(); ++b)
       offset[b + 1] = offset[b] + bodies[b]->n_dofs();
-    const auto n = offset.back();
 
     // The bodies' constraints (hanging nodes, Dirichlet data), shifted.
-    AffineConstraints<double> constraints;
+    constraints.clear();
     for (unsigned int b = 0; b < bodies.size(); ++b)
       for (const auto &line : bodies[b]->get_constraints().get_lines())
       {
@@ -45,19 +54,60 @@ namespace ddcontact
                                       line.inhomogeneity);
       }
     constraints.close();
+  }
 
-    // Each contact point couples the dofs of both of its cells.
-    const auto point_dofs = [&](const ContactPair &pair, const ContactPoint &p)
+  void
+  MonolithicContactSolver::setup_penetrations()
+  {
+    // d_i = (1/m_i) sum_q w_q psi_i(x_q) d_q over the points the unknown
+    // spreads to, d_q = u_1n + u_2n - f~_n: the normal shape values of both
+    // cells (on the points a single point with psi = 1 and m_i = w_q, whose
+    // coefficients are then the shape values as they are).
+    interface.reinit();
+    const auto &pairs = problem.get_pairs();
+    penetrations.assign(interface.size(), Penetration());
+    for (unsigned int i = 0; i < interface.size(); ++i)
     {
-      std::vector<types::global_dof_index> dofs;
-      for (const auto i : p.dofs_1)
-        dofs.push_back(i + offset[problem.body_index(pair.get_body_1())]);
-      for (const auto i : p.dofs_2)
-        dofs.push_back(i + offset[problem.body_index(pair.get_body_2())]);
-      return dofs;
-    };
+      auto &d        = penetrations[i];
+      d.weight       = interface.weight(i);
+      d.theta        = interface.penalty(i);
+      d.scale        = interface.complementarity_scale(i);
+      const auto add = [&](const types::global_dof_index dof, const double v)
+      {
+        const auto it = std::find(d.dofs.begin(), d.dofs.end(), dof);
+        if (it == d.dofs.end())
+        {
+          d.dofs.push_back(dof);
+          d.g.push_back(v);
+        }
+        else
+          d.g[it - d.dofs.begin()] += v;
+      };
+      for (const auto &share : interface.shares(i))
+      {
+        const auto        &pair = *pairs[share.pair];
+        const auto        &p    = pair.points()[share.point];
+        const double       s    = share.psi * p.JxW / d.weight;
+        const unsigned int b1   = problem.body_index(pair.get_body_1());
+        const unsigned int b2   = problem.body_index(pair.get_body_2());
+        for (unsigned int j = 0; j < p.a.size(); ++j)
+          add(p.dofs_1[j] + offset[b1], s * p.a[j]);
+        for (unsigned int j = 0; j < p.b.size(); ++j)
+          add(p.dofs_2[j] + offset[b2], s * p.b[j]);
+        // lambda + g/theta = (f_n + theta lambda - u_1n - u_2n)/theta: the
+        // multipliers shift the gap (not on the nodes, PenaltyLaw).
+        d.f += s * problem.law(share.pair).shifted_gap(share.point);
+      }
+    }
+  }
 
-    DynamicSparsityPattern dsp(n);
+  void
+  MonolithicContactSolver::setup_sparsity()
+  {
+    const auto &bodies = problem.get_bodies();
+    const auto  n      = offset.back();
+    // On the nodes the pressures follow the displacements.
+    DynamicSparsityPattern dsp(n + (on_nodes ? penetrations.size() : 0));
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
       const auto &K = bodies[b]->get_stiffness_matrix();
@@ -65,97 +115,223 @@ namespace ddcontact
         for (auto it = K.begin(i); it != K.end(i); ++it)
           dsp.add(i + offset[b], it->column() + offset[b]);
     }
-    for (const auto *pair : pairs)
-      for (const auto &p : pair->points())
-        constraints.add_entries_local_to_global(
-          point_dofs(*pair, p), dsp, false);
-    SparsityPattern sparsity;
+    for (unsigned int i = 0; i < penetrations.size(); ++i)
+    {
+      auto dofs = penetrations[i].dofs;
+      if (on_nodes)
+        dofs.push_back(n + i);
+      constraints.add_entries_local_to_global(dofs, dsp, false);
+    }
     sparsity.copy_from(dsp);
+  }
 
-    // Current state, flattened.
-    Vector<double> u(n);
+  PointVector
+  MonolithicContactSolver::penalty_pressure(const Vector<double> &u) const
+  {
+    PointVector p(penetrations.size());
+    for (unsigned int i = 0; i < p.size(); ++i)
+      p[i] = std::max(0., penetrations[i](u)) / penetrations[i].theta;
+    return p;
+  }
+
+  std::vector<bool>
+  MonolithicContactSolver::active_set(const Vector<double> &u,
+                                      const PointVector    &p) const
+  {
+    std::vector<bool> active(penetrations.size());
+    for (unsigned int i = 0; i < active.size(); ++i)
+    {
+      const auto &d = penetrations[i];
+      active[i]     = d(u) + (d.scale - d.theta) * p[i] > 0;
+    }
+    return active;
+  }
+
+  void
+  MonolithicContactSolver::solve_linearised(const std::vector<bool> &active,
+                                            Vector<double>          &u,
+                                            PointVector             &p) const
+  {
+    const auto          &bodies = problem.get_bodies();
+    const auto           n      = offset.back();
+    const unsigned int   n_p    = on_nodes ? p.size() : 0;
+    SparseMatrix<double> matrix(sparsity);
+    Vector<double>       rhs(n + n_p);
+    // blockdiag(K_a) and the bodies' condensed loads (12).
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+    {
+      const auto &K = bodies[b]->get_stiffness_matrix();
+      for (types::global_dof_index i = 0; i < K.m(); ++i)
+        for (auto it = K.begin(i); it != K.end(i); ++it)
+          matrix.add(i + offset[b], it->column() + offset[b], it->value());
+      const auto &L = bodies[b]->get_load_vector();
+      std::copy(L.begin(), L.end(), rhs.begin() + offset[b]);
+    }
+    for (unsigned int i = 0; i < penetrations.size(); ++i)
+    {
+      const auto        &d    = penetrations[i];
+      const unsigned int k    = d.g.size();
+      auto               dofs = d.dofs;
+      if (on_nodes)
+      {
+        // Row and column of p_i: m g^T u - m theta p = m f, or p_i = 0.
+        dofs.push_back(n + i);
+        FullMatrix<double> local_matrix(k + 1, k + 1);
+        Vector<double>     local_rhs(k + 1);
+        if (active[i])
+        {
+          for (unsigned int j = 0; j < k; ++j)
+            local_matrix(j, k) = local_matrix(k, j) = d.weight * d.g[j];
+          local_matrix(k, k) = -d.weight * d.theta;
+          local_rhs(k)       = d.weight * d.f;
+        }
+        else
+          local_matrix(k, k) = 1;
+        constraints.distribute_local_to_global(
+          local_matrix, local_rhs, dofs, matrix, rhs);
+      }
+      else if (active[i])
+      {
+        // (m/theta) g g^T and (m/theta) f g (f shifted by theta lambda).
+        FullMatrix<double> local_matrix(k, k);
+        Vector<double>     local_rhs(k);
+        const double       w = d.weight / d.theta;
+        for (unsigned int j = 0; j < k; ++j)
+        {
+          local_rhs(j) = w * d.f * d.g[j];
+          for (unsigned int l = 0; l < k; ++l)
+            local_matrix(j, l) = w * d.g[j] * d.g[l];
+        }
+        constraints.distribute_local_to_global(
+          local_matrix, local_rhs, dofs, matrix, rhs);
+      }
+    }
+    SparseDirectUMFPACK solver;
+    solver.initialize(matrix);
+    Vector<double> solution(n + n_p);
+    solver.vmult(solution, rhs);
+    std::copy(solution.begin(), solution.begin() + n, u.begin());
+    constraints.distribute(u);
+    const auto finite = [](const double v) { return std::isfinite(v); };
+    if (!std::all_of(u.begin(), u.end(), finite) ||
+        !std::all_of(solution.begin() + n, solution.end(), finite))
+      throw DivergenceError("the monolithic Newton solver produced a "
+                            "non-finite displacement");
+    if (on_nodes)
+      std::copy(solution.begin() + n, solution.end(), p.begin());
+    else
+      p = penalty_pressure(u);
+  }
+
+  double
+  MonolithicContactSolver::residual_norm(const Vector<double> &u,
+                                         const PointVector    &p) const
+  {
+    const auto    &bodies = problem.get_bodies();
+    Vector<double> r(u.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+    {
+      Vector<double> u_b(bodies[b]->n_dofs()), r_b(bodies[b]->n_dofs());
+      std::copy(u.begin() + offset[b], u.begin() + offset[b + 1], u_b.begin());
+      bodies[b]->get_stiffness_matrix().vmult(r_b, u_b);
+      r_b -= bodies[b]->get_load_vector();
+      std::copy(r_b.begin(), r_b.end(), r.begin() + offset[b]);
+    }
+    double sum = 0;
+    for (unsigned int i = 0; i < p.size(); ++i)
+    {
+      const auto    &d = penetrations[i];
+      Vector<double> local(d.g.size());
+      for (unsigned int j = 0; j < d.g.size(); ++j)
+        local(j) = d.weight * p[i] * d.g[j];
+      constraints.distribute_local_to_global(local, d.dofs, r);
+      // The law, as a nodal force: m min(p, (theta p - d) / c).
+      const double law =
+        d.weight * std::min(p[i], (d.theta * p[i] - d(u)) / d.scale);
+      sum += law * law;
+    }
+    constraints.set_zero(r);
+    return std::sqrt(r.norm_sqr() + sum);
+  }
+
+  double
+  MonolithicContactSolver::damping(const Vector<double> &u,
+                                   const PointVector    &p,
+                                   const Vector<double> &u_new,
+                                   const PointVector    &p_new) const
+  {
+    const double r = residual_norm(u, p);
+    for (double tau = 1; tau > 1e-3; tau /= 2)
+    {
+      Vector<double> u_tau(u);
+      u_tau.sadd(1 - tau, tau, u_new);
+      PointVector p_tau(p);
+      for (unsigned int i = 0; i < p.size(); ++i)
+        p_tau[i] = (1 - tau) * p[i] + tau * p_new[i];
+      if (!on_nodes)
+        p_tau = penalty_pressure(u_tau);
+      if (residual_norm(u_tau, p_tau) < (1 - 1e-4 * tau) * r)
+        return tau;
+    }
+    return 1;
+  }
+
+  unsigned int
+  MonolithicContactSolver::run()
+  {
+    // On the nodes the pressure is the solver's, and the gap unshifted.
+    problem.set_pressure_from_solver(on_nodes);
+    const auto &bodies = problem.get_bodies();
+    setup_constraints();
+    setup_penetrations();
+    setup_sparsity();
+
+    // Current state, flattened; on the nodes no pressure yet.
+    Vector<double> u(offset.back());
     for (unsigned int b = 0; b < bodies.size(); ++b)
       for (types::global_dof_index i = 0; i < bodies[b]->n_dofs(); ++i)
         u(i + offset[b]) = bodies[b]->get_solution()(i);
+    PointVector p =
+      on_nodes ? PointVector(penetrations.size(), 0.) : penalty_pressure(u);
 
-    // Base right-hand side: the bodies' condensed loads (12).
-    Vector<double> base_rhs(n);
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      for (types::global_dof_index i = 0; i < bodies[b]->n_dofs(); ++i)
-        base_rhs(i + offset[b]) = bodies[b]->get_load_vector()(i);
-
-    std::vector<std::vector<bool>> active(pairs.size());
-    unsigned int                   iteration = 0;
+    // The active sets met so far: one met again without settling is a
+    // cycle, and damping starts.
+    std::vector<std::vector<bool>> seen;
+    bool                           full_step = false, damped = false;
+    const std::string              what =
+      on_nodes ? " active nodes" : " active contact points";
+    unsigned int iteration = 0;
     for (; iteration < max_iterations; ++iteration)
     {
-      // The active set of the current iterate.
-      bool         changed  = (iteration == 0);
-      unsigned int n_active = 0;
-      for (unsigned int p = 0; p < pairs.size(); ++p)
-      {
-        const auto &pts = pairs[p]->points();
-        active[p].resize(pts.size(), false);
-        for (unsigned int q = 0; q < pts.size(); ++q)
-        {
-          const auto dofs = point_dofs(*pairs[p], pts[q]);
-          double     cu   = 0;
-          for (unsigned int i = 0; i < pts[q].a.size(); ++i)
-            cu += pts[q].a[i] * u(dofs[i]);
-          for (unsigned int i = 0; i < pts[q].b.size(); ++i)
-            cu += pts[q].b[i] * u(dofs[pts[q].a.size() + i]);
-          const bool now = gap(p, q) - cu < 0;
-          changed        = changed || (now != active[p][q]);
-          active[p][q]   = now;
-          n_active += now;
-        }
-      }
-      pcout << "  Newton " << iteration << ": " << n_active
-            << " active contact points" << std::endl;
-      if (!changed)
+      const auto active = active_set(u, p);
+      pcout << "  Newton " << iteration << ": "
+            << std::count(active.begin(), active.end(), true) << what
+            << std::endl;
+      // Settled: (u, p) solves the linear system of its own active set.
+      if (full_step && active == seen.back())
         break;
+      damped =
+        damped || std::find(seen.begin(), seen.end(), active) != seen.end();
+      seen.push_back(active);
 
-      // Matrix blockdiag(K_a) + (1/theta) sum_active w c c^T and right-hand
-      // side L + (1/theta) sum_active w f_n c (f_n shifted by theta lambda).
-      SparseMatrix<double> matrix(sparsity);
-      for (unsigned int b = 0; b < bodies.size(); ++b)
+      Vector<double> u_new(u);
+      PointVector    p_new(p);
+      solve_linearised(active, u_new, p_new);
+      const double tau = damped ? damping(u, p, u_new, p_new) : 1.;
+      full_step        = (tau == 1);
+      if (full_step)
       {
-        const auto &K = bodies[b]->get_stiffness_matrix();
-        for (types::global_dof_index i = 0; i < K.m(); ++i)
-          for (auto it = K.begin(i); it != K.end(i); ++it)
-            matrix.add(i + offset[b], it->column() + offset[b], it->value());
+        u = u_new;
+        p = p_new;
+        continue;
       }
-      Vector<double> rhs(base_rhs);
-      for (unsigned int p = 0; p < pairs.size(); ++p)
-      {
-        const double theta = problem.law(p).theta();
-        const auto  &pts   = pairs[p]->points();
-        for (unsigned int q = 0; q < pts.size(); ++q)
-          if (active[p][q])
-          {
-            const auto          dofs = point_dofs(*pairs[p], pts[q]);
-            std::vector<double> c(pts[q].a);
-            c.insert(c.end(), pts[q].b.begin(), pts[q].b.end());
-            FullMatrix<double> local_matrix(c.size(), c.size());
-            Vector<double>     local_rhs(c.size());
-            const double       w = pts[q].JxW / theta;
-            for (unsigned int i = 0; i < c.size(); ++i)
-            {
-              local_rhs(i) = w * gap(p, q) * c[i];
-              for (unsigned int j = 0; j < c.size(); ++j)
-                local_matrix(i, j) = w * c[i] * c[j];
-            }
-            constraints.distribute_local_to_global(
-              local_matrix, local_rhs, dofs, matrix, rhs);
-          }
-      }
-      SparseDirectUMFPACK solver;
-      solver.initialize(matrix);
-      solver.vmult(u, rhs);
-      constraints.distribute(u);
-      for (const double v : u)
-        if (!std::isfinite(v))
-          throw DivergenceError("the monolithic Newton solver produced a "
-                                "non-finite displacement");
+      pcout << "  Newton " << iteration << ": the active set cycles, step "
+            << tau << std::endl;
+      u.sadd(1 - tau, tau, u_new);
+      for (unsigned int i = 0; i < p.size(); ++i)
+        p[i] = (1 - tau) * p[i] + tau * p_new[i];
+      if (!on_nodes)
+        p = penalty_pressure(u);
     }
     if (iteration == max_iterations)
       throw DivergenceError(
@@ -164,11 +340,21 @@ namespace ddcontact
         " iterations (the active set cycles when theta is small against "
         "the compliance of the contact zone, e.g. a slender body); raise the "
         "contact pairs' Penalty (c) or Domain decomposition/Max Newton "
-        "iterations");
+        "iterations" +
+        (on_nodes ? std::string()
+                  : ", or set Domain decomposition/Contact pressure = nodes"));
 
     for (unsigned int b = 0; b < bodies.size(); ++b)
       for (types::global_dof_index i = 0; i < bodies[b]->n_dofs(); ++i)
         bodies[b]->get_solution()(i) = u(i + offset[b]);
+    if (on_nodes)
+    {
+      // The pressure p(x) = sum_i p_i psi_i(x) at the points, and its peak.
+      const auto sigma_n = interface.normal_stresses(p);
+      const auto peaks   = interface.peak_pressures(p);
+      for (unsigned int k = 0; k < sigma_n.size(); ++k)
+        problem.law(k).set_contact_pressure(sigma_n[k], peaks[k]);
+    }
     return iteration;
   }
 } // namespace ddcontact

@@ -143,6 +143,12 @@ namespace ddcontact
     std::vector<std::vector<double>>
     normal_stresses(const PointVector &p) const;
 
+    /** The largest value of @p p on every pair (the peak of the piecewise
+     * linear pressure of the nodes, which the points between them miss; 0
+     * for a pair without positive value). */
+    std::vector<double>
+    peak_pressures(const PointVector &p) const;
+
     /** The penetration d = M^{-1} Psi W (u_1n + u_2n - f~_n) of the
      * displacements @p u (f~_n with the current multipliers). */
     PointVector

@@ -3,7 +3,12 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
 #include <ddcontact/contact/contact_problem.h>
+#include <ddcontact/solvers/contact_interface.h>
 
 #include <vector>
 
@@ -15,32 +20,127 @@ namespace ddcontact
    * The reference for the domain decomposition: the penalised problem (16)
    * for all bodies at once,
    *   A(u, v) + J'_theta(u, v) - L(v) = 0,
-   * solved by a semismooth (active-set) Newton method. J_theta is piecewise
-   * quadratic, so on a fixed active set (the contact points with
-   * f_n - u_1n - u_2n < 0) one Newton step is one linear solve with the
-   * matrix blockdiag(K_a) + (1/theta) sum_active w c c^T, where c holds the
-   * normal shape values of both bodies at the point; the method stops when
-   * the active set no longer changes, at the exact minimiser of (15).
+   * solved by a semismooth (active-set) Newton method. The penalty is
+   *   J_theta(u) = sum_i m_i / (2 theta_i) max(0, d_i(u))^2
+   * over the unknowns i of a ContactInterface, each with an affine
+   * penetration d_i = g_i . u - f_i and pressure p_i = max(0, d_i) / theta_i:
+   *
+   * - **points** (the paper's (20)): one term per contact point, m_i its
+   *   weight w_q, g_i the normal shape values of both bodies there, f_i
+   *   the gap shifted by the augmented Lagrangian's multiplier;
+   * - **nodes** (Domain decomposition/Contact pressure = nodes, the
+   *   nodal penalty of dd-newton, doc/contact-solvers.md section 6): one
+   *   term per node of S_1 for the averaged gap d_i = (1/m_i) int_S1 psi_i d,
+   *   i.e. g_i = sum_q (w_q psi_i(x_q) / m_i) g_q over all dofs of both
+   *   bodies in the node's support.
+   *
+   * J_theta is piecewise quadratic: on a fixed active set one Newton step
+   * is one linear solve with the Hessian blockdiag(K_a) + sum_active
+   * (m_i / theta_i) g_i g_i^T. On the points that matrix is assembled as it
+   * is. On the nodes the same step is solved in its mixed form, with the
+   * pressures as unknowns,
+   *   K u + sum_active m_i p_i g_i = L,  m_i (g_i . u - theta_i p_i) = m_i f_i
+   * (p_i = 0 off the active set): eliminating p gives the Hessian, but the
+   * mixed matrix does not degrade like 1/theta, since the nodal pressure is
+   * determined by body 1's trace also for theta = 0 (p from d/theta has
+   * the round-off eps |u| / (theta p): the Hessian form is 4e-8 off the
+   * uniaxial closed form at c = 1e-8, the mixed one 6e-15). The
+   * active set is that of dd-newton, {d_i + (c_i - theta_i) p_i > 0} with
+   * c_i = ContactInterface::complementarity_scale() (on the points, where
+   * p = max(0, d)/theta, it is {d_i > 0}).
+   *
+   * The method stops when the active set of the solution is the one it was
+   * computed with: the exact minimiser of (15). Should the active set
+   * return to an earlier one without settling (it cycles), the following
+   * steps are damped: (u, p) + tau (u_new - u, p_new - p) with the largest
+   * tau = 1, 1/2, ... that reduces the Euclidean norm of the Newton
+   * residual (K u - L + sum_i m_i p_i g_i on the unconstrained dofs, and
+   * m_i min(p_i, (theta_i p_i - d_i) / c_i), both forces).
    */
   class MonolithicContactSolver
   {
   public:
-    MonolithicContactSolver(const ContactProblem &problem,
-                            unsigned int          max_iterations,
-                            ConditionalOStream   &pcout);
+    /** With @p on_nodes the nodal penalty, otherwise the points. */
+    MonolithicContactSolver(ContactProblem     &problem,
+                            bool                on_nodes,
+                            unsigned int        max_iterations,
+                            ConditionalOStream &pcout);
 
     /** Solve from the bodies' current solutions (the initial active set);
      * writes the result into them and returns the Newton iterations. The
      * law of each pair gives the gap shifted by its multipliers,
      * f_n + theta lambda (the augmented Lagrangian's pressure
-     * min(0, lambda + g/theta) is the penalty pressure of that gap). */
+     * min(0, lambda + g/theta) is the penalty pressure of that gap). On
+     * the nodes the pressure p is handed to the pairs' laws
+     * (PenaltyLaw::set_contact_pressure()) for the output, the force and
+     * the estimator, as dd-newton does. */
     unsigned int
     run();
 
   private:
-    const ContactProblem &problem;
-    const unsigned int    max_iterations;
-    ConditionalOStream   &pcout;
+    /** One term of J_theta: d = sum_j g[j] u(dofs[j]) - f (global dofs). */
+    struct Penetration
+    {
+      std::vector<types::global_dof_index> dofs;
+      std::vector<double>                  g;
+      double                               f      = 0;
+      double                               weight = 0; // m_i
+      double                               theta  = 0;
+      double                               scale  = 0; // c_i
+
+      double
+      operator()(const Vector<double> &u) const;
+    };
+
+    /** The bodies' constraints in the global numbering, and the offsets. */
+    void
+    setup_constraints();
+
+    /** The terms of the interface's unknowns, in the global numbering. */
+    void
+    setup_penetrations();
+
+    /** The couplings of the bodies and of every term's support (and of
+     * its pressure, on the nodes). */
+    void
+    setup_sparsity();
+
+    /** max(0, d_i(@p u)) / theta_i: the pressure of the points. */
+    PointVector
+    penalty_pressure(const Vector<double> &u) const;
+
+    /** {d_i + (c_i - theta_i) p_i > 0}. */
+    std::vector<bool>
+    active_set(const Vector<double> &u, const PointVector &p) const;
+
+    /** One Newton step on the active set @p active: the new @p u and, on
+     * the nodes, @p p. */
+    void
+    solve_linearised(const std::vector<bool> &active,
+                     Vector<double>          &u,
+                     PointVector             &p) const;
+
+    /** The Euclidean norm of the Newton residual of (@p u, @p p). */
+    double
+    residual_norm(const Vector<double> &u, const PointVector &p) const;
+
+    /** The largest tau = 1, 1/2, ... for which (u, p) + tau (u_new - u,
+     * p_new - p) reduces residual_norm(); 1 if none does. */
+    double
+    damping(const Vector<double> &u,
+            const PointVector    &p,
+            const Vector<double> &u_new,
+            const PointVector    &p_new) const;
+
+    ContactProblem                      &problem;
+    const bool                           on_nodes;
+    const unsigned int                   max_iterations;
+    ConditionalOStream                  &pcout;
+    ContactInterface                     interface;
+    std::vector<types::global_dof_index> offset;
+    AffineConstraints<double>            constraints;
+    std::vector<Penetration>             penetrations;
+    SparsityPattern                      sparsity;
   };
 } // namespace ddcontact
 
