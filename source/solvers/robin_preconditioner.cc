@@ -2,7 +2,9 @@
 
 #include <ddcontact/solvers/robin_preconditioner.h>
 
+#include <algorithm>
 #include <map>
+#include <tuple>
 
 namespace ddcontact
 {
@@ -78,6 +80,7 @@ namespace ddcontact
                          "(Parallel/Body owners)");
 
     rows.assign(bodies.size(), {});
+    std::vector<std::tuple<unsigned int, unsigned int, double>> held;
     for (unsigned int i = 0; i < interface->size(); ++i)
     {
       const auto  &pair = *pairs[interface->shares(i)[0].pair];
@@ -92,7 +95,21 @@ namespace ddcontact
       rows[b_1].push_back(make_row(i, true, alpha));
       if (!interface->on_nodes())
         rows[b_2].push_back(make_row(i, false, 1. - alpha));
+      else
+        held.push_back({b_2, i, 1. - alpha});
     }
+    // With nodal multipliers body 2 does not precondition its pair; where
+    // it preconditions another pair as body 1, its zone of this pair is
+    // held by springs at the active nodes (the stiff side of the series).
+    for (const auto &[b, i, alpha] : held)
+      if (std::any_of(rows[b].begin(),
+                      rows[b].end(),
+                      [](const Row &row) { return row.preconditions; }))
+      {
+        Row row           = make_row(i, false, alpha);
+        row.preconditions = false;
+        rows[b].push_back(std::move(row));
+      }
     factors.clear();
     factors.resize(bodies.size());
     springs.clear();
@@ -193,7 +210,7 @@ namespace ddcontact
     {
       rhs[b].reinit(bodies[b]->n_dofs());
       for (const auto &row : rows[b])
-        if (active[row.unknown])
+        if (row.preconditions && active[row.unknown])
         {
           const double s = row.load * r[row.unknown];
           for (unsigned int i = 0; i < row.dofs.size(); ++i)
@@ -219,7 +236,7 @@ namespace ddcontact
         z[q] = r[q];
     for (unsigned int b = 0; b < bodies.size(); ++b)
       for (const auto &row : rows[b])
-        if (active[row.unknown])
+        if (row.preconditions && active[row.unknown])
           for (unsigned int i = 0; i < row.dofs.size(); ++i)
             z[row.unknown] -= row.c[i] * v[b](row.dofs[i]);
     for (unsigned int q = 0; q < r.size(); ++q)

@@ -109,6 +109,10 @@ namespace ddcontact
       double                               load;
       std::vector<types::global_dof_index> dofs;
       std::vector<double>                  c;
+      /** False for a spring only: body 2 of a pair with nodal multipliers,
+       * held at the pair's active nodes while it preconditions another
+       * pair as body 1 (the middle body of a stack). */
+      bool preconditions = true;
     };
 
     /** The Robin matrix of one body and its factorization. */
