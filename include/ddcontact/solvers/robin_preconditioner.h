@@ -51,7 +51,12 @@ namespace ddcontact
    * (c_2 / c_1) S_1, and theta is replaced by 1e-3 of the unknown's
    * compliance m (c_1 + c_2) in the preconditioner only: the springs are
    * then a thousand times stiffer than the surface, and the preconditioner
-   * is the Dirichlet one of FETI to 1e-3.
+   * is the Dirichlet one of FETI to 1e-3. A body that is body 1 of one
+   * pair and body 2 of another (the middle body of a stack) holds the
+   * zone of the second pair by the same springs at its active nodes in
+   * its solve for the first: the other body of that pair is the stiff
+   * side of the series. Three bodies: 57 to 59 sets of body solves down to
+   * 34 to 39.
    *
    * One application is one set of body solves with these factorizations,
    * concurrently and on the bodies' processes, like the DD's solves.
