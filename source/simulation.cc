@@ -4,6 +4,7 @@
 #include <ddcontact/tasks.h>
 #include <ddcontact/version.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <functional>
 #include <iomanip>
@@ -89,6 +90,21 @@ namespace ddcontact
     }
     for_each_object<ElasticBody<2>>(
       bodies, partitioned, [](ElasticBody<2> &body) { body.setup_system(); });
+    // A floating body (ElasticBody::is_floating()) is held by contact
+    // alone; without a contact pair nothing holds it.
+    for (const auto &body : bodies)
+      if (body->is_floating() && std::none_of(parameters.contact_pairs.begin(),
+                                              parameters.contact_pairs.end(),
+                                              [&](const auto &p) {
+                                                return p.body_1 ==
+                                                         body->name() ||
+                                                       p.body_2 == body->name();
+                                              }))
+        throw InputError("Body " + body->name() +
+                         "/Dirichlet: the body is in no contact pair, so "
+                         "nothing holds its free " +
+                         body->get_rigid_modes().description() +
+                         "; prescribe the displacement on a boundary");
 
     distribution = std::make_unique<BodyDistribution>(
       raw_pointers(bodies), parameters.parallel, MPI_COMM_WORLD);

@@ -19,21 +19,6 @@ namespace
 {
   const std::string newton = "Domain decomposition/Solver=dd-newton";
 
-  /** ||u_a - u_b|| / ||u_b|| over all bodies. */
-  double
-  displacement_difference(const Simulation &a, const Simulation &b)
-  {
-    double diff = 0, norm = 0;
-    for (unsigned int i = 0; i < a.get_bodies().size(); ++i)
-    {
-      Vector<double> d = a.get_bodies()[i]->get_solution();
-      d -= b.get_bodies()[i]->get_solution();
-      diff += d.norm_sqr();
-      norm += b.get_bodies()[i]->get_solution().norm_sqr();
-    }
-    return std::sqrt(diff / norm);
-  }
-
   double
   force(const Simulation &s)
   {

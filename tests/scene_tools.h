@@ -9,6 +9,7 @@
 
 #include "test_tools.h"
 
+#include <cmath>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -34,6 +35,21 @@ namespace ddcontact
       simulation->run();
       return simulation;
     }
+    /** ||u_a - u_b|| / ||u_b|| over all bodies of two runs of one scene. */
+    inline double
+    displacement_difference(const Simulation &a, const Simulation &b)
+    {
+      double diff = 0, norm = 0;
+      for (unsigned int i = 0; i < a.get_bodies().size(); ++i)
+      {
+        dealii::Vector<double> d = a.get_bodies()[i]->get_solution();
+        d -= b.get_bodies()[i]->get_solution();
+        diff += d.norm_sqr();
+        norm += b.get_bodies()[i]->get_solution().norm_sqr();
+      }
+      return std::sqrt(diff / norm);
+    }
+
     /**
      * Run the paper's scene (prm/paper_two_bodies.prm) on coarse meshes,
      * into @p output_directory: Omega_1 refined once instead of twice,

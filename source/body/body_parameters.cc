@@ -131,25 +131,9 @@ namespace ddcontact
       bc.body_force =
         make_function(body.body_force, 2, constants, section + "Body force");
 
-    // A body without any prescribed displacement can move rigidly: its
-    // stiffness matrix is singular and the body problem (20) has no
-    // unique solution.
-    if (bc.dirichlet.empty())
-      throw InputError(section +
-                       "Dirichlet: the body has no Dirichlet boundary, so its "
-                       "stiffness is singular; prescribe a displacement on at "
-                       "least one boundary id");
-    bool has_x = false, has_y = false;
-    for (const auto &[id, d] : bc.dirichlet)
-    {
-      has_x = has_x || d.mask[0];
-      has_y = has_y || d.mask[1];
-    }
-    if (!(has_x && has_y))
-      throw InputError(
-        section + "Dirichlet: only the " + (has_x ? "x" : "y") +
-        " component is prescribed anywhere, so the body can "
-        "slide rigidly; prescribe the other component somewhere");
+    // A body whose Dirichlet conditions leave rigid motions free (none, or
+    // one component only) is floating: ElasticBody finds its rigid modes,
+    // and only dd-newton, which balances them by contact, accepts it.
     return bc;
   }
 

@@ -181,6 +181,7 @@ namespace ddcontact
     for (const auto &[id, d] : boundary_conditions.dirichlet)
       VectorTools::interpolate_boundary_values(
         get_mapping(), dof_handler, id, *d.displacement, constraints, d.mask);
+    setup_rigid_modes();
     constraints.close();
     if (mesh.is_distributed())
       complete_constraints();
@@ -189,6 +190,34 @@ namespace ddcontact
     if (solved_here)
       setup_matrix();
     is_factorized = false;
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::setup_rigid_modes()
+  {
+    if (mesh.is_distributed() || mesh.is_shared())
+    {
+      // The modes need the whole mesh on one process; a body partitioned
+      // between processes must be held by its Dirichlet conditions.
+      bool has[2] = {false, false};
+      for (const auto &[id, d] : boundary_conditions.dirichlet)
+        for (unsigned int c = 0; c < 2; ++c)
+          has[c] = has[c] || d.mask[c];
+      if (!has[0] || !has[1])
+        throw InputError(parameters.section() +
+                         "/Dirichlet: a floating body (held only by contact) "
+                         "needs a mesh on one process; prescribe both "
+                         "displacement components somewhere, or use "
+                         "Parallel/Mesh = serial");
+      return;
+    }
+    AffineConstraints<double> closed;
+    closed.copy_from(constraints);
+    closed.close();
+    rigid_modes.reinit(dof_handler, get_mapping(), boundary_conditions, closed);
+    for (const auto i : rigid_modes.fixing_dofs())
+      constraints.add_line(i);
   }
 
   template <int dim>
@@ -208,6 +237,7 @@ namespace ddcontact
   ElasticBody<dim>::assemble_system()
   {
     linear_solver->zero();
+    Vector<double> data_load(is_floating() ? dof_handler.n_dofs() : 0);
 
     using Iterator = typename DoFHandler<dim>::active_cell_iterator;
     const FEValuesExtractors::Vector displacement(0);
@@ -307,6 +337,11 @@ namespace ddcontact
         non_finite_load = non_finite_load || !std::isfinite(v);
       if (non_finite_load)
         return;
+      // The load on the dofs as assembled, before the constraints drop the
+      // fixed components: its work on the rigid modes.
+      if (is_floating())
+        for (unsigned int i = 0; i < copy.local_dof_indices[0].size(); ++i)
+          data_load(copy.local_dof_indices[0][i]) += copy.vectors[0](i);
       linear_solver->add(constraints,
                          copy.matrices[0],
                          copy.vectors[0],
@@ -332,6 +367,9 @@ namespace ddcontact
 
     if (non_finite_load)
       throw_non_finite_load(*this);
+    mode_loads.clear();
+    for (unsigned int k = 0; k < rigid_modes.size(); ++k)
+      mode_loads.push_back(rigid_modes.mode(k) * data_load);
     if ((volumetric_quadrature != nullptr))
       assemble_reduced_volumetric_term(copier);
     linear_solver->compress();

@@ -1,3 +1,4 @@
+#include <ddcontact/parameter_tools.h>
 #include <ddcontact/solvers/contact_solver.h>
 #include <ddcontact/solvers/dd_newton_solver.h>
 #include <ddcontact/solvers/neumann_dd_solver.h>
@@ -27,6 +28,17 @@ namespace ddcontact
                         const BodyDistribution              &distribution,
                         ConditionalOStream                  &pcout)
   {
+    // A floating body's equilibrium is a constraint on the contact
+    // pressure that only dd-newton's coarse problem imposes.
+    for (const auto *body : bodies)
+      if (body->is_floating() &&
+          parameters.solver != ContactSolverType::dd_newton)
+        throw InputError("Body " + body->name() +
+                         "/Dirichlet: the body is floating (its Dirichlet "
+                         "conditions leave its " +
+                         body->get_rigid_modes().description() +
+                         " free); only Domain decomposition/Solver = "
+                         "dd-newton solves floating bodies");
     if (parameters.solver == ContactSolverType::dd_newton)
       return std::make_unique<DDNewtonSolver>(
         parameters, bodies, pairs, distribution, pcout);

@@ -135,6 +135,7 @@ namespace ddcontact
     ContactSolver::start_phase();
     phase_ready = false;
     last_active.clear();
+    alpha_stale = !coarse.empty();
   }
 
   void
@@ -142,6 +143,11 @@ namespace ddcontact
   {
     AssertDimension(p.size(), interface.size());
     preconditioner.setup(interface);
+    coarse.reinit();
+    alpha.assign(coarse.size(), 0.);
+    Ga.assign(p.size(), 0.);
+    alpha_stale = !coarse.empty();
+    balanced    = coarse.empty();
     problem.solve_all(ContactProblem::Iterate(problem.get_bodies().size()),
                       u_0);
     ++n_data_solves;
@@ -155,16 +161,80 @@ namespace ddcontact
 
   PointVector
   DDNewtonSolver::newton_residual(const PointVector &x,
-                                  const PointVector &Sx) const
+                                  const PointVector &Sx,
+                                  const PointVector &Gx) const
   {
     PointVector F(x.size());
     for (unsigned int q = 0; q < x.size(); ++q)
     {
       const double theta = interface.penalty(q);
       F[q]               = std::min(interface.complementarity_scale(q) * x[q],
-                      theta * x[q] - (d_0[q] - Sx[q]));
+                      theta * x[q] - (d_0[q] - Sx[q] + Gx[q]));
     }
     return F;
+  }
+
+  std::vector<bool>
+  DDNewtonSolver::active_set(unsigned int &n_changed)
+  {
+    // The active set of the semismooth Newton step on min(c p, lambda):
+    // lambda < c p, i.e. d(p) + (c - theta) p > 0.
+    const unsigned int n = p.size();
+    std::vector<bool>  active(n);
+    PointVector        d(n);
+    for (unsigned int q = 0; q < n; ++q)
+    {
+      d[q] = d_0[q] - Sp[q] + Ga[q];
+      active[q] =
+        d[q] +
+          (interface.complementarity_scale(q) - interface.penalty(q)) * p[q] >
+        0;
+    }
+    // Floating bodies need active unknowns that hold their rigid modes:
+    // add those nearest to contact (largest d) until they do.
+    forced.assign(n, false);
+    if (!coarse.holds(active))
+    {
+      std::vector<unsigned int> order(n);
+      for (unsigned int q = 0; q < n; ++q)
+        order[q] = q;
+      std::stable_sort(order.begin(),
+                       order.end(),
+                       [&](const unsigned int a, const unsigned int b)
+                       { return d[a] > d[b]; });
+      for (const unsigned int q : order)
+        if (!active[q])
+        {
+          active[q] = true;
+          forced[q] = true;
+          if (coarse.holds(active))
+            break;
+        }
+    }
+    n_changed = 0;
+    for (unsigned int q = 0; q < n; ++q)
+      n_changed += last_active.empty() || (active[q] != last_active[q]);
+    return active;
+  }
+
+  void
+  DDNewtonSolver::estimate_amplitudes()
+  {
+    // On P = {p > 0} the gaps close: (Theta + S) p - d_0 = G alpha there,
+    // solved for alpha in the least-squares sense of (.,.)_M.
+    std::vector<bool> positive(p.size());
+    for (unsigned int q = 0; q < p.size(); ++q)
+      positive[q] = p[q] > 0;
+    std::fill(alpha.begin(), alpha.end(), 0.);
+    if (coarse.holds(positive))
+    {
+      coarse.set_active(positive);
+      PointVector r(p.size());
+      for (unsigned int q = 0; q < p.size(); ++q)
+        r[q] = interface.penalty(q) * p[q] + Sp[q] - d_0[q];
+      alpha = coarse.amplitudes(r);
+    }
+    Ga = coarse.approach(alpha);
   }
 
   unsigned int
@@ -185,15 +255,38 @@ namespace ddcontact
           My[q] = interface.penalty(q) * y[q] + Sy[q];
       return My;
     };
+    // Floating bodies: x in equilibrium (one set of solves if it was not),
+    // then residuals and directions M-orthogonal to G on the active set.
+    if (!coarse.empty())
+    {
+      coarse.set_active(active);
+      const PointVector c = coarse.correction(x);
+      if (std::any_of(c.begin(), c.end(), [](const double v) { return v; }))
+      {
+        PointVector             Sc;
+        ContactProblem::Iterate u_c;
+        interface.apply(c, u_c, Sc);
+        add(x, 1., c);
+        add(Sx, 1., Sc);
+        add(u_x, 1., u_c);
+      }
+    }
+    const auto project = [&](PointVector &v)
+    {
+      if (!coarse.empty())
+        coarse.project(v);
+    };
     PointVector r = operator_on_active(x, Sx);
     for (unsigned int q = 0; q < n; ++q)
       r[q] = active[q] ? d_0[q] - r[q] : 0.;
+    project(r);
     if (interface.norm(r) <= tolerance)
       return 0;
 
     preconditioner.update(active);
     PointVector z;
     preconditioner.vmult(z, r, active);
+    project(z);
     PointVector             s   = z, Ss;
     double                  rho = interface.inner(r, z);
     ContactProblem::Iterate u_s;
@@ -208,9 +301,11 @@ namespace ddcontact
       add(Sx, alpha, Ss);
       add(u_x, alpha, u_s);
       add(r, -alpha, Ms);
+      project(r);
       if (interface.norm(r) <= tolerance)
         break;
       preconditioner.vmult(z, r, active);
+      project(z);
       const double rho_new = interface.inner(r, z);
       for (unsigned int q = 0; q < n; ++q)
         s[q] = z[q] + (rho_new / rho) * s[q];
@@ -225,6 +320,8 @@ namespace ddcontact
     const auto &bodies = problem.get_bodies();
     last_u_tilde       = u_0;
     add(last_u_tilde, 1., u_p);
+    if (!coarse.empty())
+      coarse.add_motion(alpha, last_u_tilde);
     for (unsigned int b = 0; b < bodies.size(); ++b)
       bodies[b]->get_solution() = last_u_tilde[b];
     // u_0 + u_p solves the body problems (20) loaded by sigma_n = -p.
@@ -251,23 +348,33 @@ namespace ddcontact
       scale       = interface.norm(overlap);
       phase_ready = true;
     }
+    if (alpha_stale)
+    {
+      estimate_amplitudes();
+      alpha_stale = false;
+    }
     if (records.size() - phase_start >= parameters.n_newton)
       stop_at_iteration_limit("the Newton method of dd-newton");
 
-    const double psi = interface.norm(newton_residual(p, Sp));
-    // The active set of the semismooth Newton step on min(c p, lambda):
-    // lambda < c p, i.e. d(p) + (c - theta) p > 0.
-    std::vector<bool> active(p.size());
-    unsigned int      n_active = 0, n_changed = 0;
+    const double       psi       = interface.norm(newton_residual(p, Sp, Ga));
+    unsigned int       n_changed = 0;
+    std::vector<bool>  active    = active_set(n_changed);
+    const unsigned int n_active =
+      std::count(active.begin(), active.end(), true);
+    // The same active set again, completed by unknowns that pull (p < 0):
+    // only tension holds the floating modes, and the Newton method would
+    // repeat this step for ever.
+    bool pulled = false;
     for (unsigned int q = 0; q < p.size(); ++q)
-    {
-      active[q] =
-        d_0[q] - Sp[q] +
-          (interface.complementarity_scale(q) - interface.penalty(q)) * p[q] >
-        0;
-      n_active += active[q];
-      n_changed += last_active.empty() || (active[q] != last_active[q]);
-    }
+      pulled = pulled || (forced[q] && p[q] < 0);
+    if (n_changed == 0 && pulled)
+      throw DivergenceError(
+        "contact holds the rigid motion of the floating bodies (" +
+        coarse.description() +
+        ") only by tension: they form a mechanism (e.g. a cylinder turning "
+        "about its axis, or a punch without a load toward its support); "
+        "prescribe that displacement component on a boundary, or load the "
+        "body toward the contact");
     // Warm start: p off the new active set is set to zero, and S p with it.
     PointVector             x = p, Sx = Sp;
     ContactProblem::Iterate u_x = u_p;
@@ -298,18 +405,33 @@ namespace ddcontact
     n_factorizations += preconditioner.factorizations() - factorizations;
     krylov_iterations += cg;
     last_active = active;
+    // The floating modes' amplitudes: (Theta + S) x - d_0 = G alpha on the
+    // active set (projected CG leaves only that part of the residual).
+    std::vector<double> alpha_x;
+    PointVector         Gx(x.size(), 0.);
+    if (!coarse.empty())
+    {
+      PointVector r(x.size());
+      for (unsigned int q = 0; q < x.size(); ++q)
+        r[q] = interface.penalty(q) * x[q] + Sx[q] - d_0[q];
+      alpha_x = coarse.amplitudes(r);
+      Gx      = coarse.approach(alpha_x);
+    }
 
     // Damping: the largest tau = 1, 1/2, ... that reduces ||Phi||_W (d is
     // affine in p, so every trial is free); the full step if none does.
+    // With floating bodies only between two pressures in equilibrium, so
+    // that the damped one is in equilibrium too.
     double tau     = 1;
-    double psi_new = interface.norm(newton_residual(x, Sx));
-    if (psi_new >= psi && psi > 0)
+    double psi_new = interface.norm(newton_residual(x, Sx, Gx));
+    if (psi_new >= psi && psi > 0 && balanced)
       for (double t = 0.5; t > 1e-3; t /= 2)
       {
-        PointVector p_t = p, Sp_t = Sp;
+        PointVector p_t = p, Sp_t = Sp, Ga_t = Ga;
         blend(p_t, t, x);
         blend(Sp_t, t, Sx);
-        const double psi_t = interface.norm(newton_residual(p_t, Sp_t));
+        blend(Ga_t, t, Gx);
+        const double psi_t = interface.norm(newton_residual(p_t, Sp_t, Ga_t));
         if (psi_t < (1 - 1e-4 * t) * psi)
         {
           tau     = t;
@@ -324,6 +446,14 @@ namespace ddcontact
     blend(p, tau, x);
     blend(Sp, tau, Sx);
     blend(u_p, tau, u_x);
+    blend(Ga, tau, Gx);
+    blend(alpha, tau, alpha_x);
+    balanced = true;
+    // A floating body's d_0 is that of its clamped components, which may
+    // carry the whole load and see no overlap: the residual is then
+    // measured against the approach of the bodies under the pressure.
+    if (!coarse.empty())
+      scale = std::max(scale, interface.norm(Sp));
     store_iterate();
 
     IterationRecord record;

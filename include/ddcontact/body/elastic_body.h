@@ -21,6 +21,7 @@
 #include <ddcontact/body/body_stresses.h>
 #include <ddcontact/body/boundary_conditions.h>
 #include <ddcontact/body/material.h>
+#include <ddcontact/body/rigid_body_modes.h>
 #include <ddcontact/parameters.h>
 
 #include <functional>
@@ -282,6 +283,31 @@ namespace ddcontact
       return linear_solver->load_vector();
     }
 
+    /** The rigid motions the Dirichlet conditions (5) leave free: none
+     * for a held body; for a floating one (held only by contact) they are
+     * clamped at a few components (RigidBodyModes::fixing_dofs()), which
+     * makes the stiffness regular (serial meshes only). */
+    const RigidBodyModes<dim> &
+    get_rigid_modes() const
+    {
+      return rigid_modes;
+    }
+
+    bool
+    is_floating() const
+    {
+      return rigid_modes.size() > 0;
+    }
+
+    /** The work of the body's data (body force and tractions of (12)) on
+     * every free rigid mode: the body is in equilibrium when the contact
+     * load does the opposite work on each. */
+    const std::vector<double> &
+    get_mode_loads() const
+    {
+      return mode_loads;
+    }
+
     const Material &
     get_material() const
     {
@@ -335,6 +361,11 @@ namespace ddcontact
     void
     complete_constraints();
 
+    /** The free rigid modes (rigid_modes) and their fixed components,
+     * added to the open @p constraints. */
+    void
+    setup_rigid_modes();
+
     const BodyParameters          parameters;
     const Material                material;
     const BoundaryConditions<dim> boundary_conditions;
@@ -351,6 +382,8 @@ namespace ddcontact
 
     AffineConstraints<double> constraints;
     Vector<double>            solution;
+    RigidBodyModes<dim>       rigid_modes;
+    std::vector<double>       mode_loads;
 
     std::unique_ptr<BodyLinearSolver<dim>> linear_solver;
     bool                                   is_factorized = false;

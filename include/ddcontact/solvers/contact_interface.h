@@ -154,6 +154,14 @@ namespace ddcontact
     PointVector
     penetration(const ContactProblem::Iterate &u) const;
 
+    /** The averaged approach M^{-1} Psi W (u_1n + u_2n) of @p u, without
+     * the gap: the linear part of penetration(). */
+    PointVector
+    normal_approach(const ContactProblem::Iterate &u) const
+    {
+      return average(jump(u));
+    }
+
     /** Sx = S @p x, and the displacements @p u of the bodies loaded by the
      * pressure @p x alone: one set of homogeneous body solves. */
     void

@@ -3,6 +3,7 @@
 
 #include <ddcontact/solvers/contact_interface.h>
 #include <ddcontact/solvers/contact_solver.h>
+#include <ddcontact/solvers/rigid_mode_coarse_space.h>
 #include <ddcontact/solvers/robin_preconditioner.h>
 
 #include <string>
@@ -53,6 +54,14 @@ namespace ddcontact
    * linear multiplier field, handed to the pairs' laws
    * (PenaltyLaw::set_contact_pressure()) for the output and the
    * estimator.
+   *
+   * Floating bodies (held only by contact, ElasticBody::is_floating()) are
+   * solved with a few components clamped, and their rigid modes enter as a
+   * coarse problem (RigidModeCoarseSpace): the penetration is d_0 - S p +
+   * G alpha, and every Newton step solves for p and the modes' amplitudes
+   * alpha with the bodies' equilibrium as a constraint, by projected CG
+   * (FETI). An active set too small to hold the modes is completed by the
+   * unknowns nearest to contact.
    */
   class DDNewtonSolver : public ContactSolver
   {
@@ -107,14 +116,31 @@ namespace ddcontact
     void
     setup_mesh();
 
-    /** Phi(p) = min(c p, Theta p - d_0 + S p) for @p p and @p Sp = S p. */
+    /** Phi(p) = min(c p, Theta p - d) with the penetration d = d_0 - S p +
+     * G alpha, for @p p, @p Sp = S p and @p Ga = G alpha. */
     PointVector
-    newton_residual(const PointVector &p, const PointVector &Sp) const;
+    newton_residual(const PointVector &p,
+                    const PointVector &Sp,
+                    const PointVector &Ga) const;
+
+    /** The unknowns A of the Newton step, from the current iterate;
+     * @p n_changed counts those that changed since the last step;
+     * `forced` marks those added only to hold the floating modes. */
+    std::vector<bool>
+    active_set(unsigned int &n_changed);
+
+    /** For floating bodies: the amplitudes alpha that fit the gaps where
+     * the pressure is positive, for the pressure of another mesh or
+     * phase (zero if these do not hold the modes). */
+    void
+    estimate_amplitudes();
 
     /**
      * Preconditioned CG on (Theta + S_AA) x_A = d_0,A from x (zero off
      * @p active) until ||r||_W <= @p tolerance; @p Sx = S x and @p u_x,
-     * the bodies' response to x, follow x. Returns the iterations.
+     * the bodies' response to x, follow x. Returns the iterations. With
+     * floating bodies x is first put in equilibrium, and the CG is
+     * projected (RigidModeCoarseSpace).
      */
     unsigned int
     solve_active_system(const std::vector<bool> &active,
@@ -131,9 +157,10 @@ namespace ddcontact
     ContactInterface interface {
       problem, parameters.multipliers_on_nodes(), parameters.exact_contact()
     };
-    RobinPreconditioner preconditioner{problem};
-    bool                mesh_ready  = false; // interface, u_0, S p
-    bool                phase_ready = false; // d_0 with the multipliers
+    RobinPreconditioner  preconditioner{problem};
+    RigidModeCoarseSpace coarse{problem, interface};
+    bool                 mesh_ready  = false; // interface, u_0, S p
+    bool                 phase_ready = false; // d_0 with the multipliers
 
     ContactProblem::Iterate u_0;       // the bodies under their data alone
     PointVector             d_0;       // its penetration
@@ -141,6 +168,11 @@ namespace ddcontact
     PointVector             p, Sp;     // the pressure and S p
     ContactProblem::Iterate u_p;       // the bodies' response to p
     std::vector<bool>       last_active;
+    std::vector<bool>       forced; // active only to hold floating modes
+    std::vector<double>     alpha;  // floating modes' amplitudes
+    PointVector             Ga;     // G alpha
+    bool                    alpha_stale = false; // estimate_amplitudes()
+    bool                    balanced    = true;  // p in equilibrium
 
     unsigned int n_data_solves     = 0;
     unsigned int n_factorizations  = 0; // of the preconditioner, all meshes

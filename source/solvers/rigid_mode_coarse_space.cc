@@ -1,0 +1,215 @@
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <ddcontact/parameter_tools.h>
+#include <ddcontact/solvers/rigid_mode_coarse_space.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ddcontact
+{
+  namespace
+  {
+    /** The smallest singular value of @p h scaled to a unit diagonal by
+     * the diagonal @p d (of H on all unknowns). */
+    double
+    smallest_scaled_singular_value(const FullMatrix<double>  &h,
+                                   const std::vector<double> &d)
+    {
+      const unsigned int       n = h.m();
+      LAPACKFullMatrix<double> scaled(n, n);
+      for (unsigned int a = 0; a < n; ++a)
+        for (unsigned int b = 0; b < n; ++b)
+          scaled(a, b) = h(a, b) / std::sqrt(d[a] * d[b]);
+      scaled.compute_svd();
+      return scaled.singular_value(n - 1);
+    }
+  } // namespace
+
+  RigidModeCoarseSpace::RigidModeCoarseSpace(const ContactProblem   &problem,
+                                             const ContactInterface &interface)
+    : problem(problem)
+    , interface(interface)
+  {
+  }
+
+  void
+  RigidModeCoarseSpace::reinit()
+  {
+    columns.clear();
+    loads.clear();
+    mode_of.clear();
+    active.clear();
+    const auto &bodies = problem.get_bodies();
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+    {
+      const auto &modes = bodies[b]->get_rigid_modes();
+      if (modes.size() == 0)
+        continue;
+      const std::string where = "Body " + bodies[b]->name() + "/Dirichlet: ";
+      if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+        throw InputError(where + "a floating body (held only by contact) is "
+                                 "solved on one process only; prescribe both "
+                                 "displacement components somewhere, or run "
+                                 "without mpirun");
+      for (unsigned int k = 0; k < modes.size(); ++k)
+      {
+        auto u = problem.zero_iterate();
+        u[b]   = modes.mode(k);
+        columns.push_back(interface.normal_approach(u));
+        loads.push_back(bodies[b]->get_mode_loads()[k]);
+        mode_of.emplace_back(b, k);
+      }
+    }
+    if (empty())
+      return;
+
+    // Contact must be able to hold every mode: on all unknowns H has to be
+    // regular. A mode that moves no gap (a translation along a flat zone)
+    // has H_kk = 0 against about the zone's length for the others (the
+    // modes are scaled to values of order one).
+    double total_weight = 0;
+    for (unsigned int i = 0; i < interface.size(); ++i)
+      total_weight += interface.weight(i);
+    const FullMatrix<double> h = gram({});
+    diagonal.assign(size(), 0.);
+    bool held = true;
+    for (unsigned int k = 0; k < size(); ++k)
+    {
+      diagonal[k] = h(k, k);
+      held        = held && diagonal[k] > 1e-20 * total_weight;
+    }
+    held = held && smallest_scaled_singular_value(h, diagonal) > 1e-10;
+    if (!held)
+    {
+      const auto &body = *bodies[mode_of[0].first];
+      throw InputError("Body " + body.name() +
+                       "/Dirichlet: the body is floating (free " +
+                       body.get_rigid_modes().description() +
+                       "), and contact cannot hold a rigid motion of it: it "
+                       "moves no contact gap (e.g. sliding along a flat "
+                       "zone); prescribe that displacement component "
+                       "somewhere");
+    }
+  }
+
+  std::string
+  RigidModeCoarseSpace::description() const
+  {
+    std::string s;
+    for (unsigned int k = 0; k < size(); ++k)
+      if (mode_of[k].second == 0)
+      {
+        const auto &body = *problem.get_bodies()[mode_of[k].first];
+        s += std::string(s.empty() ? "" : ", ") + body.name() + ": free " +
+             body.get_rigid_modes().description();
+      }
+    return s;
+  }
+
+  FullMatrix<double>
+  RigidModeCoarseSpace::gram(const std::vector<bool> &on) const
+  {
+    FullMatrix<double> h(size(), size());
+    for (unsigned int a = 0; a < size(); ++a)
+      for (unsigned int b = 0; b <= a; ++b)
+      {
+        double sum = 0;
+        for (unsigned int i = 0; i < interface.size(); ++i)
+          if (on.empty() || on[i])
+            sum += interface.weight(i) * columns[a][i] * columns[b][i];
+        h(a, b) = h(b, a) = sum;
+      }
+    return h;
+  }
+
+  bool
+  RigidModeCoarseSpace::holds(const std::vector<bool> &on) const
+  {
+    if (empty())
+      return true;
+    if (std::none_of(on.begin(), on.end(), [](const bool a) { return a; }))
+      return false;
+    return smallest_scaled_singular_value(gram(on), diagonal) > 1e-12;
+  }
+
+  void
+  RigidModeCoarseSpace::set_active(const std::vector<bool> &on)
+  {
+    AssertThrow(holds(on),
+                ExcMessage("the active set does not hold the floating "
+                           "bodies' rigid modes"));
+    active  = on;
+    inverse = gram(on);
+    inverse.gauss_jordan();
+  }
+
+  std::vector<double>
+  RigidModeCoarseSpace::moments(const PointVector &r) const
+  {
+    std::vector<double> m(size(), 0.);
+    for (unsigned int k = 0; k < size(); ++k)
+      for (unsigned int i = 0; i < r.size(); ++i)
+        if (active[i])
+          m[k] += interface.weight(i) * columns[k][i] * r[i];
+    return m;
+  }
+
+  std::vector<double>
+  RigidModeCoarseSpace::amplitudes(const PointVector &r) const
+  {
+    const std::vector<double> m = moments(r);
+    std::vector<double>       y(size(), 0.);
+    for (unsigned int a = 0; a < size(); ++a)
+      for (unsigned int b = 0; b < size(); ++b)
+        y[a] += inverse(a, b) * m[b];
+    return y;
+  }
+
+  PointVector
+  RigidModeCoarseSpace::approach(const std::vector<double> &alpha) const
+  {
+    PointVector g(interface.size(), 0.);
+    for (unsigned int k = 0; k < size(); ++k)
+      for (unsigned int i = 0; i < g.size(); ++i)
+        g[i] += alpha[k] * columns[k][i];
+    return g;
+  }
+
+  PointVector
+  RigidModeCoarseSpace::correction(const PointVector &x) const
+  {
+    const std::vector<double> m = moments(x);
+    std::vector<double>       y(size(), 0.);
+    for (unsigned int a = 0; a < size(); ++a)
+      for (unsigned int b = 0; b < size(); ++b)
+        y[a] += inverse(a, b) * (loads[b] - m[b]);
+    PointVector c = approach(y);
+    for (unsigned int i = 0; i < c.size(); ++i)
+      if (!active[i])
+        c[i] = 0;
+    return c;
+  }
+
+  void
+  RigidModeCoarseSpace::project(PointVector &r) const
+  {
+    const PointVector g = approach(amplitudes(r));
+    for (unsigned int i = 0; i < r.size(); ++i)
+      r[i] = active[i] ? r[i] - g[i] : 0.;
+  }
+
+  void
+  RigidModeCoarseSpace::add_motion(const std::vector<double> &alpha,
+                                   ContactProblem::Iterate   &u) const
+  {
+    const auto &bodies = problem.get_bodies();
+    for (unsigned int k = 0; k < size(); ++k)
+    {
+      const auto [b, m] = mode_of[k];
+      u[b].add(alpha[k], bodies[b]->get_rigid_modes().mode(m));
+    }
+  }
+} // namespace ddcontact
