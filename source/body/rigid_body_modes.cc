@@ -19,6 +19,12 @@ namespace ddcontact
     modes.clear();
     fixed.clear();
     weights.clear();
+    // Both components prescribed on a boundary id clamp at least two
+    // distinct points, which holds every rigid motion: nothing to compute
+    // for the bodies of most scenes.
+    for (const auto &[id, condition] : conditions.dirichlet)
+      if (condition.mask[0] && condition.mask[1])
+        return;
     const unsigned int n = dof_handler.n_dofs();
 
     // The three rigid motions at every dof: translations in x and y, and
