@@ -121,6 +121,10 @@ namespace ddcontact
             << (body->is_simplex() ? "triangles" : "quadrilaterals")
             << (body->is_mesh_distributed() ? ", p4est" : "") << ", "
             << body->get_fe().get_name() << ")" << std::endl;
+    for (const auto &body : bodies)
+      for (const auto &circle : body->get_mesh().circular_boundaries())
+        pcout << "    " << body->name() << ", curved boundary " << circle
+              << std::endl;
   }
 
   void

@@ -3,7 +3,8 @@
 // their physical curve tags 11-14 as boundary ids on the right faces; a
 // uniaxial stress state with Dirichlet data on one tag and a traction on
 // another is reproduced exactly; a tag missing from the file is an
-// InputError naming the boundary id
+// InputError naming the boundary id; a circular boundary stays on its
+// circle under refinement
 #include <deal.II/base/function_parser.h>
 
 #include <deal.II/numerics/vector_tools.h>
@@ -255,6 +256,48 @@ namespace
     check(message_names(message, {expected_message}),
           "an InputError '" + expected_message + "'");
   }
+
+  /**
+   * The curved boundary of meshes/half_cylinder.geo (arc 11 of radius 5
+   * around (0, 5), flat top 12) under refinement: twice refined, every
+   * vertex of the arc lies on the circle to round-off (without a manifold
+   * the new ones would sit on the chords, up to h^2 / (8 R) = 0.016 inside)
+   * and the top stays flat.
+   */
+  void
+  check_circular_boundary(const std::string &source_dir)
+  {
+    BodyParameters p = body_parameters("gmsh_mesh_cylinder",
+                                       source_dir + "/meshes/half_cylinder.geo",
+                                       "triangle");
+    p.dirichlet      = "12: xy: 0; 0";
+    ElasticBody<2> body(p, Constants());
+    body.make_mesh(".");
+    check(body.get_mesh().circular_boundaries().size() == 1,
+          "half cylinder: one circular boundary found (" +
+            (body.get_mesh().circular_boundaries().empty()
+               ? std::string("none")
+               : body.get_mesh().circular_boundaries()[0]) +
+            ")");
+    body.get_triangulation().refine_global(2);
+    const Point<2> centre(0, 5);
+    double         off_circle = 0, off_top = 0;
+    for (const auto &face : body.get_triangulation().active_face_iterators())
+      if (face->at_boundary())
+        for (const unsigned int v : face->vertex_indices())
+        {
+          const Point<2> x = face->vertex(v);
+          if (face->boundary_id() == 11)
+            off_circle = std::max(off_circle, std::abs(x.distance(centre) - 5));
+          else
+            off_top = std::max(off_top, std::abs(x[1] - 5));
+        }
+    check("half cylinder refined twice: arc vertices off the circle",
+          off_circle / 5,
+          1e-12);
+    check(
+      "half cylinder refined twice: top vertices off the line", off_top, 1e-12);
+  }
 } // namespace
 
 int
@@ -283,6 +326,8 @@ main(int argc, char **argv)
       body.make_mesh(".");
       check_boundary_ids(body.get_triangulation(), file + ", " + cell_type);
     }
+
+    check_circular_boundary(argc > 1 ? argv[1] : "..");
 
     check_uniaxial_tension("gmsh_mesh_tension_quads", msh, "quadrilateral");
     check_uniaxial_tension("gmsh_mesh_tension_triangles", geo, "triangle");

@@ -10,6 +10,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <ddcontact/body/body_mesh.h>
+#include <ddcontact/body/circle_manifolds.h>
 
 #include <fcntl.h>
 #include <signal.h>
@@ -224,7 +225,11 @@ namespace ddcontact
     if (parameters.mesh_type == MeshType::rectangle)
       make_rectangle();
     else
+    {
       read_file(work_directory);
+      // Curved boundaries of the file stay curved under refinement.
+      circles = attach_circle_manifolds(*tria);
+    }
 
     const bool simplex_mesh = tria->all_reference_cells_are_simplex();
     const bool quad_mesh    = tria->all_reference_cells_are_hyper_cube();

@@ -143,6 +143,14 @@ namespace ddcontact
     std::pair<double, double>
     extent_along(const Tensor<1, dim> &direction) const;
 
+    /** The boundary ids of a Gmsh mesh found to be circular arcs, which
+     * refinement follows (attach_circle_manifolds()), one line each. */
+    const std::vector<std::string> &
+    circular_boundaries() const
+    {
+      return circles;
+    }
+
   private:
     void
     make_rectangle();
@@ -171,6 +179,7 @@ namespace ddcontact
     partition_between_group();
 
     const BodyParameters               &parameters;
+    std::vector<std::string>            circles;
     const bool                          distributed;
     std::unique_ptr<Triangulation<dim>> tria;
     std::unique_ptr<const Mapping<dim>> cell_mapping;
