@@ -30,14 +30,15 @@ namespace ddcontact
   {
     prm.declare_entry(
       "Solver",
-      "dd",
+      "dd-newton",
       selection_pattern<ContactSolverType>(),
-      "dd: the parallel Neumann domain decomposition (20)-(21); "
-      "monolithic: semismooth Newton on the penalised problem "
-      "(16) for all bodies at once (the reference); dd-newton: semismooth "
-      "Newton on the contact pressure of (20), whose linear systems are "
-      "solved by preconditioned CG with one set of body solves per "
-      "iteration (doc/contact-solvers.md).");
+      "dd-newton (the default): semismooth Newton on the contact pressure "
+      "of (20), whose linear systems are solved by preconditioned CG with "
+      "one set of body solves per iteration (doc/contact-solvers.md); dd: "
+      "the paper's parallel Neumann domain decomposition (20)-(21) with the "
+      "Relaxation below, kept for reproducing the paper (and needed when a "
+      "body is solved by a process group); monolithic: semismooth Newton on "
+      "the penalised problem (16) for all bodies at once (the reference).");
     prm.declare_entry("Relaxation",
                       "fixed",
                       selection_pattern<RelaxationType>(),

@@ -63,7 +63,7 @@ namespace ddcontact
    */
   struct DDParameters
   {
-    ContactSolverType solver         = ContactSolverType::dd;
+    ContactSolverType solver         = ContactSolverType::dd_newton;
     RelaxationType    relaxation     = RelaxationType::fixed;
     double            gamma          = 0.02; // gamma of (21)
     unsigned int      anderson_depth = 8;
