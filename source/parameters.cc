@@ -293,8 +293,8 @@ namespace ddcontact
     if (adaptation.mode == AdaptationMode::combined &&
         dd.solver == ContactSolverType::monolithic)
       throw InputError("Adaptation/Mode: combined needs Domain "
-                       "decomposition/Solver = dd; use Mode = nested with the "
-                       "monolithic solver");
+                       "decomposition/Solver = dd-newton or dd; use Mode = "
+                       "nested with the monolithic solver");
     prm.enter_subsection("Parallel");
     parallel.parse(prm, body_names);
     prm.leave_subsection();
@@ -311,7 +311,7 @@ namespace ddcontact
             "process); use Mesh = auto or shared");
     if (dd.solver == ContactSolverType::monolithic && n_world_processes() > 1)
       throw InputError("Domain decomposition/Solver: monolithic runs on one "
-                       "process; use Solver = dd under mpirun");
+                       "process; use Solver = dd-newton or dd under mpirun");
 
     for (const auto &b : adaptation.bodies)
     {
