@@ -10,7 +10,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <ddcontact/body/body_mesh.h>
-#include <ddcontact/body/circle_manifolds.h>
+#include <ddcontact/body/circular_boundaries.h>
 
 #include <fcntl.h>
 #include <signal.h>
@@ -227,8 +227,13 @@ namespace ddcontact
     else
     {
       read_file(work_directory);
-      // Curved boundaries of the file stay curved under refinement.
-      circles = attach_circle_manifolds(*tria);
+      // Circular boundaries of the file stay round under refinement: the
+      // new vertices are moved onto their circles after every refinement,
+      // wherever it is done.
+      circles.find(*tria);
+      if (!circles.empty() && !snapping.connected())
+        snapping = tria->signals.post_refinement.connect(
+          [this]() { circles.snap(*tria); });
     }
 
     const bool simplex_mesh = tria->all_reference_cells_are_simplex();

@@ -9,6 +9,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <ddcontact/body/boundary_conditions.h>
+#include <ddcontact/body/circular_boundaries.h>
 #include <ddcontact/parameters.h>
 
 #include <memory>
@@ -144,11 +145,11 @@ namespace ddcontact
     extent_along(const Tensor<1, dim> &direction) const;
 
     /** The boundary ids of a Gmsh mesh found to be circular arcs, which
-     * refinement follows (attach_circle_manifolds()), one line each. */
-    const std::vector<std::string> &
+     * refinement keeps round (CircularBoundaries), one line each. */
+    std::vector<std::string>
     circular_boundaries() const
     {
-      return circles;
+      return circles.describe();
     }
 
   private:
@@ -179,7 +180,8 @@ namespace ddcontact
     partition_between_group();
 
     const BodyParameters               &parameters;
-    std::vector<std::string>            circles;
+    CircularBoundaries                  circles;
+    boost::signals2::connection         snapping; // circles.snap()
     const bool                          distributed;
     std::unique_ptr<Triangulation<dim>> tria;
     std::unique_ptr<const Mapping<dim>> cell_mapping;

@@ -1,9 +1,7 @@
-#include <deal.II/grid/manifold_lib.h>
-
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <ddcontact/body/circle_manifolds.h>
+#include <ddcontact/body/circular_boundaries.h>
 
 #include <cmath>
 #include <map>
@@ -65,17 +63,15 @@ namespace ddcontact
     }
   } // namespace
 
-  std::vector<std::string>
-  attach_circle_manifolds(Triangulation<2> &tria)
+  void
+  CircularBoundaries::find(const Triangulation<2> &tria)
   {
+    circles.clear();
     std::map<types::boundary_id, std::set<unsigned int>> vertices;
     for (const auto &face : tria.active_face_iterators())
       if (face->at_boundary())
         for (const unsigned int v : face->vertex_indices())
           vertices[face->boundary_id()].insert(face->vertex_index(v));
-
-    std::vector<std::string> found;
-    types::manifold_id       next = 1;
     for (const auto &[id, indices] : vertices)
     {
       if (indices.size() < 3)
@@ -83,20 +79,39 @@ namespace ddcontact
       std::vector<Point<2>> x;
       for (const unsigned int i : indices)
         x.push_back(tria.get_vertices()[i]);
-      Point<2> centre;
-      double   radius = 0;
-      if (!fit_circle(x, centre, radius))
-        continue;
-      for (const auto &face : tria.active_face_iterators())
-        if (face->at_boundary() && face->boundary_id() == id)
-          face->set_manifold_id(next);
-      tria.set_manifold(next, PolarManifold<2>(centre));
-      std::ostringstream line;
-      line << "id " << static_cast<unsigned int>(id) << ": circle of radius "
-           << radius << " around (" << centre << ")";
-      found.push_back(line.str());
-      ++next;
+      Circle circle{id, Point<2>(), 0.};
+      if (fit_circle(x, circle.centre, circle.radius))
+        circles.push_back(circle);
     }
-    return found;
+  }
+
+  void
+  CircularBoundaries::snap(Triangulation<2> &tria) const
+  {
+    for (const auto &face : tria.active_face_iterators())
+      if (face->at_boundary())
+        for (const auto &circle : circles)
+          if (face->boundary_id() == circle.id)
+            for (const unsigned int v : face->vertex_indices())
+            {
+              Point<2>          &x = face->vertex(v);
+              const Tensor<1, 2> r = x - circle.centre;
+              x = circle.centre + (circle.radius / r.norm()) * r;
+            }
+  }
+
+  std::vector<std::string>
+  CircularBoundaries::describe() const
+  {
+    std::vector<std::string> lines;
+    for (const auto &circle : circles)
+    {
+      std::ostringstream line;
+      line << "id " << static_cast<unsigned int>(circle.id)
+           << ": circle of radius " << circle.radius << " around ("
+           << circle.centre << ")";
+      lines.push_back(line.str());
+    }
+    return lines;
   }
 } // namespace ddcontact
