@@ -344,7 +344,7 @@ main(int argc, char **argv)
   //    order (bem_quadratic), so again |effectivity - 1| <=
   //    ||sigma_B - sigma|| / ||sigma_F - sigma|| -> 0; on these coarse
   //    meshes, where the load (width 0.25) is barely resolved, we ask for
-  //    the band [0.5, 2] of issue 16.
+  //    the band [0.5, 2] (doc/error-vs-time.md).
   std::cout << "degree 2:" << std::endl;
   std::vector<double> interpolation_errors, q2_errors;
   for (const unsigned int r : {0u, 1u, 2u})

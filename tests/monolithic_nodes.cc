@@ -106,8 +106,8 @@ main(int argc, char **argv)
   }
 
   // 3. The points at c = 1e-7 on the paper scene's default meshes: the
-  //    active set cycled (issue 17) and now, once an active set comes back,
-  //    the damped steps settle it. The answer is the pointwise penalty's,
+  //    active set cycled without damping, and now, once an active set comes
+  //    back, the damped steps settle it. The answer is the pointwise penalty's,
   //    a different discretisation of the same contact than the nodes': the
   //    forces differ by O(h) (4e-4 measured at c = 1e-8 and 1e-4 on these
   //    meshes), well within 1e-3.
