@@ -48,18 +48,21 @@ namespace ddcontact
       const auto &modes = bodies[b]->get_rigid_modes();
       if (modes.size() == 0)
         continue;
-      const std::string where = "Body " + bodies[b]->name() + "/Dirichlet: ";
+      // The loads are assembled where the body is solved; every process
+      // runs the Newton iteration, so its owner sends them to all.
+      std::vector<double> e = bodies[b]->get_mode_loads();
+      e.resize(modes.size());
       if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
-        throw InputError(where + "a floating body (held only by contact) is "
-                                 "solved on one process only; prescribe both "
-                                 "displacement components somewhere, or run "
-                                 "without mpirun");
+        Utilities::MPI::broadcast(e.data(),
+                                  e.size(),
+                                  problem.get_distribution().owner_of(b),
+                                  MPI_COMM_WORLD);
       for (unsigned int k = 0; k < modes.size(); ++k)
       {
         auto u = problem.zero_iterate();
         u[b]   = modes.mode(k);
         columns.push_back(interface.normal_approach(u));
-        loads.push_back(bodies[b]->get_mode_loads()[k]);
+        loads.push_back(e[k]);
         mode_of.emplace_back(b, k);
       }
     }
