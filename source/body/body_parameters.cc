@@ -232,7 +232,10 @@ namespace ddcontact
                         "components x, y or xy; expressions in x, y and the "
                         "scene's constants [length]. A component not listed "
                         "may be loaded by a Neumann traction on the same "
-                        "id.");
+                        "id. A body whose conditions leave a rigid motion "
+                        "free (none at all, or rollers only) is floating: "
+                        "held by contact alone, as a punch pressed by a "
+                        "force; Solver = dd-newton solves it.");
       prm.declare_entry("Neumann",
                         "",
                         Patterns::Anything(),
