@@ -229,12 +229,19 @@ namespace ddcontact
     if (coarse.holds(positive))
     {
       coarse.set_active(positive);
-      PointVector r(p.size());
-      for (unsigned int q = 0; q < p.size(); ++q)
-        r[q] = interface.penalty(q) * p[q] + Sp[q] - d_0[q];
-      alpha = coarse.amplitudes(r);
+      alpha = fitted_amplitudes(p, Sp);
     }
     Ga = coarse.approach(alpha);
+  }
+
+  std::vector<double>
+  DDNewtonSolver::fitted_amplitudes(const PointVector &x,
+                                    const PointVector &Sx) const
+  {
+    PointVector r(x.size());
+    for (unsigned int q = 0; q < x.size(); ++q)
+      r[q] = interface.penalty(q) * x[q] + Sx[q] - d_0[q];
+    return coarse.amplitudes(r);
   }
 
   unsigned int
@@ -411,10 +418,7 @@ namespace ddcontact
     PointVector         Gx(x.size(), 0.);
     if (!coarse.empty())
     {
-      PointVector r(x.size());
-      for (unsigned int q = 0; q < x.size(); ++q)
-        r[q] = interface.penalty(q) * x[q] + Sx[q] - d_0[q];
-      alpha_x = coarse.amplitudes(r);
+      alpha_x = fitted_amplitudes(x, Sx);
       Gx      = coarse.approach(alpha_x);
     }
 

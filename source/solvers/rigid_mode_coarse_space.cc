@@ -78,16 +78,38 @@ namespace ddcontact
       total_weight += interface.weight(i);
     const FullMatrix<double> h = gram({});
     diagonal.assign(size(), 0.);
-    bool held = true;
     for (unsigned int k = 0; k < size(); ++k)
-    {
       diagonal[k] = h(k, k);
-      held        = held && diagonal[k] > 1e-20 * total_weight;
-    }
-    held = held && smallest_scaled_singular_value(h, diagonal) > 1e-10;
-    if (!held)
+    // Whether the modes [first, last) of one body, or all of them, are held.
+    const auto held = [&](const unsigned int first, const unsigned int last)
     {
-      const auto &body = *bodies[mode_of[0].first];
+      FullMatrix<double>  block(last - first, last - first);
+      std::vector<double> d(diagonal.begin() + first, diagonal.begin() + last);
+      for (unsigned int a = first; a < last; ++a)
+      {
+        if (!(diagonal[a] > 1e-20 * total_weight))
+          return false;
+        for (unsigned int b = first; b < last; ++b)
+          block(a - first, b - first) = h(a, b);
+      }
+      return smallest_scaled_singular_value(block, d) > 1e-10;
+    };
+    if (!held(0, size()))
+    {
+      // The body whose own modes contact cannot hold, else the first.
+      unsigned int culprit = mode_of[0].first;
+      for (unsigned int first = 0, last = 0; first < size(); first = last)
+      {
+        last = first;
+        while (last < size() && mode_of[last].first == mode_of[first].first)
+          ++last;
+        if (!held(first, last))
+        {
+          culprit = mode_of[first].first;
+          break;
+        }
+      }
+      const auto &body = *bodies[culprit];
       throw InputError("Body " + body.name() +
                        "/Dirichlet: the body is floating (free " +
                        body.get_rigid_modes().description() +
@@ -161,14 +183,19 @@ namespace ddcontact
   }
 
   std::vector<double>
-  RigidModeCoarseSpace::amplitudes(const PointVector &r) const
+  RigidModeCoarseSpace::solve(const std::vector<double> &m) const
   {
-    const std::vector<double> m = moments(r);
-    std::vector<double>       y(size(), 0.);
+    std::vector<double> y(size(), 0.);
     for (unsigned int a = 0; a < size(); ++a)
       for (unsigned int b = 0; b < size(); ++b)
         y[a] += inverse(a, b) * m[b];
     return y;
+  }
+
+  std::vector<double>
+  RigidModeCoarseSpace::amplitudes(const PointVector &r) const
+  {
+    return solve(moments(r));
   }
 
   PointVector
@@ -184,12 +211,10 @@ namespace ddcontact
   PointVector
   RigidModeCoarseSpace::correction(const PointVector &x) const
   {
-    const std::vector<double> m = moments(x);
-    std::vector<double>       y(size(), 0.);
-    for (unsigned int a = 0; a < size(); ++a)
-      for (unsigned int b = 0; b < size(); ++b)
-        y[a] += inverse(a, b) * (loads[b] - m[b]);
-    PointVector c = approach(y);
+    std::vector<double> m = moments(x);
+    for (unsigned int k = 0; k < size(); ++k)
+      m[k] = loads[k] - m[k];
+    PointVector c = approach(solve(m));
     for (unsigned int i = 0; i < c.size(); ++i)
       if (!active[i])
         c[i] = 0;

@@ -135,6 +135,12 @@ namespace ddcontact
     void
     estimate_amplitudes();
 
+    /** alpha = H^{-1} G_A^T M ((Theta + S) x - d_0) on the coarse space's
+     * active set, for @p x and @p Sx = S x: the amplitudes that close the
+     * gaps there in the least-squares sense. */
+    std::vector<double>
+    fitted_amplitudes(const PointVector &x, const PointVector &Sx) const;
+
     /**
      * Preconditioned CG on (Theta + S_AA) x_A = d_0,A from x (zero off
      * @p active) until ||r||_W <= @p tolerance; @p Sx = S x and @p u_x,

@@ -100,6 +100,10 @@ namespace ddcontact
                ContactProblem::Iterate   &u) const;
 
   private:
+    /** H^{-1} @p m. */
+    std::vector<double>
+    solve(const std::vector<double> &m) const;
+
     /** G_A^T M r, one value per mode. */
     std::vector<double>
     moments(const PointVector &r) const;
