@@ -25,7 +25,8 @@ namespace ddcontact
   RobinPreconditioner::Row
   RobinPreconditioner::make_row(const unsigned int i,
                                 const bool         body_1,
-                                const double       alpha) const
+                                const double       alpha,
+                                const double       beta) const
   {
     const auto  &shares = interface->shares(i);
     const auto  &pair   = *problem.get_pairs()[shares[0].pair];
@@ -36,7 +37,7 @@ namespace ddcontact
     row.spring  = m / (alpha * theta);
     // rhs = C_b^T M (alpha Theta)^{-1} beta r: beta = alpha with both
     // bodies, 1 with body 1 alone.
-    row.load = interface->on_nodes() ? m / (alpha * theta) : m / theta;
+    row.load = m * beta / (alpha * theta);
 
     std::map<types::global_dof_index, double> merged;
     for (const auto &share : shares)
@@ -64,6 +65,47 @@ namespace ddcontact
     return row;
   }
 
+  bool
+  RobinPreconditioner::body_2_determines_nodes(const unsigned int k) const
+  {
+    // A vertex of S_1 inside a face of S_2 is a node whose hat function
+    // body 2's trace does not contain (body 2 coarser there): the points
+    // nearest to it on its two faces of S_1 then lie on the same face of
+    // S_2, with the same dofs. A vertex shared with S_2 separates two faces
+    // of S_2; if all do, body 2's trace contains that of body 1.
+    const auto &pair = *problem.get_pairs()[k];
+    for (unsigned int i = 0; i < interface->size(); ++i)
+    {
+      const auto &shares = interface->shares(i);
+      if (shares[0].pair != k)
+        continue;
+      // Per face of S_1 at the node, the point nearest to it.
+      std::map<unsigned int, std::pair<double, unsigned int>> nearest;
+      for (const auto &share : shares)
+      {
+        const unsigned int face = pair.points()[share.point].face;
+        auto [it, inserted] =
+          nearest.emplace(face, std::make_pair(share.psi, share.point));
+        if (!inserted && share.psi > it->second.first)
+          it->second = {share.psi, share.point};
+      }
+      if (nearest.size() < 2)
+        continue;
+      std::vector<std::vector<types::global_dof_index>> dofs;
+      for (const auto &[face, point] : nearest)
+      {
+        auto d = pair.points()[point.second].load_dofs_2;
+        if (d.empty())
+          return false; // shapes of body 2 not held here
+        std::sort(d.begin(), d.end());
+        dofs.push_back(std::move(d));
+      }
+      if (std::adjacent_find(dofs.begin(), dofs.end()) != dofs.end())
+        return false;
+    }
+    return true;
+  }
+
   void
   RobinPreconditioner::setup(const ContactInterface &contact_interface)
   {
@@ -79,12 +121,21 @@ namespace ddcontact
                          "factorize; use at most one process per body "
                          "(Parallel/Body owners)");
 
+    // Body 2 takes its share of a pair wherever its trace determines the
+    // unknowns: always on the points, for nodal multipliers when the
+    // vertices of S_1 are vertices of S_2.
+    both_bodies.assign(pairs.size(), !interface->on_nodes());
+    if (interface->on_nodes())
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        both_bodies[k] = body_2_determines_nodes(k);
+
     rows.assign(bodies.size(), {});
     std::vector<std::tuple<unsigned int, unsigned int, double>> held;
     for (unsigned int i = 0; i < interface->size(); ++i)
     {
-      const auto  &pair = *pairs[interface->shares(i)[0].pair];
-      const double c_1 =
+      const unsigned int k    = interface->shares(i)[0].pair;
+      const auto        &pair = *pairs[k];
+      const double       c_1 =
         ContactInterface::surface_compliance(pair.get_body_1());
       const double c_2 =
         ContactInterface::surface_compliance(pair.get_body_2());
@@ -92,11 +143,16 @@ namespace ddcontact
       const auto   b_1   = problem.body_index(pair.get_body_1());
       const auto   b_2   = problem.body_index(pair.get_body_2());
       // Every process keeps the rows of every body: z needs them all.
-      rows[b_1].push_back(make_row(i, true, alpha));
-      if (!interface->on_nodes())
-        rows[b_2].push_back(make_row(i, false, 1. - alpha));
+      if (both_bodies[k])
+      {
+        rows[b_1].push_back(make_row(i, true, alpha, alpha));
+        rows[b_2].push_back(make_row(i, false, 1. - alpha, 1. - alpha));
+      }
       else
+      {
+        rows[b_1].push_back(make_row(i, true, alpha, 1.));
         held.push_back({b_2, i, 1. - alpha});
+      }
     }
     // With nodal multipliers body 2 does not precondition its pair; where
     // it preconditions another pair as body 1, its zone of this pair is
@@ -106,7 +162,7 @@ namespace ddcontact
                       rows[b].end(),
                       [](const Row &row) { return row.preconditions; }))
       {
-        Row row           = make_row(i, false, alpha);
+        Row row           = make_row(i, false, alpha, 1.);
         row.preconditions = false;
         rows[b].push_back(std::move(row));
       }

@@ -43,20 +43,22 @@ namespace ddcontact
    * active set changes, about once per Newton step.
    *
    * With the nodal multipliers of exact contact (theta = 0,
-   * ContactInterface::on_nodes()) only body 1 of a pair preconditions:
-   * its trace determines the multipliers, while that of body 2 may not (a
-   * coarser body 2 leaves modes of the multiplier that it does not feel,
-   * on which its share alpha_2 Theta^{-1} would blow up). Then
-   * z = alpha_1 (alpha_1 Theta + S_1)^{-1} r, exact when S_2 =
-   * (c_2 / c_1) S_1, and theta is replaced by 1e-3 of the unknown's
-   * compliance m (c_1 + c_2) in the preconditioner only: the springs are
-   * then a thousand times stiffer than the surface, and the preconditioner
-   * is the Dirichlet one of FETI to 1e-3. A body that is body 1 of one
-   * pair and body 2 of another (the middle body of a stack) holds the
-   * zone of the second pair by the same springs at its active nodes in
-   * its solve for the first: the other body of that pair is the stiff
-   * side of the series. Three bodies: 57 to 59 sets of body solves down to
-   * 34 to 39.
+   * ContactInterface::on_nodes()) theta is replaced by 1e-3 of the
+   * unknown's compliance m (c_1 + c_2) in the preconditioner only: the
+   * springs are then a thousand times stiffer than the surface, and the
+   * preconditioner is the Dirichlet one of FETI to 1e-3. Both bodies of a
+   * pair precondition it when every vertex of S_1 is a vertex of S_2
+   * (body 2's trace then contains body 1's and determines the multipliers
+   * too): the sum is FETI's, closer to (S_1 + S_2)^{-1} than either share
+   * when the bodies differ, and the bodies' work is balanced. Otherwise
+   * (a coarser body 2 leaves modes of the multiplier that it does not
+   * feel, on which its share alpha_2 Theta^{-1} would blow up) only body 1
+   * preconditions: z = alpha_1 (alpha_1 Theta + S_1)^{-1} r, exact when
+   * S_2 = (c_2 / c_1) S_1. A body that is body 1 of one pair and body 2
+   * of another (the middle body of a stack) holds the zone of the second
+   * pair by the same springs at its active nodes in its solve for the
+   * first: the other body of that pair is the stiff side of the series.
+   * Three bodies: 57 to 59 sets of body solves down to 34 to 39.
    *
    * One application is one set of body solves with these factorizations,
    * concurrently and on the bodies' processes, like the DD's solves.
@@ -134,9 +136,17 @@ namespace ddcontact
     penalty(unsigned int i) const;
 
     /** The rows of unknown @p i on the side @p body_1 of its pair, with
-     * the share @p alpha of the pair's compliance. */
+     * the share @p alpha of the pair's compliance and the share @p beta of
+     * the residual (alpha when both bodies precondition the pair, 1 for
+     * body 1 alone). */
     Row
-    make_row(unsigned int i, bool body_1, double alpha) const;
+    make_row(unsigned int i, bool body_1, double alpha, double beta) const;
+
+    /** Whether the trace of body 2 of pair @p k determines the nodal
+     * multipliers: every vertex of S_1 is a vertex of S_2 (S_2 as fine or
+     * finer, nested). */
+    bool
+    body_2_determines_nodes(unsigned int k) const;
 
     /** The sparsity of the Robin matrix of body @p b. */
     void
@@ -152,6 +162,7 @@ namespace ddcontact
     std::vector<std::vector<Row>>            rows; // per body
     std::vector<std::unique_ptr<BodyFactor>> factors;
     std::vector<bool>                        springs; // of the factors
+    std::vector<bool> both_bodies; // per pair: body 2 preconditions too
     unsigned int                             n_factorizations = 0;
     mutable unsigned int                     applications     = 0;
   };
