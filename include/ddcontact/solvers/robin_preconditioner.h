@@ -162,9 +162,9 @@ namespace ddcontact
     std::vector<std::vector<Row>>            rows; // per body
     std::vector<std::unique_ptr<BodyFactor>> factors;
     std::vector<bool>                        springs; // of the factors
-    std::vector<bool> both_bodies; // per pair: body 2 preconditions too
-    unsigned int                             n_factorizations = 0;
-    mutable unsigned int                     applications     = 0;
+    std::vector<bool>    both_bodies; // per pair: body 2 preconditions too
+    unsigned int         n_factorizations = 0;
+    mutable unsigned int applications     = 0;
   };
 } // namespace ddcontact
 
