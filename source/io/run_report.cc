@@ -323,6 +323,8 @@ namespace ddcontact
     json["preconditioner_solve_sets"] = counts.preconditioner_solve_sets;
     json["preconditioner_factorizations"] =
       counts.preconditioner_factorizations;
+    json["pairs_preconditioned_by_both_bodies"] =
+      counts.pairs_preconditioned_by_both;
     json["newton_steps"]      = counts.newton_steps;
     json["krylov_iterations"] = counts.krylov_iterations;
     if (parameters.dd.solver == ContactSolverType::monolithic)

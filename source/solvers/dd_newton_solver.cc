@@ -493,6 +493,7 @@ namespace ddcontact
     c.body_solve_sets               = n_dd_iterations();
     c.preconditioner_solve_sets     = preconditioner.n_applications();
     c.preconditioner_factorizations = n_factorizations;
+    c.pairs_preconditioned_by_both  = preconditioner.pairs_with_both_bodies();
     c.newton_steps                  = records.size();
     c.krylov_iterations             = krylov_iterations;
     return c;

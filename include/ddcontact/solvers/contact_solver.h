@@ -47,8 +47,11 @@ namespace ddcontact
     unsigned int preconditioner_solve_sets = 0;
     /** Factorizations of all bodies for the preconditioner. */
     unsigned int preconditioner_factorizations = 0;
-    unsigned int newton_steps                  = 0;
-    unsigned int krylov_iterations             = 0;
+    /** Pairs whose two bodies share the preconditioner (RobinPreconditioner;
+     * the others are preconditioned by body 1 alone). */
+    unsigned int pairs_preconditioned_by_both = 0;
+    unsigned int newton_steps                 = 0;
+    unsigned int krylov_iterations            = 0;
   };
 
   /**

@@ -7,6 +7,7 @@
 
 #include <ddcontact/solvers/contact_interface.h>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -92,6 +93,13 @@ namespace ddcontact
     n_applications() const
     {
       return applications;
+    }
+
+    /** Pairs that both their bodies precondition (the others: body 1). */
+    unsigned int
+    pairs_with_both_bodies() const
+    {
+      return std::count(both_bodies.begin(), both_bodies.end(), true);
     }
 
     /** Factorizations of all bodies since setup(). */
