@@ -19,6 +19,15 @@ namespace ddcontact
     geometric
   };
 
+  /** Contact pair/Gap evaluation (Gap type = expression): interpolated on
+   * each face of S_1 from the face's nodes, or the expression at every
+   * contact point. */
+  enum class GapEvaluation
+  {
+    nodes,
+    points
+  };
+
   /** Contact pair/Penalty type: theta = c H / E_1, or theta itself. */
   enum class PenaltyType
   {
@@ -27,6 +36,7 @@ namespace ddcontact
   };
 
   DDCONTACT_DECLARE_SELECTION(GapType)
+  DDCONTACT_DECLARE_SELECTION(GapEvaluation)
   DDCONTACT_DECLARE_SELECTION(PenaltyType)
 
   /**
@@ -36,15 +46,16 @@ namespace ddcontact
    */
   struct ContactPairParameters
   {
-    std::string  name;
-    std::string  body_1, body_2;
-    unsigned int boundary_id_1 = 0, boundary_id_2 = 0;
-    GapType      gap_type       = GapType::expression;
-    std::string  gap_expression = "0";
-    PenaltyType  penalty_type   = PenaltyType::relative;
-    double       penalty        = 0.05; // c, or theta itself
-    double       thickness      = 0;    // H; 0: from body 1's mesh
-    unsigned int n_gauss        = 3;    // Gauss points per piece
+    std::string   name;
+    std::string   body_1, body_2;
+    unsigned int  boundary_id_1 = 0, boundary_id_2 = 0;
+    GapType       gap_type       = GapType::expression;
+    std::string   gap_expression = "0";
+    GapEvaluation gap_evaluation = GapEvaluation::nodes;
+    PenaltyType   penalty_type   = PenaltyType::relative;
+    double        penalty        = 0.05; // c, or theta itself
+    double        thickness      = 0;    // H; 0: from body 1's mesh
+    unsigned int  n_gauss        = 3;    // Gauss points per piece
 
     static void
     declare(ParameterHandler &prm);
