@@ -12,7 +12,8 @@
 # force (summed over the pairs), the contact-solve wall time and the exit
 # code (4: stopped with a message; dd-newton gives up after 40 Newton steps,
 # the DD after 2000 iterations, every run after 120 s, exit 124).
-# doc/contact-solvers.md quotes it.
+# scripts/contact_solver_table.py turns it into the table of
+# doc/contact-solvers.md section 3.
 #
 #   scripts/contact_solver_study.sh [EXECUTABLE]   (default build-release/ddcontact)
 set -uo pipefail

@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <ddcontact/solvers/robin_preconditioner.h>
@@ -36,8 +38,8 @@ namespace ddcontact
     row.unknown = i;
     row.spring  = m / (alpha * theta);
     // rhs = C_b^T M (alpha Theta)^{-1} beta r: beta = alpha with both
-    // bodies, 1 with body 1 alone.
-    row.load = m * beta / (alpha * theta);
+    // bodies (then exactly m / theta), 1 with body 1 alone.
+    row.load = m / theta * (beta / alpha);
 
     std::map<types::global_dof_index, double> merged;
     for (const auto &share : shares)
@@ -123,11 +125,13 @@ namespace ddcontact
 
     // Body 2 takes its share of a pair wherever its trace determines the
     // unknowns: always on the points, for nodal multipliers when the
-    // vertices of S_1 are vertices of S_2.
+    // vertices of S_1 are vertices of S_2 (decided alike on every process:
+    // one that does not hold body 2's shapes says no).
     both_bodies.assign(pairs.size(), !interface->on_nodes());
     if (interface->on_nodes())
       for (unsigned int k = 0; k < pairs.size(); ++k)
-        both_bodies[k] = body_2_determines_nodes(k);
+        both_bodies[k] = Utilities::MPI::min(body_2_determines_nodes(k) ? 1 : 0,
+                                             MPI_COMM_WORLD) == 1;
 
     rows.assign(bodies.size(), {});
     std::vector<std::tuple<unsigned int, unsigned int, double>> held;
