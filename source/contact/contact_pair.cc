@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/mpi_remote_point_evaluation.h>
+#include <deal.II/base/polynomial.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -290,25 +291,6 @@ namespace ddcontact
           }
       }
     }
-
-    /** The polynomial through the values @p f at the positions @p s_k
-     * (fractions of a face), at @p s (Lagrange form). */
-    double
-    interpolate_on_face(const std::vector<double> &s_k,
-                        const std::vector<double> &f,
-                        const double               s)
-    {
-      double value = 0;
-      for (unsigned int k = 0; k < s_k.size(); ++k)
-      {
-        double l = 1;
-        for (unsigned int j = 0; j < s_k.size(); ++j)
-          if (j != k)
-            l *= (s - s_k[j]) / (s_k[k] - s_k[j]);
-        value += l * f[k];
-      }
-      return value;
-    }
   } // namespace
 
   ContactPair::ContactPair(const ContactPairParameters &parameters,
@@ -360,12 +342,13 @@ namespace ddcontact
     // body 1's degree through its values at the face's nodes (the
     // Gauss-Lobatto points: the vertices for degree 1, and the midpoint for
     // 2), so that a gap the trace can follow is met exactly.
-    std::vector<double> node_s, node_f;
+    std::vector<Point<1>>                        nodes;
+    std::vector<Polynomials::Polynomial<double>> lagrange; // of the nodes
+    std::vector<double>                          node_f;   // f_n there
     if (gap_function && parameters.gap_evaluation == GapEvaluation::nodes)
     {
-      const QGaussLobatto<1> nodes(body_1.get_fe().degree + 1);
-      for (const auto &x : nodes.get_points())
-        node_s.push_back(x[0]);
+      nodes    = QGaussLobatto<1>(body_1.get_fe().degree + 1).get_points();
+      lagrange = Polynomials::generate_complete_Lagrange_basis(nodes);
     }
 
     for (const auto &face : faces_1)
@@ -374,8 +357,8 @@ namespace ddcontact
       const Tensor<1, 2> t      = face.b - face.a;
       const double       length = t.norm();
       node_f.clear();
-      for (const double s : node_s)
-        node_f.push_back(gap_function->value(face.a + s * t));
+      for (const auto &s : nodes)
+        node_f.push_back(gap_function->value(face.a + s[0] * t));
       std::vector<double> breaks = {0., 1.};
       for (const auto &v : search_2.end_points_over(face.a, face.b))
       {
@@ -425,9 +408,13 @@ namespace ddcontact
           // longer than S_2 would be loaded where nothing touches it).
           if (beyond_zone_end(p.x, p.projection, ends_2, length))
             continue;
-          p.gap = !gap_function    ? (p.projection - p.x) * p.normal
-                  : node_s.empty() ? gap_function->value(p.x)
-                                   : interpolate_on_face(node_s, node_f, s);
+          if (!gap_function)
+            p.gap = (p.projection - p.x) * p.normal;
+          else if (nodes.empty())
+            p.gap = gap_function->value(p.x);
+          else
+            for (unsigned int k = 0; k < nodes.size(); ++k)
+              p.gap += lagrange[k].value(s) * node_f[k];
           if (!std::isfinite(p.gap))
             throw InputError(section + "Gap: " + gap_at(p) +
                              " of S_1; give an expression that is finite "

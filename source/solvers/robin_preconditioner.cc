@@ -158,9 +158,10 @@ namespace ddcontact
         held.push_back({b_2, i, 1. - alpha});
       }
     }
-    // With nodal multipliers body 2 does not precondition its pair; where
-    // it preconditions another pair as body 1, its zone of this pair is
-    // held by springs at the active nodes (the stiff side of the series).
+    // Where body 2 does not precondition a pair (nodal multipliers, zones
+    // that do not nest) but preconditions another pair as body 1, its zone
+    // of this pair is held by springs at the active nodes (the stiff side
+    // of the series).
     for (const auto &[b, i, alpha] : held)
       if (std::any_of(rows[b].begin(),
                       rows[b].end(),
