@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace ddcontact
@@ -21,6 +22,7 @@ namespace ddcontact
     weights.clear();
     thetas.clear();
     scales.clear();
+    references.clear();
     points.clear();
     point_shares.clear();
     const auto &pairs = problem.get_pairs();
@@ -40,6 +42,7 @@ namespace ddcontact
       const double theta = exact ? 0. : pairs[k]->penalty();
       const double c     = surface_compliance(pairs[k]->get_body_1()) +
                        surface_compliance(pairs[k]->get_body_2());
+      const double reference = reference_of_pair(k);
       for (unsigned int i = first; i < point_shares.size(); ++i)
       {
         double m = 0;
@@ -47,9 +50,31 @@ namespace ddcontact
           m += share.psi * pairs[k]->points()[share.point].JxW;
         weights.push_back(m);
         thetas.push_back(theta);
-        scales.push_back(theta + m * c);
+        scales.push_back(m * c);
+        references.push_back(reference);
       }
     }
+  }
+
+  double
+  ContactInterface::reference_of_pair(const unsigned int k) const
+  {
+    const auto  &pair = *problem.get_pairs()[k];
+    const double L    = (k < reference_lengths.size())
+                          ? reference_lengths[k]
+                          : std::numeric_limits<double>::infinity();
+    return surface_compliance(pair.get_body_1()) *
+             std::min(pair.thickness_of_body_1(), L) +
+           surface_compliance(pair.get_body_2()) *
+             std::min(pair.thickness_of_body_2(), L);
+  }
+
+  void
+  ContactInterface::set_reference_lengths(const std::vector<double> &lengths)
+  {
+    reference_lengths = lengths;
+    for (unsigned int q = 0; q < size(); ++q)
+      references[q] = reference_of_pair(point_shares[q][0].pair);
   }
 
   void

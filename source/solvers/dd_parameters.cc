@@ -123,6 +123,14 @@ namespace ddcontact
       "hat functions, whose Newton iteration converges also for stiff "
       "penalties (c <= 1e-4). Exact contact (Augmented Lagrangian = true) "
       "with dd-newton always uses nodes; with monolithic, only points.");
+    prm.declare_entry(
+      "Penalty continuation",
+      "true",
+      Patterns::Bool(),
+      "dd-newton from zero pressure: find the active set along a path of "
+      "softer penalties (theta + t H(1 - nu^2)/E of both bodies, t = 1, "
+      "0.1, ...) before the pair's own theta or exact contact, so that the "
+      "Newton steps do not grow as the mesh is refined.");
   }
 
   void
@@ -143,6 +151,7 @@ namespace ddcontact
     write_every_iteration = prm.get_bool("Write every iteration");
     n_newton              = prm.get_integer("Max Newton iterations");
     pressure_on_nodes     = (prm.get("Contact pressure") == "nodes");
+    penalty_continuation  = prm.get_bool("Penalty continuation");
     if (pressure_on_nodes && solver == ContactSolverType::dd)
       throw InputError("Domain decomposition/Contact pressure = nodes needs "
                        "Solver = dd-newton or monolithic (the DD takes the "

@@ -112,11 +112,58 @@ namespace ddcontact
     double
     norm(const PointVector &x) const;
 
-    /** theta of the pair of unknown q (0 for exact contact). */
+    /** theta of the pair of unknown q (0 for exact contact), plus the
+     * continuation's t theta_ref,q. */
     double
     penalty(const unsigned int q) const
     {
+      return thetas[q] + continuation * references[q];
+    }
+
+    /** The pair's own theta of unknown @p q (0 for exact contact), without
+     * the continuation. */
+    double
+    target_penalty(const unsigned int q) const
+    {
       return thetas[q];
+    }
+
+    /** theta_ref,q = sum_a (1 - nu_a^2) min(H_a, L) / E_a over both bodies
+     * of the pair of unknown @p q: the compliance of the bodies across
+     * their thicknesses H_a (c = 1 of a relative penalty, for equal
+     * bodies), or across the length L of the zone where that is shorter
+     * (set_reference_lengths()). */
+    double
+    reference_penalty(const unsigned int q) const
+    {
+      return references[q];
+    }
+
+    /** The lengths L of theta_ref, one per pair (infinite if not set),
+     * kept through reinit(). */
+    void
+    set_reference_lengths(const std::vector<double> &lengths);
+
+    /** The compliance m_q (c_1 + c_2) of unknown @p q's own surface (an
+     * element's, of the order of the diagonal of S). */
+    double
+    element_compliance(const unsigned int q) const
+    {
+      return scales[q];
+    }
+
+    /** Penalty continuation (DDNewtonSolver): theta_q + @p t theta_ref,q
+     * in penalty() and complementarity_scale(), kept through reinit(). */
+    void
+    set_continuation(const double t)
+    {
+      continuation = t;
+    }
+
+    double
+    get_continuation() const
+    {
+      return continuation;
     }
 
     /** c_q = theta_q + m_q (c_1 + c_2), c_a = (1 - nu_a^2) / E_a: the
@@ -127,7 +174,7 @@ namespace ddcontact
     double
     complementarity_scale(const unsigned int q) const
     {
-      return scales[q];
+      return penalty(q) + scales[q];
     }
 
     /** Position of every unknown on S_1 (to move a pressure to new
@@ -190,6 +237,10 @@ namespace ddcontact
     PointVector
     average(const std::vector<std::vector<double>> &values) const;
 
+    /** theta_ref of pair @p k. */
+    double
+    reference_of_pair(unsigned int k) const;
+
     /** One unknown per vertex of the faces of S_1 of pair @p k (in the
      * order the points meet them). */
     void
@@ -197,7 +248,9 @@ namespace ddcontact
 
     const ContactProblem                &problem;
     const bool                           nodal, exact;
-    PointVector                          weights, thetas, scales;
+    PointVector                          weights, thetas, scales, references;
+    std::vector<double>                  reference_lengths; // per pair
+    double                               continuation = 0;
     std::vector<Point<2>>                points;
     std::vector<std::vector<PointShare>> point_shares;
     mutable unsigned int                 applications = 0;

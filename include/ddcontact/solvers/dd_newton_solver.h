@@ -55,6 +55,23 @@ namespace ddcontact
    * (PenaltyLaw::set_contact_pressure()) for the output and the
    * estimator.
    *
+   * Penalty continuation (Penalty continuation = true, from zero pressure
+   * on zones that overlap on at least 100 unknowns): started from the
+   * overlap, a primal-dual active-set method releases about one unknown at
+   * each end of a zone per step, because the tension of a too-wide zone
+   * sits in a layer of about an element; the steps grow like 1/h (paper
+   * scene, exact contact: 19 sets of body solves at refinement 2, 50 at
+   * 5). The stages theta + t theta_ref, t = 1, 1e-2, ... (theta_ref the
+   * compliance of both bodies across their thickness, or across the
+   * overlap where that is shorter), spread that layer over t theta_ref E:
+   * each stage's active set settles in a few steps and starts the next,
+   * down to the pairs' own theta once t theta_ref is below an element's
+   * compliance (the path following of Hintermueller and Kunisch for the
+   * Moreau-Yosida regularised problem, here the penalty (15) itself).
+   * A stage ends when at most 1 % of its active set changes, with loose
+   * inner solves; only the last one is converged. Paper scene, exact
+   * contact, refinement 3, 4, 5: 26, 24, 25 sets (without: 35, 39, 50).
+   *
    * Floating bodies (held only by contact, ElasticBody::is_floating()) are
    * solved with a few components clamped, and their rigid modes enter as a
    * coarse problem (RigidModeCoarseSpace): the penetration is d_0 - S p +
@@ -123,6 +140,24 @@ namespace ddcontact
                     const PointVector &Sp,
                     const PointVector &Ga) const;
 
+    /** The continuation's stage @p t if it is still much softer than the
+     * pairs' own theta and than an element's compliance somewhere
+     * (t theta_ref,q larger than ten times the first and than the second),
+     * else 0: below, the springs' boundary layer at the zone's ends is
+     * narrower than an element, and the active set is that of the pairs'
+     * theta to a node. */
+    double
+    continuation_stage(double t) const;
+
+    /** The first stage of the penalty continuation, once d_0 is known. */
+    void
+    start_continuation();
+
+    /** Whether the continuation's theta dominates S so much that Theta^{-1}
+     * preconditions better than the Robin problems (soft stages). */
+    bool
+    penalty_dominates() const;
+
     /** The unknowns A of the Newton step, from the current iterate;
      * @p n_changed counts those that changed since the last step;
      * `forced` marks those added only to hold the floating modes. */
@@ -179,6 +214,7 @@ namespace ddcontact
     PointVector             Ga;     // G alpha
     bool                    alpha_stale = false; // estimate_amplitudes()
     bool                    balanced    = true;  // p in equilibrium
+    bool continuation_pending = false; // start_continuation() at next step
 
     unsigned int n_data_solves     = 0;
     unsigned int n_factorizations  = 0; // of the preconditioner, all meshes

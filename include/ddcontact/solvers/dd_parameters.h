@@ -79,6 +79,7 @@ namespace ddcontact
     bool              print_every_iteration = false; // Output/Verbosity = full
     unsigned int      n_newton              = 50;
     bool              pressure_on_nodes     = false; // Contact pressure
+    bool              penalty_continuation  = true;
 
     /** Exact contact (theta = 0) solved directly by dd-newton with one
      * multiplier per node of S_1 (ContactInterface); the other solvers
