@@ -127,10 +127,12 @@ namespace ddcontact
       "Penalty continuation",
       "true",
       Patterns::Bool(),
-      "dd-newton from zero pressure: find the active set along a path of "
-      "softer penalties (theta + t H(1 - nu^2)/E of both bodies, t = 1, "
-      "0.1, ...) before the pair's own theta or exact contact, so that the "
-      "Newton steps do not grow as the mesh is refined.");
+      "dd-newton from zero pressure on the nodes (exact contact, Contact "
+      "pressure = nodes) where a zone overlaps on at least 100 nodes: find "
+      "the active set along a path of softer penalties (theta + t "
+      "H (1 - nu^2)/E of both bodies, t = 1, 1e-2, ...) before the pair's "
+      "own theta or exact contact, so that the Newton steps do not grow as "
+      "the mesh is refined.");
   }
 
   void

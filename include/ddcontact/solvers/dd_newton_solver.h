@@ -153,6 +153,12 @@ namespace ddcontact
     void
     start_continuation();
 
+    /** The tolerance of ||Phi||_W at the iterate @p x: eps_residual of the
+     * overlap, and on the points at most 1e-3 of ||Theta x||_W (the
+     * pressure to 0.1 %). */
+    double
+    stopping_tolerance(const PointVector &x) const;
+
     /** Whether the continuation's theta dominates S so much that Theta^{-1}
      * preconditions better than the Robin problems (soft stages). */
     bool
