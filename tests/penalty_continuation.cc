@@ -111,19 +111,20 @@ main(int argc, char **argv)
   std::vector<Run> paper_runs;
   for (const unsigned int r : {3u, 4u})
     paper_runs.push_back(measure(
-      *run_scene(paper,
-                 exact,
-                 {continuation(true),
-                  "Body omega1/Mesh/Initial refinement=" + std::to_string(1 + r),
-                  "Body omega2/Mesh/Initial refinement=" + std::to_string(r)}),
+      *run_scene(
+        paper,
+        exact,
+        {continuation(true),
+         "Body omega1/Mesh/Initial refinement=" + std::to_string(1 + r),
+         "Body omega2/Mesh/Initial refinement=" + std::to_string(r)}),
       "paper scene, refinement " + std::to_string(r) + ", continuation"));
-  const Run paper_plain = measure(
-    *run_scene(paper,
-               exact,
-               {continuation(false),
-                "Body omega1/Mesh/Initial refinement=4",
-                "Body omega2/Mesh/Initial refinement=3"}),
-    "paper scene, refinement 3, plain active set");
+  const Run paper_plain =
+    measure(*run_scene(paper,
+                       exact,
+                       {continuation(false),
+                        "Body omega1/Mesh/Initial refinement=4",
+                        "Body omega2/Mesh/Initial refinement=3"}),
+            "paper scene, refinement 3, plain active set");
   check("paper scene: the continuation's force equals the plain method's",
         relative(paper_runs[0].force, paper_plain.force),
         1e-7);
@@ -135,13 +136,14 @@ main(int argc, char **argv)
   //    run without stages: the same steps and force to the last bit.
   std::vector<Run> small;
   for (const bool on : {false, true})
-    small.push_back(measure(*run_scene(paper,
-                                       exact,
-                                       {continuation(on),
-                                        "Body omega1/Mesh/Initial refinement=2",
-                                        "Body omega2/Mesh/Initial refinement=1"}),
-                            std::string("paper scene, refinement 1, ") +
-                              (on ? "continuation" : "plain active set")));
+    small.push_back(
+      measure(*run_scene(paper,
+                         exact,
+                         {continuation(on),
+                          "Body omega1/Mesh/Initial refinement=2",
+                          "Body omega2/Mesh/Initial refinement=1"}),
+              std::string("paper scene, refinement 1, ") +
+                (on ? "continuation" : "plain active set")));
   check(small[0].force == small[1].force &&
           small[0].newton_steps == small[1].newton_steps,
         "small zone: no continuation stage");

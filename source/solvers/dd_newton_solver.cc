@@ -400,7 +400,7 @@ namespace ddcontact
       return 0;
 
     // Soft stages of the continuation: Theta^{-1}, without body solves.
-    const bool jacobi = penalty_dominates();
+    const bool jacobi       = penalty_dominates();
     const auto precondition = [&](PointVector &z, const PointVector &r)
     {
       if (!jacobi)
@@ -545,9 +545,9 @@ namespace ddcontact
     // final tolerance (with a margin) once it has settled.
     const double final_tolerance = 0.5 * stopping_tolerance(p);
     const double tolerance =
-      (n_changed == 0 && interface.get_continuation() == 0) ?
-        final_tolerance :
-        std::max(final_tolerance, 0.1 * psi);
+      (n_changed == 0 && interface.get_continuation() == 0)
+        ? final_tolerance
+        : std::max(final_tolerance, 0.1 * psi);
     const unsigned int factorizations = preconditioner.factorizations();
     const unsigned int cg = solve_active_system(active, tolerance, x, Sx, u_x);
     n_factorizations += preconditioner.factorizations() - factorizations;

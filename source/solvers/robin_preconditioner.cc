@@ -19,8 +19,9 @@ namespace ddcontact
   RobinPreconditioner::penalty(const unsigned int i) const
   {
     // Exact contact has theta = 0: the springs take 1e-3 of the compliance.
-    return (interface->penalty(i) > 0) ? interface->penalty(i)
-                                       : 1e-3 * interface->element_compliance(i);
+    return (interface->penalty(i) > 0)
+             ? interface->penalty(i)
+             : 1e-3 * interface->element_compliance(i);
   }
 
   RobinPreconditioner::Row
