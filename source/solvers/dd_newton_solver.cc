@@ -162,15 +162,19 @@ namespace ddcontact
     const bool large_zone =
       *std::max_element(overlapping.begin(), overlapping.end()) >=
       min_continuation_unknowns;
-    interface.set_continuation(
-      (large_zone && interface.on_nodes()) ? continuation_stage(1.) : 0.);
-    if (interface.get_continuation() > 0)
-    {
-      preconditioner.setup(interface);
-      pcout << "  continuation: theta + " << interface.get_continuation()
-            << " theta_ref" << std::endl;
-    }
+    if (large_zone && interface.on_nodes())
+      enter_stage(continuation_stage(1.));
     continuation_pending = false;
+  }
+
+  void
+  DDNewtonSolver::enter_stage(const double t)
+  {
+    if (t == interface.get_continuation())
+      return;
+    interface.set_continuation(t);
+    preconditioner.update_penalties();
+    pcout << "  continuation: theta + " << t << " theta_ref" << std::endl;
   }
 
   double
@@ -489,19 +493,14 @@ namespace ddcontact
     unsigned int      n_changed = 0;
     std::vector<bool> active    = active_set(n_changed);
     // Penalty continuation: once the active set of a stage has settled,
-    // the next, stiffer one starts from it (the preconditioner's springs
-    // change with theta).
-    // A stage has settled when at most 1 % of its active set changes (the
-    // last changes of a stage are the node-by-node peeling that the next
-    // stage does anyway).
+    // the next, stiffer one starts from it. A stage has settled when at most 1
+    // % of its active set changes (the last changes of a stage are the
+    // node-by-node peeling that the next stage does anyway).
     if (interface.get_continuation() > 0 && !last_active.empty() &&
         100 * n_changed <= std::count(active.begin(), active.end(), true))
     {
-      interface.set_continuation(
+      enter_stage(
         continuation_stage(continuation_factor * interface.get_continuation()));
-      preconditioner.setup(interface);
-      pcout << "  continuation: theta + " << interface.get_continuation()
-            << " theta_ref" << std::endl;
       active = active_set(n_changed);
     }
     const double       psi = interface.norm(newton_residual(p, Sp, Ga));

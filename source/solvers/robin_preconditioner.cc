@@ -33,13 +33,11 @@ namespace ddcontact
     const auto  &shares = interface->shares(i);
     const auto  &pair   = *problem.get_pairs()[shares[0].pair];
     const double m      = interface->weight(i);
-    const double theta  = penalty(i);
     Row          row;
     row.unknown = i;
-    row.spring  = m / (alpha * theta);
-    // rhs = C_b^T M (alpha Theta)^{-1} beta r: beta = alpha with both
-    // bodies (then exactly m / theta), 1 with body 1 alone.
-    row.load = m / theta * (beta / alpha);
+    row.alpha   = alpha;
+    row.beta    = beta;
+    set_penalty(row);
 
     std::map<types::global_dof_index, double> merged;
     for (const auto &share : shares)
@@ -65,6 +63,26 @@ namespace ddcontact
       row.c.push_back(v);
     }
     return row;
+  }
+
+  void
+  RobinPreconditioner::set_penalty(Row &row) const
+  {
+    const double m     = interface->weight(row.unknown);
+    const double theta = penalty(row.unknown);
+    row.spring         = m / (row.alpha * theta);
+    // rhs = C_b^T M (alpha Theta)^{-1} beta r: beta = alpha with both
+    // bodies (then exactly m / theta), 1 with body 1 alone.
+    row.load = m / theta * (row.beta / row.alpha);
+  }
+
+  void
+  RobinPreconditioner::update_penalties()
+  {
+    for (auto &body_rows : rows)
+      for (auto &row : body_rows)
+        set_penalty(row);
+    springs.clear();
   }
 
   bool

@@ -153,6 +153,11 @@ namespace ddcontact
     void
     start_continuation();
 
+    /** Go on to the continuation's stage @p t (0: the pairs' own theta):
+     * the interface's theta and the preconditioner's springs. */
+    void
+    enter_stage(double t);
+
     /** The tolerance of ||Phi||_W at the iterate @p x: eps_residual of the
      * overlap, and on the points at most 1e-3 of ||Theta x||_W (the
      * pressure to 0.1 %). */

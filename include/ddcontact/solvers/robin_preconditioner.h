@@ -74,6 +74,13 @@ namespace ddcontact
     void
     setup(const ContactInterface &interface);
 
+    /** The springs and loads for the interface's current theta (after
+     * ContactInterface::set_continuation()); the bodies are factorized
+     * again at the next update(). The rows and sparsity of setup() do not
+     * depend on theta and are kept. */
+    void
+    update_penalties();
+
     /** Assemble and factorize the Robin matrix of every body solved here
      * with springs on the unknowns with @p active (nothing if the last
      * factorization has springs on a superset of them, at most a tenth
@@ -120,6 +127,7 @@ namespace ddcontact
     struct Row
     {
       unsigned int                         unknown;
+      double                               alpha, beta; // shares, make_row()
       double                               spring;
       double                               load;
       std::vector<types::global_dof_index> dofs;
@@ -149,6 +157,11 @@ namespace ddcontact
      * body 1 alone). */
     Row
     make_row(unsigned int i, bool body_1, double alpha, double beta) const;
+
+    /** The spring m / (alpha theta) and load factor (m / theta)(beta /
+     * alpha) of @p row for the interface's current theta. */
+    void
+    set_penalty(Row &row) const;
 
     /** Whether the trace of body 2 of pair @p k determines the nodal
      * multipliers: every vertex of S_1 is a vertex of S_2 (S_2 as fine or
