@@ -20,12 +20,6 @@ namespace
 {
   const std::string newton = "Domain decomposition/Solver=dd-newton";
 
-  double
-  force(const Simulation &s)
-  {
-    return s.get_dd_solver().contact_state(0).force_1.norm();
-  }
-
   unsigned int
   body_solve_sets(const Simulation &s)
   {
@@ -59,13 +53,13 @@ main(int argc, char **argv)
     const auto solution = run_scene(uniaxial, common, {newton});
     const auto counts   = solution->get_dd_solver().counts();
     std::cout << "c = " << c << ": force " << std::setprecision(12)
-              << force(*solution) << " against " << force(*reference)
-              << std::setprecision(6) << "; " << counts.body_solve_sets
-              << " sets of body solves, " << counts.newton_steps
-              << " Newton steps, " << counts.krylov_iterations
-              << " CG iterations" << std::endl;
+              << contact_force(*solution) << " against "
+              << contact_force(*reference) << std::setprecision(6) << "; "
+              << counts.body_solve_sets << " sets of body solves, "
+              << counts.newton_steps << " Newton steps, "
+              << counts.krylov_iterations << " CG iterations" << std::endl;
     check("c = " + c + ": force equals the monolithic solver's",
-          relative(force(*solution), force(*reference)),
+          relative(contact_force(*solution), contact_force(*reference)),
           1e-8);
     check("c = " + c + ": displacements equal the monolithic solver's",
           displacement_difference(*solution, *reference),
@@ -87,11 +81,11 @@ main(int argc, char **argv)
     const double p_exact =
       1.366e-3 / (2 * (1 - nu * nu) / E + std::stod(c) / E);
     std::cout << "c = " << c << ", pressure on the nodes: force "
-              << std::setprecision(12) << force(*nodal) << " against "
+              << std::setprecision(12) << contact_force(*nodal) << " against "
               << p_exact * L << std::setprecision(6) << "; "
               << body_solve_sets(*nodal) << " sets of body solves" << std::endl;
     check("c = " + c + ", nodes: force equals the closed form",
-          relative(force(*nodal), p_exact * L),
+          relative(contact_force(*nodal), p_exact * L),
           1e-9);
   }
 
@@ -111,7 +105,8 @@ main(int argc, char **argv)
          "Body omega2/Mesh/Initial refinement=" + std::to_string(r)});
       sets.push_back(body_solve_sets(*sim));
       std::cout << "paper scene, refinement +" << r << ": " << sets.back()
-                << " sets of body solves, force " << force(*sim) << std::endl;
+                << " sets of body solves, force " << contact_force(*sim)
+                << std::endl;
     }
     check(sets[1] <= 1.5 * sets[0] && sets[0] <= 1.5 * sets[1],
           "body solves on meshes h and h/4 within a factor 1.5");
@@ -136,13 +131,13 @@ main(int argc, char **argv)
     const double p_exact = 1.366e-3 / ((1 - nu * nu) * (H1 / E + H2 / E));
     const auto   state   = sim->get_dd_solver().contact_state(0);
     std::cout << "exact contact, c = " << c << ": force "
-              << std::setprecision(12) << force(*sim) << " against "
+              << std::setprecision(12) << contact_force(*sim) << " against "
               << p_exact * L << ", peak " << state.max_pressure
               << std::setprecision(6) << "; "
               << sim->get_dd_solver().n_uzawa_updates() << " Uzawa updates, "
               << body_solve_sets(*sim) << " sets of body solves" << std::endl;
     check("exact contact, c = " + c + ": force equals the closed form",
-          relative(force(*sim), p_exact * L),
+          relative(contact_force(*sim), p_exact * L),
           1e-9);
     check("exact contact, c = " + c + ": peak pressure equals the closed form",
           relative(state.max_pressure, p_exact),
@@ -233,7 +228,8 @@ main(int argc, char **argv)
     const unsigned int fine_steps =
       nested->get_dd_solver().counts().newton_steps - coarse_steps;
     const double difference =
-      std::abs(force(*nested) - force(*direct)) / force(*direct);
+      std::abs(contact_force(*nested) - contact_force(*direct)) /
+      contact_force(*direct);
     std::cout << "nested iteration r = 1 -> 2: " << coarse_steps << " + "
               << fine_steps << " Newton steps (direct at r = 2: "
               << direct->get_dd_solver().counts().newton_steps

@@ -125,8 +125,7 @@ main(int argc, char **argv)
   check("pressures of the two orders, relative to the peak", difference, 1e-6);
   check(
     "contact force of the two orders",
-    relative(block_first_run->get_dd_solver().contact_state(0).force_1.norm(),
-             punch_first_run->get_dd_solver().contact_state(0).force_1.norm()),
+    relative(contact_force(*block_first_run), contact_force(*punch_first_run)),
     1e-6);
 
   // 2. The closed form, with the monolithic solver (Newton on (16)) at a

@@ -119,8 +119,8 @@ main(int argc, char **argv)
   // Both bodies on process 0 (process 1 only follows): the serial
   // computation with the broadcasts of a parallel run.
   const auto one = run(source_dir, "omega1: 0, omega2: 0");
-  const auto f_a = balanced->get_dd_solver().contact_state(0).force_1.norm();
-  const auto f_b = one->get_dd_solver().contact_state(0).force_1.norm();
+  const auto f_a = contact_force(*balanced);
+  const auto f_b = contact_force(*one);
   std::cout << "force " << f_a << " (two processes) and " << f_b
             << " (one); DD iterations "
             << balanced->get_dd_solver().history().size() << " and "
@@ -165,7 +165,7 @@ main(int argc, char **argv)
       check(Utilities::MPI::max(tria.n_active_cells(), world) <
               tria.n_global_active_cells(),
             mesh + ": every process holds fewer cells than the whole mesh");
-    const auto f_all = all->get_dd_solver().contact_state(0).force_1.norm();
+    const auto f_all = contact_force(*all);
     std::cout << "force " << f_all << " (" << mesh << "); DD iterations "
               << all->get_dd_solver().history().size() << std::endl;
     check(all->get_dd_solver().history().size() ==

@@ -16,12 +16,6 @@ using namespace ddcontact::testing;
 
 namespace
 {
-  double
-  force(const Simulation &s)
-  {
-    return s.get_dd_solver().contact_state(0).force_1.norm();
-  }
-
   struct Run
   {
     double       force;
@@ -32,7 +26,8 @@ namespace
   measure(const Simulation &s, const std::string &name)
   {
     const auto counts = s.get_dd_solver().counts();
-    const Run  run{force(s), counts.newton_steps, counts.body_solve_sets};
+    const Run  run{
+      contact_force(s), counts.newton_steps, counts.body_solve_sets};
     std::cout << name << ": force " << std::setprecision(12) << run.force
               << std::setprecision(6) << ", " << run.newton_steps
               << " Newton steps, " << run.sets << " sets of body solves"
@@ -118,10 +113,10 @@ main(int argc, char **argv)
     check(s->summary().at("status") == "converged",
           "plate, monolithic: converged");
     std::cout << "plate, refinement 1, monolithic: force "
-              << std::setprecision(12) << force(*s) << std::setprecision(6)
-              << std::endl;
+              << std::setprecision(12) << contact_force(*s)
+              << std::setprecision(6) << std::endl;
     check("plate: the continuation's force equals the monolithic solver's",
-          relative(coarse.force, force(*s)),
+          relative(coarse.force, contact_force(*s)),
           1e-7);
   }
   check(5 * coarse.newton_steps <= plain.newton_steps,

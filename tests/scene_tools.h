@@ -35,6 +35,13 @@ namespace ddcontact
       simulation->run();
       return simulation;
     }
+    /** The magnitude of the contact force on body 1 of pair @p pair. */
+    inline double
+    contact_force(const Simulation &s, const unsigned int pair = 0)
+    {
+      return s.get_dd_solver().contact_state(pair).force_1.norm();
+    }
+
     /** ||u_a - u_b|| / ||u_b|| over all bodies of two runs of one scene. */
     inline double
     displacement_difference(const Simulation &a, const Simulation &b)

@@ -26,7 +26,7 @@ namespace
   double
   pressure(const Simulation &sim, const double L)
   {
-    return sim.get_dd_solver().contact_state(0).force_1.norm() / L;
+    return contact_force(sim) / L;
   }
 
   /**
@@ -269,7 +269,7 @@ main(int argc, char **argv)
     {
       const auto &body = *sim.get_bodies()[1];
       return std::make_pair(
-        sim.get_dd_solver().contact_state(0).force_1.norm(),
+        contact_force(sim),
         body.stresses().at_point(Point<2>(0.5, 0.75)).displacement[1]);
     };
     const auto ref =

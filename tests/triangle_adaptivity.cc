@@ -225,18 +225,6 @@ namespace
     check(one_irregular(tria), "box-refined triangle mesh is one-irregular");
   }
 
-  double
-  contact_force(const Simulation &sim)
-  {
-    return sim.summary()
-      .at("contact")
-      .at(0)
-      .at("force")
-      .at(1)
-      .at(1)
-      .get<double>();
-  }
-
   /** (d): the paper scene, coarse, adapted by fem-bem-scaled. */
   void
   scene_test(const std::string &source_dir)
