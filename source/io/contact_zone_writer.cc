@@ -1,6 +1,7 @@
 #include <deal.II/numerics/data_component_interpretation.h>
 
 #include <ddcontact/io/contact_zone_writer.h>
+#include <ddcontact/io/vtk_flags.h>
 
 #include <fstream>
 #include <iomanip>
@@ -149,7 +150,7 @@ namespace ddcontact
     DataOutBase::write_vtu(build_patches(pair, state, multipliers),
                            names,
                            vectors,
-                           DataOutBase::VtkFlags(),
+                           vtk_flags(),
                            out);
 
     auto &pair_records = records[pair.name()];

@@ -5,6 +5,7 @@
 
 #include <ddcontact/body/smoothed_stresses.h>
 #include <ddcontact/io/output_writer.h>
+#include <ddcontact/io/vtk_flags.h>
 
 #include <algorithm>
 #include <fstream>
@@ -180,6 +181,7 @@ namespace ddcontact
       }
 
       data_out.build_patches(body.get_mapping(), body.get_fe().degree);
+      data_out.set_flags(vtk_flags());
 
       const std::string name = step_name(body.name(), step);
       if (partitioned)

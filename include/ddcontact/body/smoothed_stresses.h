@@ -26,8 +26,8 @@ namespace ddcontact
    * stress is reproduced exactly (the shape functions sum to one, and
    * the load and the mass matrix use the same quadrature).
    *
-   * sigma_11, sigma_22 and sigma_12 are projected (mass matrix factorized
-   * once, three solves); sigma_33 = nu (sigma_11 + sigma_22) and the von
+   * sigma_11, sigma_22 and sigma_12 are projected (three solves of the
+   * mass matrix by Jacobi-preconditioned CG); sigma_33 = nu (sigma_11 + sigma_22) and the von
    * Mises stress are taken from the projected components at every node.
    *
    * Only for a mesh held whole by every process (serial or shared): a
