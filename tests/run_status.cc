@@ -3,7 +3,8 @@
 // "diverged") and still writes the VTU/PVD of its last iterate; a growing
 // residual is "diverged"; a soft penalty gets the over-penetration warning
 // in summary.json, an exact contact (augmented Lagrangian) or a stiff
-// penalty none
+// penalty none; a monolithic run stopped by Max Newton iterations reports
+// its last iterate
 #include <ddcontact/io/json.h>
 #include <ddcontact/simulation.h>
 
@@ -193,6 +194,38 @@ main(int argc, char **argv)
             remedy.back() + ": no penetration warning");
     }
     check(soft->summary()["units"].is_string(), "summary.json states units");
+  }
+
+  // (d) The monolithic solver stopped by Max Newton iterations = 2: its
+  //     first step (from zero, no point active) activates every point, its
+  //     second solves that set exactly, and the third would only confirm it.
+  //     The failed run must report that last iterate, not the bodies' zero
+  //     start: force p L with the closed form p = Delta / ((1 - nu^2)(H1 +
+  //     H2)/E + theta), theta = c H1/E, of the uniaxial scene (H1 = H2 = 1,
+  //     L = 4, E = 2.1e5, nu = 0.3, c = 0.05), to the round-off of one
+  //     direct solve.
+  {
+    const std::string directory = "run_status_monolithic";
+    run_uniaxial(source_dir,
+                 directory,
+                 {"Domain decomposition/Solver=monolithic",
+                  "Domain decomposition/Max Newton iterations=2"},
+                 message);
+    check(message_names(message, {"did not settle", "Max Newton iterations"}),
+          "monolithic stopped by Max Newton iterations: says so, naming the "
+          "entry");
+    const Json   summary = read_summary(directory);
+    const double E = 2.1e5, nu = 0.3, theta = 0.05 / E;
+    const double p = 1.366e-3 / ((1 - nu * nu) * 2. / E + theta);
+    check(status_of(summary) == "diverged", "summary.json status diverged");
+    const double force = summary.contains("contact")
+                           ? summary["contact"][0]["force"][0][1].get<double>()
+                           : 0.;
+    std::cout << "monolithic, last iterate: force " << force << " against "
+              << 4 * p << std::endl;
+    check("the failed monolithic run reports its last iterate (force)",
+          relative(force, 4 * p),
+          1e-8);
   }
 
   return report();

@@ -333,6 +333,9 @@ namespace ddcontact
       if (!on_nodes)
         p = penalty_pressure(u);
     }
+    // The bodies get the last iterate also when the active set did not
+    // settle, so that the output of the failed run shows it (not zero).
+    store_iterate(u, p);
     if (iteration == max_iterations)
       throw DivergenceError(
         "the monolithic Newton solver did not settle its active set in " +
@@ -343,7 +346,14 @@ namespace ddcontact
         "iterations" +
         (on_nodes ? std::string()
                   : ", or set Domain decomposition/Contact pressure = nodes"));
+    return iteration;
+  }
 
+  void
+  MonolithicContactSolver::store_iterate(const Vector<double> &u,
+                                         const PointVector    &p)
+  {
+    const auto &bodies = problem.get_bodies();
     for (unsigned int b = 0; b < bodies.size(); ++b)
       for (types::global_dof_index i = 0; i < bodies[b]->n_dofs(); ++i)
         bodies[b]->get_solution()(i) = u(i + offset[b]);
@@ -355,6 +365,5 @@ namespace ddcontact
       for (unsigned int k = 0; k < sigma_n.size(); ++k)
         problem.law(k).set_contact_pressure(sigma_n[k], peaks[k]);
     }
-    return iteration;
   }
 } // namespace ddcontact

@@ -27,8 +27,9 @@ namespace ddcontact
    * the load and the mass matrix use the same quadrature).
    *
    * sigma_11, sigma_22 and sigma_12 are projected (three solves of the
-   * mass matrix by Jacobi-preconditioned CG); sigma_33 = nu (sigma_11 + sigma_22) and the von
-   * Mises stress are taken from the projected components at every node.
+   * mass matrix by Jacobi-preconditioned CG); sigma_33 = nu (sigma_11 +
+   * sigma_22) and the von Mises stress are taken from the projected components
+   * at every node.
    *
    * Only for a mesh held whole by every process (serial or shared): a
    * distributed (p4est) mesh would need a distributed solve, which the

@@ -132,6 +132,11 @@ namespace ddcontact
             const Vector<double> &u_new,
             const PointVector    &p_new) const;
 
+    /** Hand the iterate (@p u, @p p) to the bodies and, on the nodes, the
+     * pressure and its peak to the contact laws. */
+    void
+    store_iterate(const Vector<double> &u, const PointVector &p);
+
     ContactProblem                      &problem;
     const bool                           on_nodes;
     const unsigned int                   max_iterations;
