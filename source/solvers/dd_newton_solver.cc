@@ -662,12 +662,15 @@ namespace ddcontact
       << n - phase_start << " Newton steps (" << n_dd_iterations()
       << " sets of body solves; residual " << r << ", eps_residual "
       << parameters.eps_residual << ")";
-    const bool falling =
-      n >= phase_start + 6 && r < 0.5 * records[n - 6].residual;
-    if (falling)
+    // Under six steps there is nothing to judge a cycle by: the limit
+    // itself is what stopped the run.
+    const bool too_few = n < phase_start + 6;
+    const bool falling = !too_few && r < 0.5 * records[n - 6].residual;
+    if (too_few || falling)
     {
-      s << ", falling; raise Domain decomposition/Max Newton iterations or "
-           "Max iterations";
+      s << (too_few ? ", too few steps to tell" : ", falling")
+        << "; raise Domain decomposition/Max Newton iterations or Max "
+           "iterations";
       throw NotConvergedError(s.str());
     }
     s << ": the active set does not settle; raise " << penalty_entries();

@@ -336,14 +336,20 @@ namespace ddcontact
     // The bodies get the last iterate also when the active set did not
     // settle, so that the output of the failed run shows it (not zero).
     store_iterate(u, p);
+    const std::string unsettled =
+      "the monolithic Newton solver did not settle its active set in " +
+      std::to_string(max_iterations) + " iterations";
+    // No active set met twice: still moving, stopped by the limit alone.
+    if (iteration == max_iterations && !damped)
+      throw NotConvergedError(unsettled +
+                              " (no active set repeated); raise Domain "
+                              "decomposition/Max Newton iterations");
     if (iteration == max_iterations)
       throw DivergenceError(
-        "the monolithic Newton solver did not settle its active set in " +
-        std::to_string(max_iterations) +
-        " iterations (the active set cycles when theta is small against "
-        "the compliance of the contact zone, e.g. a slender body); raise the "
-        "contact pairs' Penalty (c) or Domain decomposition/Max Newton "
-        "iterations" +
+        unsettled +
+        " (the active set cycles when theta is small against the compliance "
+        "of the contact zone, e.g. a slender body); raise the contact pairs' "
+        "Penalty (c) or Domain decomposition/Max Newton iterations" +
         (on_nodes ? std::string()
                   : ", or set Domain decomposition/Contact pressure = nodes"));
     return iteration;
