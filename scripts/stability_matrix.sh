@@ -19,7 +19,8 @@
 #
 # usage: scripts/stability_matrix.sh [EXECUTABLE]   (default build/ddcontact)
 #   STABILITY_HUGE=1 adds the ~1e6 unknowns-per-body case (minutes, ~4 GB).
-# Writes doc/stability.csv and prints the table; doc/stability.md discusses it.
+# Writes doc/stability.csv, prints the table and writes it into the tables
+# of doc/stability.md (scripts/stability_tables.py), whose text discusses it.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 exe=$(realpath "${1:-build/ddcontact}")
@@ -366,3 +367,7 @@ print('%d cases: %s; %d hang, crash, NaN or wrong answer' %
       (len(rows), ', '.join('%d %s' % (n, k) for k, n in sorted(counts.items())), bad))
 sys.exit(1 if bad else 0)
 EOF
+status=$?
+# The tables and counts of doc/stability.md follow the CSV.
+python3 scripts/stability_tables.py || status=1
+exit $status
