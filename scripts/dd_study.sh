@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Study (not a test): iterations and wall time of the DD on the paper's scene
 # for each relaxation, and the speed-up from solving the bodies concurrently.
-# Needs the Release build (scripts/run_main_scene.sh builds it). Writes
+# Needs the Release build (scripts/run_main_scene.sh builds build/ddcontact;
+# another executable as the first argument). Writes
 # doc/dd-study.csv; doc/contact-dd.md quotes it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-exe=build/ddcontact
+exe=$(realpath "${1:-build/ddcontact}")
 out=$(mktemp -d); trap 'rm -rf "$out"' EXIT
 csv=doc/dd-study.csv
 echo "refinement,relaxation,threads,dd_iterations,contact_solve_s,u1,u2,max_pressure" > "$csv"
