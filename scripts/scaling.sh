@@ -11,16 +11,21 @@
 # of quadrilaterals so that both can be distributed: one process, two
 # processes with shared meshes, two with distributed (p4est) meshes;
 # writes doc/scaling-memory.csv. doc/scaling.md discusses both. Usage:
-#   scripts/scaling.sh [REFINEMENT [PART]]   (REFINEMENT 6 by default, 5
-#   gives 2.6e5 unknowns; PART all (default), time or memory)
+#   scripts/scaling.sh [REFINEMENT [PART [EXECUTABLE]]]   (REFINEMENT 6 by
+#   default, 5 gives 2.6e5 unknowns; PART all (default), time or memory;
+#   without EXECUTABLE it installs, builds and uses build/ddcontact)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install_deps.sh
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-ninja -C build ddcontact
 r=${1:-6}
 part=${2:-all}
-exe=build/ddcontact
+if [ $# -ge 3 ]; then
+  exe=$(realpath "$3")
+else
+  scripts/install_deps.sh
+  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  ninja -C build ddcontact
+  exe=build/ddcontact
+fi
 out=doc/scaling-runs
 mkdir -p "$out"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -31,7 +36,9 @@ common=(prm/paper_two_bodies.prm
         --set "Domain decomposition/Relaxation=anderson")
 run() { # name, processes, threads, further --set options
   echo "== $1"
-  DEAL_II_NUM_THREADS=$3 mpirun --oversubscribe -np "$2" "$exe" "${common[@]}" \
+  # --bind-to none: Open MPI binds each of up to two processes to one core,
+  # and the two threads of np1_threads2 would then share that core.
+  DEAL_II_NUM_THREADS=$3 mpirun --oversubscribe --bind-to none -np "$2" "$exe" "${common[@]}" \
     "${@:4}" --output "$out/$1" > "$out/$1.log"
   grep -E "contact S:|wall time" "$out/$1.log" | sed 's/^/   /'
 }
