@@ -13,6 +13,10 @@
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/body/smoothed_stresses.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace ddcontact
 {
   template <int dim>
@@ -97,12 +101,26 @@ namespace ddcontact
     projected.resize(5, Vector<double>(dof_handler.n_dofs()));
     for (unsigned int c = 0; c < 3; ++c)
     {
-      if (load[c].l2_norm() == 0.)
+      // The last iterate of a diverged run, written for diagnosis, may
+      // hold inf or NaN: its projection is NaN, not a failed CG.
+      if (!std::all_of(load[c].begin(),
+                       load[c].end(),
+                       [](const double v) { return std::isfinite(v); }))
+      {
+        projected[c] = std::numeric_limits<double>::quiet_NaN();
         continue;
+      }
+      // Solved for the load scaled to a largest entry of one, so that no
+      // norm of CG overflows for huge (finite) stresses.
+      const double scale = load[c].linfty_norm();
+      if (scale == 0.)
+        continue;
+      load[c] /= scale;
       SolverControl control(std::max<unsigned int>(200, mass.m()),
                             1e-14 * load[c].l2_norm());
       SolverCG<Vector<double>>(control).solve(
         mass, projected[c], load[c], jacobi);
+      projected[c] *= scale;
       constraints.distribute(projected[c]);
     }
     const Material &material = body.get_material();

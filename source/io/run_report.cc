@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <ddcontact/io/run_report.h>
+#include <ddcontact/version.h>
 
 #include <algorithm>
 #include <array>
@@ -457,8 +458,9 @@ namespace ddcontact
   RunReport::write_summary(const Results &results, const std::string &status)
   {
     Json json;
-    json["scene"]  = parameters.scene_name;
-    json["status"] = status;
+    json["scene"]         = parameters.scene_name;
+    json["code_revision"] = git_revision();
+    json["status"]        = status;
     // The code takes any consistent system of units; the scene's comments
     // say which one it uses (e.g. cm and MPa).
     json["units"]    = "consistent units of the scene; forces and energies "
