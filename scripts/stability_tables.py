@@ -7,7 +7,9 @@ that the tables and the case counts of the document are the CSV's. Each
 that group; the line "N cases — ..." gets the counts. The text around them
 is left alone.
 
-usage: scripts/stability_tables.py [REPOSITORY]   (default: this one)
+usage: scripts/stability_tables.py [--check] [REPOSITORY]   (default: this
+one); --check writes nothing and fails, naming the document, if its tables
+differ from what the CSV gives (ctest doc_tables).
 """
 import collections
 import csv
@@ -29,9 +31,9 @@ def row(r):
     return "| " + " | ".join(c.replace("|", "/") for c in cells) + " |\n"
 
 
-def main():
-    root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(
-        os.path.dirname(os.path.abspath(__file__)), "..")
+def render(root):
+    """doc/stability.md's path, and its text with the tables and counts of
+    doc/stability.csv; exits naming what is missing."""
     rows = list(csv.DictReader(open(os.path.join(root, "doc",
                                                  "stability.csv"))))
     path = os.path.join(root, "doc", "stability.md")
@@ -72,9 +74,23 @@ def main():
                       r"wrong answers\.\*\*", counts, text)
     if n != 1:
         sys.exit("stability_tables.py: no case count line in %s" % path)
+    return path, text, "tables of %d groups, %s" % (
+        len(groups), counts.replace("\n", " "))
+
+
+def main():
+    args = [a for a in sys.argv[1:] if a != "--check"]
+    root = args[0] if args else os.path.join(
+        os.path.dirname(os.path.abspath(__file__)), "..")
+    path, text, what = render(root)
+    if "--check" in sys.argv[1:]:
+        if open(path).read() != text:
+            sys.exit("%s: its tables differ from doc/stability.csv; run "
+                     "scripts/stability_tables.py" % path)
+        print("%s: %s, as in doc/stability.csv" % (path, what))
+        return
     open(path, "w").write(text)
-    print("%s: tables of %d groups, %s" % (path, len(groups),
-                                           counts.replace("\n", " ")))
+    print("%s: %s" % (path, what))
 
 
 if __name__ == "__main__":
