@@ -77,9 +77,8 @@ main(int argc, char **argv)
       run_scene(uniaxial,
                 common,
                 {newton, "Domain decomposition/Contact pressure=nodes"});
-    const double E = 2.1e5, nu = 0.3, L = 4;
-    const double p_exact =
-      1.366e-3 / (2 * (1 - nu * nu) / E + std::stod(c) / E);
+    const double L       = 4;
+    const double p_exact = uniaxial_pressure(std::stod(c));
     std::cout << "c = " << c << ", pressure on the nodes: force "
               << std::setprecision(12) << contact_force(*nodal) << " against "
               << p_exact * L << std::setprecision(6) << "; "
@@ -127,8 +126,8 @@ main(int argc, char **argv)
                 {"Output directory=dd_newton_output", newton},
                 {"Domain decomposition/Augmented Lagrangian=true",
                  "Contact pair S/Penalty=" + c});
-    const double E = 2.1e5, nu = 0.3, H1 = 1, H2 = 1, L = 4;
-    const double p_exact = 1.366e-3 / ((1 - nu * nu) * (H1 / E + H2 / E));
+    const double L       = 4;
+    const double p_exact = uniaxial_pressure(0.);
     const auto   state   = sim->get_dd_solver().contact_state(0);
     std::cout << "exact contact, c = " << c << ": force "
               << std::setprecision(12) << contact_force(*sim) << " against "

@@ -46,10 +46,9 @@ main(int argc, char **argv)
       run_scene(source_dir + "/prm/stability/uniaxial.prm",
                 {"Output directory=monolithic_nodes_output"},
                 {monolithic, nodes, "Contact pair S/Penalty=" + c});
-    const double E = 2.1e5, nu = 0.3, H = 1, L = 4;
-    const double p_exact =
-      1.366e-3 / ((1 - nu * nu) * (H / E + H / E) + std::stod(c) * H / E);
-    const auto s = state(*sim);
+    const double L       = 4;
+    const double p_exact = uniaxial_pressure(std::stod(c));
+    const auto   s       = state(*sim);
     std::cout << "uniaxial, c = " << c << ": force " << std::setprecision(15)
               << s.force_1.norm() << " against " << p_exact * L << ", peak "
               << s.max_pressure << " against " << p_exact

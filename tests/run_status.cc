@@ -201,9 +201,8 @@ main(int argc, char **argv)
   //     second solves that set exactly, and the third would only confirm it.
   //     No active set repeated: not converged, not a cycle.
   //     The failed run must report that last iterate, not the bodies' zero
-  //     start: force p L with the closed form p = Delta / ((1 - nu^2)(H1 +
-  //     H2)/E + theta), theta = c H1/E, of the uniaxial scene (H1 = H2 = 1,
-  //     L = 4, E = 2.1e5, nu = 0.3, c = 0.05), to the round-off of one
+  //     start: force p L with the closed form p of the uniaxial scene
+  //     (uniaxial_pressure(), c = 0.05, L = 4), to the round-off of one
   //     direct solve.
   {
     const std::string directory = "run_status_monolithic";
@@ -221,8 +220,7 @@ main(int argc, char **argv)
     check(message.find("cycles") == std::string::npos,
           "... and does not blame a cycle");
     const Json   summary = read_summary(directory);
-    const double E = 2.1e5, nu = 0.3, theta = 0.05 / E;
-    const double p = 1.366e-3 / ((1 - nu * nu) * 2. / E + theta);
+    const double p       = uniaxial_pressure(0.05);
     check(status_of(summary) == "not_converged",
           "summary.json status not_converged");
     const double force = summary.contains("contact")

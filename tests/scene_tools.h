@@ -42,6 +42,18 @@ namespace ddcontact
       return s.get_dd_solver().contact_state(pair).force_1.norm();
     }
 
+    /** The contact pressure of prm/stability/uniaxial.prm, two equal blocks
+     * (H = 1, L = 4, E = 2.1e5, nu = 0.3) pressed by Delta = 1.366e-3:
+     * p = Delta / ((1 - nu^2)(H1 + H2)/E + theta) with theta = c H/E of a
+     * relative penalty c (0: exact contact). Every stress state is
+     * uniaxial, so that linear elements reproduce it. */
+    inline double
+    uniaxial_pressure(const double c)
+    {
+      const double Delta = 1.366e-3, E = 2.1e5, nu = 0.3, H = 1;
+      return Delta / ((1 - nu * nu) * (H / E + H / E) + c * H / E);
+    }
+
     /** ||u_a - u_b|| / ||u_b|| over all bodies of two runs of one scene. */
     inline double
     displacement_difference(const Simulation &a, const Simulation &b)
