@@ -2,7 +2,8 @@
 """Draw the output directory of any ddcontact run.
 
 usage: plot_run.py OUTDIR [--out DIR] [--units LENGTH,STRESS]
-                   [--hertz auto|on|off] [--dpi N]
+                   [--hertz auto|on|off] [--symmetry auto|half|full]
+                   [--dpi N]
 
 Writes PNG files into OUTDIR (or DIR), each only when the run wrote what it
 needs:
@@ -11,6 +12,8 @@ needs:
                       applies (below), and the normal approach u_1n + u_2n
                       against the initial gap f_n; the iterates of
                       contact_<pair>_NNNN.csv in grey when they were written
+  hertz_<pair>.json   per pair with the Hertz curve: the closed form used
+                      (below); a stale one is removed when no curve is drawn
   convergence.png     the DD iteration (history.csv): residual and increment
                       (log scale), contact force, largest penetration
   adaptation.png      adaptive runs (statistics.csv): cells and dofs per body,
@@ -33,6 +36,35 @@ and Poisson's ratio are in parameters.prm, and (c) the closed-form
 half-width a at the computed force is at most a tenth of the contact
 zone's length and of the height of a rectangular body (the half-plane
 assumption). --hertz on draws it whenever (a) and (b) hold; off never.
+Either way the model must be known to be whole or half (below).
+
+Half models: a scene may model only the half x1 >= x0 (or x1 <= x0) of a
+Hertz contact, cut on the symmetry line x1 = x0 through the parabola's
+vertex and held there by rollers (e.g. prm/hertz_force.prm). Its contact
+force P is then that of the half, and the closed form takes the whole
+force 2P: a = sqrt(4 (2P) R / (pi E*)), p0 = 2 (2P) / (pi a). With
+--symmetry auto (default) a pair is a half model when both
+  (i)  its contact zone S_1 ends at the vertex: the vertex x0 of the fitted
+       gap parabola is within a tenth of the contact width (the x1-extent
+       of the points with positive pressure) of the first or last point of
+       contact_<pair>.csv, and that end point is in contact; and
+  (ii) a body of the pair has a roller there in parameters.prm: a Dirichlet
+       condition on components x only with u_1 = 0 (`ID: x: 0; ...`), on
+       a boundary id whose position is not known to the script (a Gmsh
+       mesh) or, for a rectangle (ids 0 left, 1 right), at x1 = x0 within
+       the same tolerance.
+(i) without (ii), a contact that stops at its vertex without a symmetry
+condition, is neither model: the curve is not drawn and the message asks
+for --symmetry. (ii) without (i), e.g. rollers on the far sides of a whole
+model, is a whole model. --symmetry half or full overrides the rule. A half
+model's plot says "half model: whole force 2P" in its legend and title and
+draws the curve only on the side of the vertex that it models; the half-plane test (c) takes the
+whole zone, twice S_1's length.
+
+For every pair with a curve the script prints one line
+  hertz <pair>: a = A, p0 = P0, whole force F (half|full model, R = ...)
+and writes hertz_<pair>.json with the same numbers (model, force of the
+run's zone, whole force, R, x0, E*, a, p0, a/L, and why).
 
 Needs matplotlib (Debian: python3-matplotlib, installed by
 scripts/install_deps.sh).
@@ -161,6 +193,32 @@ class Run:
         except (KeyError, IndexError, ValueError):
             return None
         return abs(y2 - y1)
+
+    def rollers(self, body):
+        """The rollers u_1 = 0 of a body: [(boundary id, x1 of the line or
+        None where the script cannot know it, or False for a line that is
+        not x1 = const)], from its Dirichlet entry `ID: x: 0; ... | ...`."""
+        prefix = f"Body {body}/"
+        text = self.parameters.get(prefix + "Boundary conditions/Dirichlet", "")
+        sides = {}
+        if self.parameters.get(prefix + "Mesh/Type", "rectangle") == "rectangle":
+            try:
+                x1 = float(self.parameters[prefix + "Mesh/Corner 1"].split(",")[0])
+                x2 = float(self.parameters[prefix + "Mesh/Corner 2"].split(",")[0])
+                sides = {"0": min(x1, x2), "1": max(x1, x2), "2": False,
+                         "3": False}
+            except (KeyError, IndexError, ValueError):
+                sides = {}
+        found = []
+        for entry in text.split("|"):
+            parts = [t.strip() for t in entry.split(":")]
+            if len(parts) != 3 or parts[1] != "x":
+                continue
+            values = [v.strip() for v in parts[2].split(";")]
+            if number(values[0]) != 0:
+                continue
+            found.append((parts[0], sides.get(parts[0])))
+        return found
 
 
 # --------------------------------------------------------------------------
@@ -310,15 +368,45 @@ def fit_parabola(xs, ys):
     return a, b, c, rms
 
 
-def hertz_reference(run, pair, points, mode):
-    """The Hertz curve for a pair, or (None, why not)."""
+def centre_of_pressure(points):
+    force = sum(p["pressure"] * p["weight"] for p in points)
+    return sum(p["x1"] * p["pressure"] * p["weight"] for p in points) / force
+
+
+def symmetry_of(run, bodies, points, x0, option):
+    """Whether a pair is a half model (the rule of the module docstring):
+    (True, why), (False, why), or (None, why) when the rule cannot tell."""
+    if option != "auto":
+        return option == "half", f"--symmetry {option}"
+    active = [p["x1"] for p in points if p["pressure"] > 0]
+    tol = 0.1 * (max(active) - min(active))
+    ends = [p for p in (points[0], points[-1])
+            if abs(p["x1"] - x0) <= tol and p["pressure"] > 0]
+    rollers = []
+    for body in bodies:
+        for bid, where in run.rollers(body):
+            if where is None or (where is not False and abs(where - x0) <= tol):
+                rollers.append(f"{body} id {bid}")
+    if not ends:
+        return False, "the contact zone spans the parabola's vertex"
+    if not rollers:
+        return None, (f"the contact zone S_1 ends at the parabola's vertex "
+                      f"x1 = {x0:.4g}, but no body of the pair has a roller "
+                      "u_1 = 0 there: give --symmetry half or full")
+    return True, (f"S_1 ends at the vertex x1 = {x0:.4g}, rollers u_1 = 0 "
+                  f"on {', '.join(rollers)}")
+
+
+def hertz_reference(run, pair, points, mode, symmetry="auto"):
+    """The Hertz curve for a pair (points sorted by x1), or (None, why
+    not)."""
     if mode == "off":
         return None, "off"
     active = [p for p in points if p["pressure"] > 0]
     if len(active) < 5:
         return None, "fewer than 5 points in contact"
     force = sum(p["pressure"] * p["weight"] for p in points)
-    centre = sum(p["x1"] * p["pressure"] * p["weight"] for p in points) / force
+    centre = centre_of_pressure(points)
     half = max(abs(p["x1"] - centre) for p in active)
     window = [p for p in points if abs(p["x1"] - centre) <= 2 * half]
     fit = fit_parabola([p["x1"] for p in window], [p["gap"] for p in window])
@@ -336,18 +424,28 @@ def hertz_reference(run, pair, points, mode):
     materials = [run.material(b) for b in bodies if b]
     if len(materials) != 2 or None in materials:
         return None, "materials of the pair not found in parameters.prm"
+    half_model, model_why = symmetry_of(run, [b for b in bodies if b], points,
+                                        x0, symmetry)
+    if half_model is None:
+        return None, model_why
+    whole = 2 * force if half_model else force
     e_star = 1 / sum((1 - nu * nu) / e for e, nu in materials)
-    a = math.sqrt(4 * force * radius / (math.pi * e_star))
-    p0 = 2 * force / (math.pi * a)
+    a = math.sqrt(4 * whole * radius / (math.pi * e_star))
+    p0 = 2 * whole / (math.pi * a)
     zone = max(p["x1"] for p in points) - min(p["x1"] for p in points)
+    if half_model:
+        zone *= 2
     heights = [h for h in (run.rectangle_height(b) for b in bodies if b) if h]
     limit = min([zone] + heights)
-    info = dict(R=radius, x0=x0, P=force, a=a, p0=p0, E_star=e_star,
-                ratio=a / limit)
+    info = dict(pair=pair, model="half" if half_model else "full",
+                model_reason=model_why, zone_force=force, whole_force=whole,
+                R=radius, x0=x0, E_star=e_star, a=a, p0=p0,
+                a_over_L=a / limit)
+    model = f"{info['model']} model: {model_why}"
     if mode == "auto" and a > 0.1 * limit:
         return None, (f"half-width a = {a:.3g} is {a / limit:.2g} of the zone "
-                      "or body size (half-plane needs <= 0.1)")
-    return info, f"R = {radius:.4g}, a/L = {a / limit:.2g}"
+                      f"or body size (half-plane needs <= 0.1); {model}")
+    return info, f"R = {radius:.4g}, a/L = {a / limit:.2g}; {model}"
 
 
 # --------------------------------------------------------------------------
@@ -370,12 +468,13 @@ def zoom_window(points):
 
 
 class Plotter:
-    def __init__(self, run, out, units, hertz, dpi):
+    def __init__(self, run, out, units, hertz, dpi, symmetry="auto"):
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         self.plt = plt
         self.run, self.out, self.hertz, self.dpi = run, out, hertz, dpi
+        self.symmetry = symmetry
         length, stress = units
         self.length = f"[{length}]"
         self.stress = f"[{stress}]"
@@ -400,9 +499,11 @@ class Plotter:
                 continue
             force = sum(p["pressure"] * p["weight"] for p in points)
             peak = max(p["pressure"] for p in points)
-            info, why = hertz_reference(self.run, pair, points, self.hertz)
+            info, why = hertz_reference(self.run, pair, points, self.hertz,
+                                        self.symmetry)
             print(f"{PROGRAM}: pair {pair}: Hertz curve "
                   f"{'drawn' if info else 'not drawn'} ({why})")
+            self.hertz_record(pair, info)
             inside, zoom = zoom_window(points)
             fig, (ax, bx) = self.plt.subplots(2, 1, figsize=(8, 6.4), sharex=True)
             shown = [p for p in points if inside(p["x1"])]
@@ -417,17 +518,33 @@ class Plotter:
             ax.plot(x, [p["pressure"] for p in shown], "o-", markersize=2.5,
                     linewidth=1.2, color="tab:blue", label="computed")
             if info:
-                xs = [info["x0"] - info["a"] + 2 * info["a"] * i / 400
-                      for i in range(401)]
+                # A half model's curve only over its zone.
+                left = info["x0"] - info["a"]
+                right = info["x0"] + info["a"]
+                if info["model"] == "half":
+                    if centre_of_pressure(points) >= info["x0"]:
+                        left = info["x0"]
+                    else:
+                        right = info["x0"]
+                xs = [left + (right - left) * i / 400 for i in range(401)]
+                label = (f"Hertz, half model: whole force 2P = "
+                         f"{info['whole_force']:.4g}" if info["model"] == "half"
+                         else "Hertz at the computed force")
                 ax.plot(xs, [info["p0"] * math.sqrt(max(0., 1 - ((v - info["x0"]) / info["a"]) ** 2))
                              for v in xs], "k--", linewidth=1.2,
-                        label=f"Hertz at the computed force: a = {info['a']:.4g}, "
+                        label=f"{label}: a = {info['a']:.4g}, "
                               f"p0 = {info['p0']:.4g}")
             ax.set_ylabel(f"contact pressure $-\\sigma_n$ {self.stress}")
+            half_note = ""
+            if info and info["model"] == "half":
+                half_note = (f"\nhalf model: whole force 2P = "
+                             f"{info['whole_force']:.5g} {self.force} "
+                             f"(symmetry line $x_1$ = {info['x0']:.3g})")
             ax.set_title(f"contact pair {pair}"
                          + (" (zoomed to the contact area)" if zoom else "")
                          + f"\nforce per unit thickness {force:.5g} {self.force}, "
-                         f"peak pressure {peak:.5g} {self.stress}", fontsize=9)
+                         f"peak pressure {peak:.5g} {self.stress}" + half_note,
+                         fontsize=9)
             # Headroom for the legend above the profile.
             ax.set_ylim(top=1.4 * max([peak] + ([info["p0"]] if info else [])))
             ax.grid(True, alpha=0.3)
@@ -443,6 +560,22 @@ class Plotter:
             bx.grid(True, alpha=0.3)
             bx.legend(fontsize=8, loc="upper center")
             self.save(fig, f"contact_{pair}.png")
+
+    def hertz_record(self, pair, info):
+        """Print the closed form used for a pair and write it to
+        hertz_<pair>.json; remove a stale file when there is none."""
+        path = os.path.join(self.out, f"hertz_{pair}.json")
+        if not info:
+            if os.path.isfile(path):
+                os.remove(path)
+            return
+        print(f"hertz {pair}: a = {info['a']:.6g}, p0 = {info['p0']:.6g}, "
+              f"whole force {info['whole_force']:.6g} ({info['model']} model, "
+              f"R = {info['R']:.6g}, E* = {info['E_star']:.6g})")
+        with open(path, "w") as f:
+            json.dump(info, f, indent=2)
+            f.write("\n")
+        self.written.append(path)
 
     def convergence(self):
         rows = self.run.rows("history.csv")
@@ -577,10 +710,28 @@ def units_of(run, option):
 def main(argv):
     parser = argparse.ArgumentParser(prog=PROGRAM, description=__doc__.split("\n")[0])
     parser.add_argument("outdir", help="the output directory of a run")
-    parser.add_argument("--out", help="where the PNG files go (default OUTDIR)")
-    parser.add_argument("--units", help="LENGTH,STRESS for the axis labels")
-    parser.add_argument("--hertz", choices=("auto", "on", "off"), default="auto")
-    parser.add_argument("--dpi", type=int, default=110)
+    parser.add_argument("--out", metavar="DIR",
+                        help="where the PNG (and hertz_<pair>.json) files go "
+                             "(default OUTDIR)")
+    parser.add_argument("--units", metavar="LENGTH,STRESS",
+                        help="units for the axis labels, e.g. cm,MPa "
+                             "(default: summary.json's, else none)")
+    parser.add_argument("--hertz", choices=("auto", "on", "off"), default="auto",
+                        help="draw the Hertz closed form over a pair's pressure: "
+                             "auto (default) where the gap is a parabola, both "
+                             "materials are known and the half-width a is at "
+                             "most 0.1 of the zone and body size (half-plane); "
+                             "on without the size test; off never")
+    parser.add_argument("--symmetry", choices=("auto", "half", "full"),
+                        default="auto",
+                        help="whether the run models a whole Hertz contact or "
+                             "a half cut on its symmetry line (then the closed "
+                             "form takes twice the computed force): auto "
+                             "(default) finds a half model from a contact zone "
+                             "ending at the parabola's vertex together with a "
+                             "roller u_1 = 0 there; half or full say so")
+    parser.add_argument("--dpi", type=int, default=110,
+                        help="resolution of the PNG files (default 110)")
     args = parser.parse_args(argv)
     try:
         run = Run(args.outdir)
@@ -591,7 +742,8 @@ def main(argv):
                            "python3-matplotlib)")
         out = args.out or args.outdir
         os.makedirs(out, exist_ok=True)
-        plotter = Plotter(run, out, units_of(run, args.units), args.hertz, args.dpi)
+        plotter = Plotter(run, out, units_of(run, args.units), args.hertz, args.dpi,
+                           args.symmetry)
         for draw in (plotter.contact, plotter.convergence, plotter.adaptation,
                      plotter.mesh):
             draw()

@@ -159,11 +159,21 @@ namespace ddcontact
     {
       contact_pairs.push_back(std::make_unique<ContactPair>(
         p, find(p.body_1), find(p.body_2), parameters.constants));
+      const ContactPair &pair = *contact_pairs.back();
       contact_pairs.back()->setup();
+      const auto &found = pair.search_report();
       pcout << "  contact pair " << p.name << ": " << p.body_1 << " -> "
-            << p.body_2 << ", " << contact_pairs.back()->points().size()
-            << " contact points, theta = " << contact_pairs.back()->penalty()
-            << std::endl;
+            << p.body_2 << ", " << found.n_points << " of "
+            << found.n_examined
+            << " points of S_1 face S_2 within the search distance "
+            << found.search_distance;
+      if (found.n_points > 0)
+        pcout << ", initial gap " << found.min_gap << " to " << found.max_gap;
+      if (!parameters.dd.exact_contact())
+        pcout << ", theta = " << pair.penalty();
+      pcout << std::endl;
+      for (const auto &warning : pair.setup_warnings())
+        pcout << "warning: " << warning << std::endl;
     }
     dd_solver = ContactSolver::create(parameters.dd,
                                       raw_pointers(bodies),

@@ -6,12 +6,13 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <ddcontact/contact/contact_pair.h>
-#include <ddcontact/contact/segment_search.h>
+#include <ddcontact/contact/contact_search.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -72,64 +73,24 @@ namespace ddcontact
       return faces;
     }
 
+    /** "(x1, x2)" in full precision, for messages. */
+    std::string
+    coordinates(const Point<2> &x)
+    {
+      std::ostringstream s;
+      s << std::setprecision(std::numeric_limits<double>::max_digits10) << '('
+        << x[0] << ", " << x[1] << ')';
+      return s.str();
+    }
+
     /** "the gap is f at x = (x1, x2)", for messages. */
     std::string
     gap_at(const ContactPoint &p)
     {
       std::ostringstream s;
-      s << std::setprecision(6) << "the gap is " << p.gap << " at x = ("
-        << p.x[0] << ", " << p.x[1] << ")";
+      s << std::setprecision(6) << "the gap is " << p.gap << " at x = "
+        << coordinates(p.x);
       return s.str();
-    }
-
-    /** An end of a zone that is not closed: a vertex of only one of its
-     * faces, with the direction that leaves the zone there (along that
-     * face, away from its other vertex). */
-    struct ZoneEnd
-    {
-      Point<2>     vertex;
-      Tensor<1, 2> outward;
-    };
-
-    /** The ends of the zone made of @p faces: vertices shared by two faces
-     * are the same doubles (one vertex of the mesh, or gathered exactly
-     * from another process), so they are matched exactly. */
-    std::vector<ZoneEnd>
-    zone_ends(const std::vector<ZoneFace> &faces)
-    {
-      std::map<std::pair<double, double>, std::vector<unsigned int>> faces_at;
-      for (unsigned int i = 0; i < faces.size(); ++i)
-      {
-        faces_at[{faces[i].a[0], faces[i].a[1]}].push_back(i);
-        faces_at[{faces[i].b[0], faces[i].b[1]}].push_back(i);
-      }
-      std::vector<ZoneEnd> ends;
-      for (const auto &[vertex, at] : faces_at)
-        if (at.size() == 1)
-        {
-          const auto    &f = faces[at[0]];
-          const Point<2> v(vertex.first, vertex.second);
-          const Point<2> other = (v == f.a) ? f.b : f.a;
-          ends.push_back({v, (v - other) / (v - other).norm()});
-        }
-      return ends;
-    }
-
-    /** Whether @p x, whose closest point on the zone is @p projection,
-     * lies beyond one of the zone's ends (then the closest point is that
-     * end, and x is on the far side of the end's normal line). The
-     * tolerance is relative to the length @p h of the face of x. */
-    bool
-    beyond_zone_end(const Point<2>             &x,
-                    const Point<2>             &projection,
-                    const std::vector<ZoneEnd> &ends,
-                    const double                h)
-    {
-      for (const auto &end : ends)
-        if (projection.distance(end.vertex) <= 1e-12 * h &&
-            (x - end.vertex) * end.outward > 1e-10 * h)
-          return true;
-      return false;
     }
 
     /**
@@ -323,16 +284,44 @@ namespace ddcontact
                        "' has no face with boundary id " +
                        std::to_string(parameters.boundary_id_2));
 
-    // The R-trees of S_2 (O(n log n) in all): its vertices, whose
-    // projections split the faces of S_1, and its closest points.
+    // The contact search on S_2 (doc/method.md, section 1.1): R-trees of
+    // its faces and vertices, O(n log n) in all.
     std::vector<std::array<Point<2>, 2>> segments_2;
+    std::vector<Tensor<1, 2>>            normals_2;
+    double                               h_max = 0;
     for (const auto &f : faces_2)
+    {
       segments_2.push_back({{f.a, f.b}});
-    const SegmentSearch search_2(segments_2);
-    const auto          ends_2 = zone_ends(faces_2);
+      normals_2.push_back(f.normal);
+      h_max = std::max(h_max, f.a.distance(f.b));
+    }
+    for (const auto &f : faces_1)
+      h_max = std::max(h_max, f.a.distance(f.b));
+    const double search_distance = parameters.search_distance > 0 ?
+                                     parameters.search_distance :
+                                     default_search_distance(h_max);
+    const ContactSearch search_2(segments_2, normals_2, search_distance);
+    // Zones whose normals are nowhere opposed can never touch: a wrong
+    // boundary id (issue 31's same-facing zones).
+    if (std::none_of(faces_1.begin(),
+                     faces_1.end(),
+                     [&](const ZoneFace &f)
+                     { return search_2.has_opposed_normal(f.normal); }))
+      throw InputError(section + "Boundary id 2: no face of the zone of '" +
+                       body_1.name() + "' (boundary id " +
+                       std::to_string(parameters.boundary_id_1) +
+                       ") faces any face of the zone of '" + body_2.name() +
+                       "' (boundary id " +
+                       std::to_string(parameters.boundary_id_2) +
+                       "): their outward normals are nowhere opposed (within "
+                       "60 degrees), so the zones can never touch; check the "
+                       "boundary ids");
 
     const QGauss<1> gauss(parameters.n_gauss);
     contact_points.clear();
+    report                 = ContactSearchReport();
+    report.search_distance = search_distance;
+    report.expression_gap  = static_cast<bool>(gap_function);
     // Per point, the shapes of both bodies there: computed from the face's
     // cell at once on a serial or shared mesh, by the owners of a
     // distributed one at the end.
@@ -359,22 +348,16 @@ namespace ddcontact
       node_f.clear();
       for (const auto &s : nodes)
         node_f.push_back(gap_function->value(face.a + s[0] * t));
+      // The face is split where the normal lines through the vertices of
+      // S_2 within reach cross it: there the partner face changes, and so
+      // does the polynomial of u_2n (ContactSearch).
       std::vector<double> breaks = {0., 1.};
-      for (const auto &v : search_2.end_points_over(face.a, face.b))
+      for (const auto &v :
+           search_2.segments().end_points_over(face.a, face.b))
       {
-        const double s = (v - face.a) * t / (length * length);
-        if (s > 1e-10 && s < 1. - 1e-10)
-          breaks.push_back(s);
-      }
-      // Where the normal line through an end of S_2 crosses the face: the
-      // points beyond it have no orthogonal projection on S_2 and drop out
-      // (below), so no piece straddles the edge of the zone.
-      for (const auto &end : ends_2)
-      {
-        const double along = t * end.outward;
-        if (std::abs(along) < 1e-12 * length)
+        if (std::abs((v - face.a) * face.normal) > search_distance)
           continue;
-        const double s = (end.vertex - face.a) * end.outward / along;
+        const double s = (v - face.a) * t / (length * length);
         if (s > 1e-10 && s < 1. - 1e-10)
           breaks.push_back(s);
       }
@@ -398,18 +381,16 @@ namespace ddcontact
             gauss.weight(q) * (breaks[piece + 1] - breaks[piece]) * length;
           p.normal = face.normal;
           p.face   = zone_1.size() - 1;
+          ++report.n_examined;
 
-          // Orthogonal projection P(x) on S_2: the closest point.
-          const auto [owner, projection] = search_2.closest_point(p.x);
-          p.projection                   = projection;
-          // A point beyond an end of S_2 has no partner on S_2 and cannot
-          // touch it: the closest point would be that end, and the point
-          // would be pressed against the end's displacement (a zone S_1
-          // longer than S_2 would be loaded where nothing touches it).
-          if (beyond_zone_end(p.x, p.projection, ends_2, length))
+          // A point without a partner on S_2 cannot touch it: it carries no
+          // pressure and has no gap.
+          const auto partner = search_2.facing_point(p.x, p.normal);
+          if (!partner)
             continue;
+          p.projection = partner->point;
           if (!gap_function)
-            p.gap = (p.projection - p.x) * p.normal;
+            p.gap = partner->gap;
           else if (nodes.empty())
             p.gap = gap_function->value(p.x);
           else
@@ -419,9 +400,11 @@ namespace ddcontact
             throw InputError(section + "Gap: " + gap_at(p) +
                              " of S_1; give an expression that is finite "
                              "on the whole zone");
+          report.record(p.x, p.gap, partner->gap, length);
           if (!body_2.is_mesh_distributed())
-            shapes_2.push_back(
-              point_shapes_at(body_2, faces_2[owner].cell, {p.projection})[0]);
+            shapes_2.push_back(point_shapes_at(body_2,
+                                               faces_2[partner->segment].cell,
+                                               {p.projection})[0]);
           xs.push_back(p.x);
           contact_points.push_back(p);
         }
@@ -429,14 +412,6 @@ namespace ddcontact
         for (const auto &shape : point_shapes_at(body_1, face.cell, xs))
           shapes_1.push_back(shape);
     }
-
-    if (contact_points.empty())
-      throw InputError(
-        section + "Boundary id 1: no point of the zone of '" + body_1.name() +
-        "' (boundary id " + std::to_string(parameters.boundary_id_1) +
-        ") lies within the zone of '" + body_2.name() + "' (boundary id " +
-        std::to_string(parameters.boundary_id_2) +
-        "): the normal lines of S_2 do not meet S_1");
 
     if (body_1.is_mesh_distributed() || body_2.is_mesh_distributed())
     {
@@ -519,6 +494,69 @@ namespace ddcontact
            "larger penalty";
       throw InputError(s.str());
     }
+  }
+
+  double
+  ContactPair::default_search_distance(const double h_max) const
+  {
+    const auto diameter = [](const ElasticBody<2> &body)
+    {
+      const auto x = body.get_mesh().extent_along(Tensor<1, 2>({1., 0.}));
+      const auto y = body.get_mesh().extent_along(Tensor<1, 2>({0., 1.}));
+      return std::hypot(x.second - x.first, y.second - y.first);
+    };
+    return std::max(0.1 * std::min(diameter(body_1), diameter(body_2)),
+                    2. * h_max);
+  }
+
+  std::vector<std::string>
+  ContactPair::setup_warnings() const
+  {
+    std::vector<std::string> warnings;
+    const std::string        pair = "contact pair " + parameters.name + ": ";
+    std::ostringstream       s;
+    s << std::setprecision(3);
+    if (report.n_points == 0)
+    {
+      s << pair << "no point of the zone of '" << body_1.name()
+        << "' (boundary id " << parameters.boundary_id_1
+        << ") faces the zone of '" << body_2.name() << "' (boundary id "
+        << parameters.boundary_id_2 << ") within the search distance "
+        << report.search_distance
+        << ": the zones face away from each other or lie farther apart, and "
+           "the pair carries no force (raise Contact pair "
+        << parameters.name
+        << "/Search distance if a wider gap is meant to close)";
+      warnings.push_back(s.str());
+      return warnings;
+    }
+    if (report.min_gap <
+        -ContactSearchReport::overlap_per_face * report.min_gap_face_length)
+    {
+      s << pair << "initial overlap: at x = " << coordinates(report.min_gap_at)
+        << " the gap is " << report.min_gap << ", "
+        << (gap_function ? "the Gap expression puts" : "the meshes put")
+        << " body '" << body_1.name() << "' that deep inside body '"
+        << body_2.name()
+        << "' before any load, and the contact pushes them apart by as much "
+           "(an interference fit if meant; otherwise check the meshes' "
+           "positions"
+        << (gap_function ? " and the Gap" : "") << ")";
+      warnings.push_back(s.str());
+      s.str("");
+    }
+    if (report.worst_excess > 0)
+    {
+      s << pair << "the Gap expression '" << parameters.gap_expression
+        << "' gives " << report.worst_expression << " at x = "
+        << coordinates(report.worst_excess_at)
+        << ", where the meshes are " << report.worst_geometric
+        << " apart along the normal (geometric gap): the expression lets the "
+           "bodies touch across empty space; use Gap type = geometric, or a "
+           "Gap that matches the meshes";
+      warnings.push_back(s.str());
+    }
+    return warnings;
   }
 
   void

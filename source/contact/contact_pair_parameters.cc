@@ -2,6 +2,9 @@
 
 #include <ddcontact/contact/contact_pair_parameters.h>
 
+#include <cmath>
+#include <sstream>
+
 namespace ddcontact
 {
   DDCONTACT_SELECTION(GapType,
@@ -68,6 +71,17 @@ namespace ddcontact
                       Patterns::Double(0),
                       "H of theta = c H / E_1 [length]; 0: the extent of "
                       "body 1 along the contact normal.");
+    prm.declare_entry(
+      "Search distance",
+      "auto",
+      Patterns::Anything(),
+      "d of the contact search [length] (doc/method.md, section 1.1): a "
+      "point of S_1 is a contact candidate only where its outward normal "
+      "line meets a face of S_2 that faces it (normals opposed within 60 "
+      "degrees) at most d in front of it or behind it; other points carry "
+      "no pressure. auto: a tenth of the smaller body's diameter (a wider gap "
+      "cannot close under small strains), at least twice the longest zone "
+      "face. Otherwise a length > 0.");
     prm.declare_entry("Gauss points",
                       "3",
                       Patterns::Integer(1, 10),
@@ -90,6 +104,17 @@ namespace ddcontact
     penalty        = prm.get_double("Penalty");
     thickness      = prm.get_double("Thickness");
     n_gauss        = prm.get_integer("Gauss points");
+    const std::string distance = Utilities::trim(prm.get("Search distance"));
+    if (distance != "auto")
+    {
+      // A length > 0; "auto" stays 0.
+      std::istringstream in(distance);
+      double             d = 0;
+      if (!(in >> d) || !(in >> std::ws).eof() || !(d > 0) || !std::isfinite(d))
+        throw InputError(section + "Search distance: '" + distance +
+                         "' is neither auto nor a length > 0");
+      search_distance = d;
+    }
     if (!(penalty > 0.))
       throw InputError(section + "Penalty: " + prm.get("Penalty") +
                        " must be positive");

@@ -3,6 +3,7 @@
 #include <boost/geometry/algorithms/append.hpp>
 #include <boost/geometry/algorithms/correct.hpp>
 #include <boost/geometry/geometries/polygon.hpp>
+#include <boost/geometry/geometries/segment.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -96,6 +97,17 @@ namespace ddcontact
       }
     }
     return closest;
+  }
+
+  std::vector<unsigned int>
+  SegmentSearch::segments_crossed(const Point<2> &p, const Point<2> &q) const
+  {
+    const bg::model::segment<Point<2>> line(p, q);
+    std::vector<std::size_t>           found;
+    box_tree.query(bgi::intersects(line), std::back_inserter(found));
+    std::vector<unsigned int> indices(found.begin(), found.end());
+    std::sort(indices.begin(), indices.end());
+    return indices;
   }
 
   std::vector<Point<2>>

@@ -8,6 +8,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ddcontact/body/elastic_body.h>
+#include <ddcontact/contact/contact_search.h>
 #include <ddcontact/parameters.h>
 
 #include <array>
@@ -154,6 +155,19 @@ namespace ddcontact
                          const ElasticBody<2>      &body,
                          BoundaryTractionSamples   &samples) const;
 
+    /** What the contact search found at the last setup(). */
+    const ContactSearchReport &
+    search_report() const
+    {
+      return report;
+    }
+
+    /** The warnings of the last setup(), one sentence each: a zone that
+     * faces away, an initial overlap, an expression gap that contradicts
+     * the meshes (empty: none). */
+    std::vector<std::string>
+    setup_warnings() const;
+
     /** The penalty parameter theta of (15) for this pair. */
     double
     penalty() const
@@ -184,6 +198,13 @@ namespace ddcontact
     std::vector<std::array<Point<2>, 2>> zone_1; // faces of S_1
     double                               theta       = 0;
     double                               thickness_1 = 0, thickness_2 = 0;
+    ContactSearchReport                  report;
+
+    /** Search distance = auto: a tenth of the smaller body's diameter (a
+     * gap wider than that cannot close under small strains), at least
+     * twice the longest zone face @p h_max. */
+    double
+    default_search_distance(double h_max) const;
   };
 } // namespace ddcontact
 

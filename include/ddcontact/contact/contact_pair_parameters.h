@@ -56,6 +56,7 @@ namespace ddcontact
     double        penalty        = 0.05; // c, or theta itself
     double        thickness      = 0;    // H; 0: from body 1's mesh
     unsigned int  n_gauss        = 3;    // Gauss points per piece
+    double        search_distance = 0;   // d of the search; 0: auto
 
     static void
     declare(ParameterHandler &prm);

@@ -59,6 +59,12 @@ namespace ddcontact
     std::vector<Point<2>>
     end_points_over(const Point<2> &a, const Point<2> &b) const;
 
+    /** The segments whose bounding boxes meet the straight line from
+     * @p p to @p q (a superset of the segments it crosses), in increasing
+     * order. */
+    std::vector<unsigned int>
+    segments_crossed(const Point<2> &p, const Point<2> &q) const;
+
     /** The closest point of segment @p i to @p x. */
     Point<2>
     closest_point_on(const unsigned int i, const Point<2> &x) const;
