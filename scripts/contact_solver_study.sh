@@ -52,7 +52,7 @@ run() { # scene c r solver
   timeout 120 "$exe" "$(prm "$scene")" --output "$out/r" \
     --set "Adaptation/Mode=none" --set "Output/Write vtu=false" \
     --set "Domain decomposition/eps_residual=1e-8" \
-    --set "Domain decomposition/Augmented Lagrangian=false" \
+    --set "Contact pair S/Formulation=penalty" \
     --set "Domain decomposition/Max Newton iterations=40" \
     --set "Domain decomposition/Max iterations=2000" \
     "${mesh_args[@]}" "${args[@]}" > "$out/log" 2>&1

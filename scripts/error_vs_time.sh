@@ -70,7 +70,7 @@ mkdir -p "$out"
 common=(--set "Output/Write vtu=false" --set "Adaptation/Write every mesh=false")
 # Exact contact: dd-newton with nodal multipliers (the Uzawa loop of the DD
 # stops at about 1e-3 of the approach on these non-matching meshes).
-AL=(--set "Domain decomposition/Augmented Lagrangian=true" --set "Domain decomposition/Solver=dd-newton")
+AL=(--set "Contact pair S/Formulation=exact" --set "Domain decomposition/Solver=dd-newton")
 relax() { echo "Domain decomposition/Relaxation=$1"; }
 
 # ------------------------------------------------------------ reference
@@ -228,7 +228,7 @@ for m in $P_CAP; do run "fembem-printed-m$m" fembem-printed-combined-P1 penalty 
 if [ "$quick" = 1 ]; then H_BOX="3"; else H_BOX="3 4 5 6 7 8"; fi
 run_scene="$root/prm/hertz.prm"
 for b in $H_BOX; do run "hertz-exact-b$b" hertz-DD-newton-exact hertz 1 1 "box refinement=$b" --set "Body upper/Mesh/Box refinement=$b" --set "Body lower/Mesh/Box refinement=$b"; done
-for b in $H_BOX; do run "hertz-penalty-b$b" hertz-DD-anderson-penalty hertz 1 1 "box refinement=$b" --set "Domain decomposition/Solver=dd" --set "Domain decomposition/Relaxation=anderson" --set "Body upper/Mesh/Box refinement=$b" --set "Body lower/Mesh/Box refinement=$b" --set "Domain decomposition/Augmented Lagrangian=false"; done
+for b in $H_BOX; do run "hertz-penalty-b$b" hertz-DD-anderson-penalty hertz 1 1 "box refinement=$b" --set "Domain decomposition/Solver=dd" --set "Domain decomposition/Relaxation=anderson" --set "Body upper/Mesh/Box refinement=$b" --set "Body lower/Mesh/Box refinement=$b" --set "Contact pair S/Formulation=penalty"; done
 unset run_scene
 
 echo "machine load after: $(uptime)" | tee -a "$out/load.txt"

@@ -518,7 +518,7 @@ class Plotter:
             ax.plot(x, [p["pressure"] for p in shown], "o-", markersize=2.5,
                     linewidth=1.2, color="tab:blue", label="computed")
             if info:
-                # A half model's curve only over its zone.
+                # A half model's curve only on its side of the vertex.
                 left = info["x0"] - info["a"]
                 right = info["x0"] + info["a"]
                 if info["model"] == "half":

@@ -221,9 +221,9 @@ run units_paper_si_mono units units_paper_cm:1e-2:1e4 1e-6 "paper scene in m, Pa
 run units_paper_si_fixed units units_paper_cm:1e-2:1e4 1e-5 "paper scene in m, Pa, fixed gamma=0.02" $paper "${P[@]}" "${SIP[@]}" \
   --set "Domain decomposition/Relaxation=fixed" --set "Domain decomposition/eps_residual=1e-8"
 run units_paper_cm_al units - - "paper scene in cm, MPa, augmented Lagrangian" $paper "${P[@]}" \
-  --set "Domain decomposition/Augmented Lagrangian=true"
+  --set "Contact pair S/Formulation=exact"
 run units_paper_si_al units units_paper_cm_al:1e-2:1e4 1e-5 "paper scene in m, Pa, augmented Lagrangian" $paper "${P[@]}" "${SIP[@]}" \
-  --set "Domain decomposition/Augmented Lagrangian=true"
+  --set "Contact pair S/Formulation=exact"
 
 # --- evaluate: python reads summary.json, parameters.prm and stdout.
 python3 - "$work" "$manifest" doc/stability.csv <<'EOF'

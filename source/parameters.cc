@@ -364,6 +364,17 @@ namespace ddcontact
       }
       contact_pairs.push_back(pair);
     }
+    // One formulation for all pairs: the solvers treat the pairs alike.
+    for (const auto &pair : contact_pairs)
+      if (pair.formulation != contact_pairs.front().formulation)
+        throw InputError("Contact pair " + pair.name + "/Formulation: " +
+                         selection_name(pair.formulation) + ", but pair " +
+                         contact_pairs.front().name + " is " +
+                         selection_name(contact_pairs.front().formulation) +
+                         "; all pairs of a scene take the same formulation");
+    dd.set_formulation(contact_pairs.empty() ||
+                       contact_pairs.front().formulation ==
+                         ContactFormulation::exact);
 
     prm.enter_subsection("Output");
     {

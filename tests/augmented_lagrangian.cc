@@ -14,7 +14,7 @@ using namespace ddcontact::testing;
 
 namespace
 {
-  const std::string al = "Domain decomposition/Augmented Lagrangian=true";
+  const std::string al = "Contact pair S/Formulation=exact";
 
   /**
    * prm/stability/uniaxial.prm with the augmented Lagrangian: on S the

@@ -212,7 +212,7 @@ main(int argc, char **argv)
   //    "stalled", see tests/dd_newton.cc.)
   {
     const auto   sim = run(source_dir,
-                         {"Domain decomposition/Augmented Lagrangian=true",
+                         {"Contact pair S/Formulation=exact",
                             "Domain decomposition/AL tolerance=1e-3"});
     const double p   = sim->get_dd_solver().contact_state(0).max_penetration;
     std::cout << "augmented Lagrangian: penetration " << p << " = "

@@ -111,7 +111,7 @@ main(int argc, char **argv)
           "body solves on meshes h and h/4 within a factor 1.5");
   }
 
-  // 3. Exact contact (Augmented Lagrangian = true selects it; dd-newton
+  // 3. Exact contact (Contact pair S/Formulation = exact selects it; dd-newton
   //    solves it directly with nodal multipliers, theta = 0, no Uzawa
   //    update). The uniaxial scene's exact pressure is uniform,
   //    p = Delta / ((1 - nu^2) (H1 / E1 + H2 / E2)), which the linear
@@ -124,7 +124,7 @@ main(int argc, char **argv)
     const auto sim =
       run_scene(uniaxial,
                 {"Output directory=dd_newton_output", newton},
-                {"Domain decomposition/Augmented Lagrangian=true",
+                {"Contact pair S/Formulation=exact",
                  "Contact pair S/Penalty=" + c});
     const double L       = 4;
     const double p_exact = uniaxial_pressure(0.);
@@ -160,7 +160,7 @@ main(int argc, char **argv)
                   {"Output directory=dd_newton_output"},
                   {"Domain decomposition/Solver=" + solver,
                    "Contact pair S/Penalty=100",
-                   "Domain decomposition/Augmented Lagrangian=true"});
+                   "Contact pair S/Formulation=exact"});
       });
     std::cout << solver << ", c = 100: " << message.substr(0, 120) << "..."
               << std::endl;
@@ -180,7 +180,7 @@ main(int argc, char **argv)
           "dd_newton_output",
           1,
           {"Adaptation/Mode=none"},
-          {"Domain decomposition/Augmented Lagrangian=true",
+          {"Contact pair S/Formulation=exact",
            "Domain decomposition/AL tolerance=2e-4"});
       });
     std::cout << "dd, paper scene, AL tolerance 2e-4: "
@@ -198,7 +198,7 @@ main(int argc, char **argv)
   {
     const std::vector<std::string> exact = {
       "Output directory=dd_newton_output",
-      "Domain decomposition/Augmented Lagrangian=true",
+      "Contact pair S/Formulation=exact",
       "Domain decomposition/eps_residual=1e-10",
       newton,
       "Adaptation/Bodies=omega1, omega2",
@@ -248,7 +248,7 @@ main(int argc, char **argv)
       "Output directory=dd_newton_output",
       "Domain decomposition/eps_residual=1e-8"};
     if (mode == "exact")
-      overrides.push_back("Domain decomposition/Augmented Lagrangian=true");
+      overrides.push_back("Contact pair S/Formulation=exact");
     else
       overrides.insert(overrides.end(),
                        {"Domain decomposition/Contact pressure=nodes",
@@ -280,7 +280,7 @@ main(int argc, char **argv)
     const auto sim = run_scene(
       source_dir + "/prm/paper_two_bodies.prm",
       {"Output directory=dd_newton_output", newton, "Adaptation/Mode=none"},
-      {"Domain decomposition/Augmented Lagrangian=true",
+      {"Contact pair S/Formulation=exact",
        "Body omega1/Mesh/Initial refinement=" + std::to_string(m.r_1),
        "Body omega2/Mesh/Initial refinement=" + std::to_string(m.r_2)});
     const auto counts = sim->get_dd_solver().counts();

@@ -68,7 +68,7 @@ main(int argc, char **argv)
     const std::vector<std::string> common = {
       "Output directory=floating_body_output",
       newton,
-      "Domain decomposition/Augmented Lagrangian=" + exact,
+      std::string("Contact pair S/Formulation=") + (exact == "true" ? "exact" : "penalty"),
       "Domain decomposition/eps_residual=1e-10"};
     const auto         pressed = run_scene(uniaxial, common, {});
     const double       F       = vertical_force(*pressed);
@@ -118,7 +118,7 @@ main(int argc, char **argv)
       run_scene(uniaxial,
                 {"Output directory=floating_body_output",
                  newton,
-                 "Domain decomposition/Augmented Lagrangian=true",
+                 "Contact pair S/Formulation=exact",
                  "Domain decomposition/eps_residual=1e-10"},
                 {"Body omega1/Boundary conditions/Dirichlet=3: x: 0; 0",
                  "Body omega1/Boundary conditions/Neumann=3: 0; -150 * (1 + (x "
@@ -189,7 +189,7 @@ main(int argc, char **argv)
   {
     const std::vector<std::string> common = {
       "Output directory=floating_body_output",
-      "Domain decomposition/Augmented Lagrangian=true"};
+      "Contact pair S/Formulation=exact"};
     const std::string load =
       "Body omega1/Boundary conditions/Neumann=3: 0; -150";
     std::string message = error_message<InputError>(

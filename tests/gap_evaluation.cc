@@ -39,7 +39,7 @@ main(int argc, char **argv)
       run_scene(source_dir + "/prm/stability/uniaxial.prm",
                 {"Output directory=gap_evaluation_output",
                  "Domain decomposition/Solver=dd-newton",
-                 "Domain decomposition/Augmented Lagrangian=true"},
+                 "Contact pair S/Formulation=exact"},
                 {"Body omega2/Mesh/Subdivisions=16, 4",
                  "Constants=Delta=1.366e-3, k=2e-5",
                  "Contact pair S/Gap=k*x^2",

@@ -54,7 +54,7 @@ main(int argc, char **argv)
     "Output directory=penalty_continuation_output",
     "Adaptation/Mode=none",
     "Domain decomposition/Solver=dd-newton",
-    "Domain decomposition/Augmented Lagrangian=true",
+    "Contact pair S/Formulation=exact",
     "Domain decomposition/eps_residual=1e-10",
     "Domain decomposition/Max Newton iterations=300"};
 
@@ -106,7 +106,7 @@ main(int argc, char **argv)
     std::vector<std::string> monolithic = exact;
     monolithic.insert(monolithic.end(),
                       {"Domain decomposition/Solver=monolithic",
-                       "Domain decomposition/Augmented Lagrangian=false",
+                       "Contact pair S/Formulation=penalty",
                        "Domain decomposition/Contact pressure=nodes",
                        "Contact pair S/Penalty=1e-8"});
     const auto s = run_scene(paper, monolithic, overrides);

@@ -1,12 +1,18 @@
 """DESCRIPTION: scripts/plot_run.py draws the output directory of a run: a
-Hertz run (VTU written) gives contact_S.png with the Hertz curve,
-convergence.png and mesh.png (read from the VTU); a coarse adaptive run of
+Hertz run (VTU written) gives contact_S.png with the Hertz curve of a whole
+model, convergence.png and mesh.png (read from the VTU); the Hertz half
+model prm/hertz_force.prm is found to be a half model and its curve takes
+the whole force 2P (a and p0 of hertz_S.json within 1 % of the closed form
+at P = 2 q R, a = 0.149, p0 = 8.18), and --symmetry full gives the curve
+of P itself (a smaller by sqrt(2)); a coarse adaptive run of
 the paper's scene gives adaptation.png and no Hertz curve (its contact is
 a quarter of the zone, no half-plane); a directory that is not a run is
 refused in one line with exit code 1. Skipped (exit 77) without matplotlib.
 
 usage: plot_run.py DDCONTACT_EXECUTABLE SOURCE_DIR WORK_DIR
 """
+import json
+import math
 import os
 import shutil
 import subprocess
@@ -38,6 +44,15 @@ def is_png(path):
         return False
     with open(path, "rb") as f:
         return f.read(8) == b"\x89PNG\r\n\x1a\n"
+
+
+def read_json(path):
+    """The object in a JSON file, {} when it is missing or not JSON."""
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return {}
 
 
 def run_scene(exe, scene, out, overrides):
@@ -79,6 +94,48 @@ def main():
           "Hertz run: the Hertz curve is drawn")
     check(not os.path.exists(os.path.join(pictures, "adaptation.png")),
           "Hertz run (fixed meshes): no adaptation.png")
+    used = read_json(os.path.join(pictures, "hertz_S.json"))
+    check(used.get("model") == "full",
+          f"Hertz run: taken as a whole model ({used.get('model')}: "
+          f"{used.get('model_reason')})")
+
+    # 1b. The Hertz half model pressed by a force (quarter cylinder R = 5 on
+    #     the right half of a block, rollers u_1 = 0 on x1 = 0): the closed
+    #     form at the whole force P = 2 q R, 1/E* = 2 (1 - nu^2)/E.
+    q, radius, e, nu = 0.19139, 5.0, 1000.0, 0.3
+    whole = 2 * q * radius
+    e_star = e / (2 * (1 - nu * nu))
+    a_exact = math.sqrt(4 * whole * radius / (math.pi * e_star))
+    p0_exact = 2 * whole / (math.pi * a_exact)
+    half = os.path.join(work, "hertz_force")
+    run_scene(exe, os.path.join(source, "prm", "hertz_force.prm"), half,
+              ["Output/Write vtu=false"])
+    result = subprocess.run(plot + [half], capture_output=True, text=True)
+    print(result.stdout + result.stderr)
+    check(result.returncode == 0, "plot_run.py on the half model: exit 0")
+    check(is_png(os.path.join(half, "contact_S.png")),
+          "half model: contact_S.png written")
+    check("pair S: Hertz curve drawn" in result.stdout and "half model" in result.stdout,
+          "half model: the Hertz curve is drawn, as a half model")
+    used = read_json(os.path.join(half, "hertz_S.json"))
+    check(any(line.startswith("hertz S: a = ") for line in result.stdout.splitlines()),
+          "half model: the closed form used is printed")
+    check(used.get("model") == "half",
+          f"half model: detected ({used.get('model')}: {used.get('model_reason')})")
+    for key, exact in (("whole_force", whole), ("a", a_exact), ("p0", p0_exact)):
+        value = used.get(key, float("nan"))
+        check(abs(value - exact) <= 0.01 * exact,
+              f"half model: {key} = {value:.5g} against {exact:.5g} "
+              f"(the closed form at 2 q R; 1 %)")
+    result = subprocess.run(plot + [half, "--symmetry", "full", "--out",
+                                    os.path.join(work, "hertz_force_full")],
+                            capture_output=True, text=True)
+    full = read_json(os.path.join(work, "hertz_force_full", "hertz_S.json"))
+    check(result.returncode == 0 and full.get("model") == "full" and
+          abs(full.get("a", 0) * math.sqrt(2) - used.get("a", 0))
+          <= 1e-9 * a_exact,
+          f"--symmetry full: the curve of the half's own force "
+          f"(a = {full.get('a', float('nan')):.4g})")
 
     # 2. The paper's scene, coarse, two adaptation cycles at most, no VTU:
     #    the mesh comes from cells_omega2-NNNN.csv.

@@ -168,7 +168,7 @@ main(int argc, char **argv)
     check(
       warnings.size() == 1 &&
         message_names(warnings[0],
-                      {"contact pair S", "approach", "Augmented Lagrangian"}),
+                      {"contact pair S", "approach", "Formulation = exact"}),
       "soft penalty: one warning naming the pair, the approach and the "
       "augmented Lagrangian");
     check(warnings == warnings_of(read_summary("run_status_soft_penalty")),

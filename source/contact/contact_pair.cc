@@ -490,8 +490,7 @@ namespace ddcontact
         << ": theta = " << theta << " is " << c << " times H/E_1 of body '"
         << body_1.name() << "' (H = " << extent
         << "); a penalty below 1e-12 H/E_1 is lost in round-off: raise it, "
-           "or use Domain decomposition/Augmented Lagrangian = true with a "
-           "larger penalty";
+           "or use Formulation = exact";
       throw InputError(s.str());
     }
   }

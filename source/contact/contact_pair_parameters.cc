@@ -7,6 +7,9 @@
 
 namespace ddcontact
 {
+  DDCONTACT_SELECTION(ContactFormulation,
+                      {"exact", ContactFormulation::exact},
+                      {"penalty", ContactFormulation::penalty})
   DDCONTACT_SELECTION(GapType,
                       {"expression", GapType::expression},
                       {"geometric", GapType::geometric})
@@ -33,6 +36,17 @@ namespace ddcontact
                       "0",
                       Patterns::Integer(0, 254),
                       "Boundary id of S_2 on body 2.");
+    prm.declare_entry(
+      "Formulation",
+      "exact",
+      selection_pattern<ContactFormulation>(),
+      "exact (the default): exact contact, no penetration -- with Solver = "
+      "dd-newton solved directly with one pressure multiplier per node of "
+      "S_1, with dd and monolithic by Uzawa updates of the penalty (an "
+      "augmented Lagrangian, AL tolerance). penalty: the penalty (15) with "
+      "theta from Penalty type and Penalty, as in the paper (a soft penalty "
+      "leaves a penetration and underestimates the peak pressure). All "
+      "pairs of a scene take the same formulation.");
     prm.declare_entry("Gap type",
                       "expression",
                       selection_pattern<GapType>(),
@@ -65,7 +79,9 @@ namespace ddcontact
                       "0.05",
                       Patterns::Double(),
                       "c (relative) or theta (absolute) of the penalty (15); "
-                      "> 0.");
+                      "> 0. With Formulation = exact, the penalty of the "
+                      "Uzawa updates (Solver = dd, monolithic) and of the "
+                      "initial guess; dd-newton's exact contact has none.");
     prm.declare_entry("Thickness",
                       "0",
                       Patterns::Double(0),
@@ -97,7 +113,9 @@ namespace ddcontact
     body_2                    = Utilities::trim(prm.get("Body 2"));
     boundary_id_1             = prm.get_integer("Boundary id 1");
     boundary_id_2             = prm.get_integer("Boundary id 2");
-    gap_type                  = parse_selection<GapType>(prm.get("Gap type"));
+    formulation =
+      parse_selection<ContactFormulation>(prm.get("Formulation"));
+    gap_type = parse_selection<GapType>(prm.get("Gap type"));
     gap_expression            = prm.get("Gap");
     gap_evaluation = parse_selection<GapEvaluation>(prm.get("Gap evaluation"));
     penalty_type   = parse_selection<PenaltyType>(prm.get("Penalty type"));

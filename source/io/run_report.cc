@@ -84,9 +84,9 @@ namespace ddcontact
       if (parameters.dd.augmented_lagrangian)
         s << "lower Domain decomposition/AL tolerance or raise AL max updates";
       else
-        s << "for exact contact set Domain decomposition/Augmented "
-             "Lagrangian = true, or lower Contact pair "
-          << pair << "/Penalty";
+        s << "for exact contact set Contact pair " << pair
+          << "/Formulation = exact, or lower Contact pair " << pair
+          << "/Penalty";
       return s.str();
     }
   } // namespace

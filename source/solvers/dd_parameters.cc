@@ -1,3 +1,5 @@
+#include <deal.II/base/utilities.h>
+
 #include <ddcontact/solvers/dd_parameters.h>
 
 namespace ddcontact
@@ -84,15 +86,13 @@ namespace ddcontact
                       "E'/H in series with the penalty (replaced by zero "
                       "when one DD step moves it ten times more than the "
                       "zero guess, e.g. a plate bending onto a base).");
+    // Retired: it meant a direct solve with dd-newton but a Uzawa loop
+    // elsewhere; Contact pair/Formulation says what is solved.
     prm.declare_entry("Augmented Lagrangian",
-                      "false",
-                      Patterns::Bool(),
-                      "Exact contact instead of the penalty. With Solver = "
-                      "dd-newton it is solved directly (theta = 0, one "
-                      "contact-pressure multiplier per node of S_1, no "
-                      "Uzawa loop); with dd and monolithic, by outer Uzawa "
-                      "updates of the contact pressure, so that the "
-                      "penetration of the penalty goes to zero.");
+                      "",
+                      Patterns::Anything(),
+                      "Retired: set Contact pair <name>/Formulation = exact "
+                      "(the default) or penalty instead.");
     prm.declare_entry("AL tolerance",
                       "1e-3",
                       Patterns::Double(0),
@@ -114,15 +114,17 @@ namespace ddcontact
                       "and multiplier.");
     prm.declare_entry(
       "Contact pressure",
-      "points",
-      Patterns::Selection("points|nodes"),
+      "auto",
+      Patterns::Selection("auto|points|nodes"),
       "The discrete contact pressure of Solver = dd-newton and monolithic "
       "with the penalty: 'points', a value at every contact point, the law "
       "(20) pointwise as the paper and the DD; 'nodes', one value per node "
       "of S_1 (piecewise linear), the law (20) for the gap averaged with the "
-      "hat functions, whose Newton iteration converges also for stiff "
-      "penalties (c <= 1e-4). Exact contact (Augmented Lagrangian = true) "
-      "with dd-newton always uses nodes; with monolithic, only points.");
+      "hat functions, whose Newton iteration converges for every penalty and "
+      "whose pressure does not oscillate between the points. auto (the "
+      "default): nodes wherever the solver takes them (dd-newton; monolithic "
+      "with the penalty), points with dd and with monolithic exact contact. "
+      "Exact contact with dd-newton always uses nodes.");
     prm.declare_entry(
       "Penalty continuation",
       "true",
@@ -147,28 +149,43 @@ namespace ddcontact
     eps_residual   = prm.get_double("eps_residual");
     max_iterations = prm.get_integer("Max iterations");
     initial_guess  = parse_selection<InitialGuess>(prm.get("Initial guess"));
-    augmented_lagrangian  = prm.get_bool("Augmented Lagrangian");
+    if (!Utilities::trim(prm.get("Augmented Lagrangian")).empty())
+      throw InputError(
+        "Domain decomposition/Augmented Lagrangian is retired: set Contact "
+        "pair <name>/Formulation = exact (exact contact, the default) or "
+        "penalty");
     al_tolerance          = prm.get_double("AL tolerance");
     al_max_updates        = prm.get_integer("AL max updates");
     write_every_iteration = prm.get_bool("Write every iteration");
     n_newton              = prm.get_integer("Max Newton iterations");
-    pressure_on_nodes     = (prm.get("Contact pressure") == "nodes");
+    contact_pressure      = prm.get("Contact pressure");
     penalty_continuation  = prm.get_bool("Penalty continuation");
+    if (!(gamma > 0. && gamma <= 1.))
+      throw InputError("Domain decomposition/Gamma: " + prm.get("Gamma") +
+                       " must lie in (0, 1]");
+  }
+
+  void
+  DDParameters::set_formulation(const bool exact)
+  {
+    augmented_lagrangian = exact;
+    if (contact_pressure == "auto")
+    {
+      pressure_on_nodes = solver == ContactSolverType::dd_newton ||
+                          (solver == ContactSolverType::monolithic && !exact);
+      return;
+    }
+    pressure_on_nodes = (contact_pressure == "nodes");
     if (pressure_on_nodes && solver == ContactSolverType::dd)
       throw InputError("Domain decomposition/Contact pressure = nodes needs "
                        "Solver = dd-newton or monolithic (the DD takes the "
                        "pressure at the contact points)");
     // The Uzawa loop updates pointwise multipliers; dd-newton solves exact
     // contact on the nodes directly.
-    if (pressure_on_nodes && augmented_lagrangian &&
-        solver == ContactSolverType::monolithic)
+    if (pressure_on_nodes && exact && solver == ContactSolverType::monolithic)
       throw InputError("Domain decomposition/Contact pressure = nodes with "
                        "Solver = monolithic is a penalty; for exact contact "
-                       "(Augmented Lagrangian = true) on the nodes use Solver "
-                       "= dd-newton");
-    if (!(gamma > 0. && gamma <= 1.))
-      throw InputError("Domain decomposition/Gamma: " + prm.get("Gamma") +
-                       " must lie in (0, 1]");
+                       "(Contact pair/Formulation = exact) on the nodes use "
+                       "Solver = dd-newton, or set Formulation = penalty");
   }
-
 } // namespace ddcontact

@@ -299,7 +299,7 @@ namespace ddcontact
         << " (c of theta = c H/E_1) by a factor of about " << lambda_max / 40.
         << " (for gamma* ~ 0.05; with contrasting "
         << "materials, making the softer body Body 1 does the same) and set "
-        << "Domain decomposition/Augmented Lagrangian = true for an exact "
+        << "Contact pair <name>/Formulation = exact for an exact "
         << "contact, or use Domain decomposition/Solver = monolithic";
     else if (parameters.relaxation == RelaxationType::fixed &&
              parameters.gamma > limit)

@@ -35,6 +35,15 @@ namespace ddcontact
     absolute
   };
 
+  /** Contact pair/Formulation: exact contact (no penetration) or the
+   * penalty (15) with theta. */
+  enum class ContactFormulation
+  {
+    exact,
+    penalty
+  };
+
+  DDCONTACT_DECLARE_SELECTION(ContactFormulation)
   DDCONTACT_DECLARE_SELECTION(GapType)
   DDCONTACT_DECLARE_SELECTION(GapEvaluation)
   DDCONTACT_DECLARE_SELECTION(PenaltyType)
@@ -49,6 +58,7 @@ namespace ddcontact
     std::string   name;
     std::string   body_1, body_2;
     unsigned int  boundary_id_1 = 0, boundary_id_2 = 0;
+    ContactFormulation formulation = ContactFormulation::exact;
     GapType       gap_type       = GapType::expression;
     std::string   gap_expression = "0";
     GapEvaluation gap_evaluation = GapEvaluation::nodes;

@@ -46,7 +46,7 @@ namespace ddcontact
    * eps_residual ||max(0, d_0)||_W (the overlap of the bodies without
    * contact pressure).
    *
-   * With Augmented Lagrangian = true the solver takes exact contact
+   * With Contact pair/Formulation = exact the solver takes exact contact
    * directly: theta = 0 and the unknowns are one multiplier per node of
    * S_1 (ContactInterface's nodal space, W replaced by the lumped weights
    * M), so that S_AA is positive definite and the same Newton steps

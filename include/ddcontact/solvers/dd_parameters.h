@@ -72,6 +72,8 @@ namespace ddcontact
     double            eps_residual   = 1e-8;   // test on u~^{k+1} - u^k
     unsigned int      max_iterations = 5000;
     InitialGuess      initial_guess  = InitialGuess::elastic_layer;
+    /** Exact contact (Contact pair/Formulation = exact): set by the scene
+     * from its pairs, not read here. */
     bool              augmented_lagrangian  = false;
     double            al_tolerance          = 1e-3; // penetration / approach
     unsigned int      al_max_updates        = 30;
@@ -79,6 +81,7 @@ namespace ddcontact
     bool              print_every_iteration = false; // Output/Verbosity = full
     unsigned int      n_newton              = 50;
     bool              pressure_on_nodes     = false; // Contact pressure
+    std::string       contact_pressure      = "auto"; // the entry
     bool              penalty_continuation  = true;
 
     /** Exact contact (theta = 0) solved directly by dd-newton with one
@@ -104,6 +107,13 @@ namespace ddcontact
 
     void
     parse(ParameterHandler &prm);
+
+    /** Set the formulation of the scene's pairs (exact or the penalty) and
+     * with it the Contact pressure of auto: nodes wherever the solver
+     * takes them (dd-newton; monolithic with the penalty), else points.
+     * Refuses an explicit nodes that the solver cannot take. */
+    void
+    set_formulation(bool exact);
   };
 } // namespace ddcontact
 

@@ -44,7 +44,7 @@ namespace ddcontact
      * penetration met the tolerance, reached the limit of non-matching
      * meshes, or the updates are used up -- then the multipliers are left
      * as they are, so that the iterate and the reported pressure stay
-     * consistent. Always false without "Augmented Lagrangian".
+     * consistent. Always false with the penalty formulation.
      */
     bool
     update(ContactProblem &problem);
