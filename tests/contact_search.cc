@@ -6,6 +6,7 @@
 // expression gap below the meshes' distance warns with both figures; the
 // contact patch test on non-matching meshes (uniform pressure and stress to
 // round-off with exact contact)
+#include <ddcontact/io/json.h>
 #include <ddcontact/simulation.h>
 
 #include "scene_tools.h"
@@ -227,6 +228,28 @@ main(int argc, char **argv)
           "no initial overlap on the faceted arcs; far points have no partner");
     std::cout << "  " << found.n_points << " of " << found.n_examined
               << " points have a partner" << std::endl;
+
+    // One peak (issue 30): summary.json's max_pressure is the largest
+    // pressure of contact_S.csv (written with 12 digits), not the largest
+    // nodal multiplier, which the CSV and the VTU do not show.
+    std::ifstream csv("contact_search_whole/contact_S.csv");
+    std::string   line;
+    std::getline(csv, line);
+    double csv_peak = 0;
+    while (std::getline(csv, line))
+    {
+      std::istringstream row(line);
+      std::string        x1, x2, pressure;
+      std::getline(row, x1, ',');
+      std::getline(row, x2, ',');
+      std::getline(row, pressure, ',');
+      csv_peak = std::max(csv_peak, std::stod(pressure));
+    }
+    const double summary_peak =
+      whole->summary()["contact"][0]["max_pressure"].get<double>();
+    check("summary.json max_pressure = the CSV's largest pressure",
+          relative(summary_peak, csv_peak),
+          1e-10);
 
     // The same meshes with the arcs cut at 10 degrees: every point that
     // can touch is a candidate either way, so the answers agree to the

@@ -214,7 +214,10 @@ namespace ddcontact
       pcout << std::setprecision(6) << "  contact "
             << results.contact_pairs[p]->name() << ": force "
             << state.force_1.norm() << ", peak pressure " << state.max_pressure
-            << ", half-width " << state.half_width << ", max penetration "
+            << " (at the contact points, as written)";
+      if (state.max_nodal_pressure > 0)
+        pcout << ", largest nodal multiplier " << state.max_nodal_pressure;
+      pcout << ", half-width " << state.half_width << ", max penetration "
             << state.max_penetration << std::endl;
     }
   }
@@ -362,6 +365,8 @@ namespace ddcontact
         Json::array({Json::array({state.force_1[0], state.force_1[1]}),
                      Json::array({state.force_2[0], state.force_2[1]})});
       c["max_pressure"]    = state.max_pressure;
+      if (state.max_nodal_pressure > 0)
+        c["max_nodal_pressure"] = state.max_nodal_pressure;
       c["contact_length"]  = state.contact_length;
       c["half_width"]      = state.half_width;
       c["max_penetration"] = state.max_penetration;
