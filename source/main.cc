@@ -5,12 +5,15 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 
+#include <ddcontact/io/output_file.h>
+#include <ddcontact/io/run_record.h>
 #include <ddcontact/parameters.h>
 #include <ddcontact/simulation.h>
 #include <ddcontact/version.h>
 
 #include <filesystem>
 #include <iostream>
+#include <new>
 
 namespace
 {
@@ -45,6 +48,8 @@ main(int argc, char **argv)
     // owns (BodyDistribution); errors are the same on all of them, so the
     // first process alone prints.
     root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    // SIGINT and SIGTERM end the run at the end of its current step.
+    interruption::install_handlers();
 
     std::string              parameter_file, output_directory;
     std::vector<std::string> overrides;
@@ -119,6 +124,9 @@ main(int argc, char **argv)
     if (error || !std::filesystem::is_directory(scene.output_directory))
       throw InputError("Output directory: cannot create '" +
                        scene.output_directory + "' (" + error.message() + ")");
+    // The lock, the removal of an earlier run's results and the "running"
+    // summary come before anything else is written there.
+    const RunRecord record(scene.output_directory, scene.scene_name);
     if (root)
       reader.write_used(scene.output_directory + "/parameters.prm");
 
@@ -129,19 +137,45 @@ main(int argc, char **argv)
   {
     if (root)
       std::cerr << "ddcontact: error: " << e.what() << std::endl;
-    return 4;
+    return exit_codes::iteration_failed;
+  }
+  catch (const TargetNotReachedError &e)
+  {
+    if (root)
+      std::cerr << "ddcontact: error: " << e.what() << std::endl;
+    return exit_codes::target_not_reached;
+  }
+  catch (const InterruptedError &e)
+  {
+    if (root)
+      std::cerr << "ddcontact: error: " << e.what() << std::endl;
+    return exit_codes::interrupted;
+  }
+  catch (const WriteError &e)
+  {
+    if (root)
+      std::cerr << "ddcontact: error: " << e.what() << std::endl;
+    return exit_codes::write_failed;
+  }
+  catch (const std::bad_alloc &)
+  {
+    if (root)
+      std::cerr << "ddcontact: error: out of memory; refine less (Initial "
+                   "refinement, Max cells) or run on more processes"
+                << std::endl;
+    return exit_codes::out_of_memory;
   }
   catch (const InputError &e)
   {
     if (root)
       std::cerr << "ddcontact: error: " << e.what() << std::endl;
-    return 1;
+    return exit_codes::bad_input;
   }
   catch (const std::exception &e)
   {
     if (root)
       std::cerr << "ddcontact: error: " << e.what() << std::endl;
-    return 3;
+    return exit_codes::internal_error;
   }
   return 0;
 }

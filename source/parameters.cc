@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <ddcontact/io/output_file.h>
 #include <ddcontact/parameters.h>
 
 #include <algorithm>
@@ -367,9 +368,9 @@ namespace ddcontact
     // One formulation for all pairs: the solvers treat the pairs alike.
     for (const auto &pair : contact_pairs)
       if (pair.formulation != contact_pairs.front().formulation)
-        throw InputError("Contact pair " + pair.name + "/Formulation: " +
-                         selection_name(pair.formulation) + ", but pair " +
-                         contact_pairs.front().name + " is " +
+        throw InputError("Contact pair " + pair.name +
+                         "/Formulation: " + selection_name(pair.formulation) +
+                         ", but pair " + contact_pairs.front().name + " is " +
                          selection_name(contact_pairs.front().formulation) +
                          "; all pairs of a scene take the same formulation");
     dd.set_formulation(contact_pairs.empty() ||
@@ -534,8 +535,9 @@ namespace ddcontact
   void
   ParameterReader::write_used(const std::string &filename) const
   {
-    std::ofstream out(filename);
-    prm.print_parameters(out, ParameterHandler::ShortPRM);
+    OutputFile out(filename);
+    prm.print_parameters(out.stream(), ParameterHandler::ShortPRM);
+    out.commit();
   }
 
   void

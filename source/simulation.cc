@@ -1,4 +1,5 @@
 #include <ddcontact/adaptivity/marking.h>
+#include <ddcontact/io/run_record.h>
 #include <ddcontact/simulation.h>
 #include <ddcontact/solvers/monolithic_solver.h>
 #include <ddcontact/tasks.h>
@@ -63,7 +64,8 @@ namespace ddcontact
             adaptations,
             n_adaptation_steps,
             n_contact_iterations,
-            n_newton_iterations};
+            n_newton_iterations,
+            adaptation_stop};
   }
 
   void
@@ -163,8 +165,7 @@ namespace ddcontact
       contact_pairs.back()->setup();
       const auto &found = pair.search_report();
       pcout << "  contact pair " << p.name << ": " << p.body_1 << " -> "
-            << p.body_2 << ", " << found.n_points << " of "
-            << found.n_examined
+            << p.body_2 << ", " << found.n_points << " of " << found.n_examined
             << " points of S_1 face S_2 within the search distance "
             << found.search_distance;
       if (found.n_points > 0)
@@ -306,29 +307,102 @@ namespace ddcontact
   unsigned int
   Simulation::mark_cells(const bool may_refine)
   {
+    interruption::check("adaptation cycle " +
+                        std::to_string(n_adaptation_steps));
     unsigned int marked = estimate_and_mark();
     // Adaptation/Target error: the estimate of the relative energy-norm
     // error decides, whatever the marking rule flagged.
     const double target   = parameters.adaptation.target_error;
     const double estimate = relative_energy_error_estimate(adaptations);
+    adaptation_stop.clear();
     if (target > 0 && estimate >= 0 && estimate <= target)
     {
       if (marked > 0)
         pcout << "  Adaptation/Target error reached: estimated relative "
                  "energy-norm error "
               << estimate << " <= " << target << std::endl;
-      marked = 0;
+      return 0;
     }
-    else if (target > 0 && estimate >= 0)
+    if (target > 0 && estimate >= 0)
+    {
       pcout << "  estimated relative energy-norm error " << estimate
             << " (target " << target << ")" << std::endl;
+      // Above the target, every cycle refines at least a set share of the
+      // estimated error, so that neither a threshold that flags nothing
+      // nor one that flags a few cells per cycle stalls the run.
+      marked = ensure_error_share(marked);
+    }
     if (!may_refine && marked > 0)
     {
       pcout << "  Adaptation/Max cycles reached: " << marked
             << " marked cells stay unrefined" << std::endl;
-      marked = 0;
+      adaptation_stop = "Adaptation/Max cycles (" +
+                        std::to_string(parameters.adaptation.max_cycles) +
+                        ") was reached";
+      return 0;
+    }
+    if (marked == 0 && target > 0 && estimate > target)
+    {
+      unsigned int capped = 0;
+      bool         full   = false;
+      for (const auto &a : adaptations)
+      {
+        capped += a->n_capped();
+        full = full || a->get_body().n_active_cells() + 3 >
+                         parameters.adaptation.max_cells;
+      }
+      adaptation_stop =
+        full ? "Adaptation/Max cells (" +
+                 std::to_string(parameters.adaptation.max_cells) +
+                 ") leaves no room for another refinement"
+        : capped > 0 ? std::to_string(capped) +
+                         " flagged cells are at Adaptation/Max level (" +
+                         std::to_string(parameters.adaptation.max_level) + ")"
+                     : "the marking flagged no cell";
     }
     return marked;
+  }
+
+  unsigned int
+  Simulation::ensure_error_share(const unsigned int marked)
+  {
+    // The error the flagged cells carry, relative to the whole estimate
+    // (sums of squared contributions, all adapted bodies).
+    double                              flagged = 0, total = 0;
+    bool                                serial = true;
+    std::vector<const Vector<double> *> contributions;
+    for (const auto &a : adaptations)
+    {
+      const auto &body = a->get_body();
+      serial           = serial && !body.is_mesh_distributed();
+      const auto &c    = a->error_contributions();
+      contributions.push_back(&c);
+      for (const auto &cell : body.get_triangulation().active_cell_iterators())
+      {
+        const double c2 =
+          c(cell->active_cell_index()) * c(cell->active_cell_index());
+        total += c2;
+        if (cell->refine_flag_set())
+          flagged += c2;
+      }
+    }
+    // (Distributed meshes mark their own cells: left as the rule marked.)
+    if (!serial || !(total > 0) ||
+        flagged >= AdaptationParameters::min_refined_error_share * total)
+      return marked;
+    AdaptationParameters doerfler = parameters.adaptation;
+    doerfler.marking              = MarkingType::doerfler;
+    doerfler.fraction      = AdaptationParameters::min_refined_error_share;
+    const double threshold = joint_marking_threshold(contributions, doerfler);
+    unsigned int now       = 0;
+    for (auto &a : adaptations)
+      now += a->mark_above(threshold);
+    pcout << "  the marking flagged " << marked << " cells carrying "
+          << 100. * flagged / total << " % of the estimated error: marking "
+          << now << " cells (Doerfler, "
+          << 100. * AdaptationParameters::min_refined_error_share
+          << " %) instead" << std::endl;
+    return now;
   }
 
   void
@@ -503,6 +577,12 @@ namespace ddcontact
           << parameters.output_directory << std::endl;
 
     setup_bodies();
+    // An Output/Points entry outside its body is refused now, not after
+    // the solve (the evaluation names the entry and the point).
+    for (const auto &point : parameters.points)
+      for (const auto &body : bodies)
+        if (body->name() == point.body)
+          body->stresses().at_point(point.x);
     if (parameters.adaptation.enabled())
       setup_adaptation();
     if (!parameters.contact_pairs.empty())
@@ -520,6 +600,15 @@ namespace ddcontact
                            : "diverged");
       throw;
     }
+    catch (const InterruptedError &)
+    {
+      // The history so far, the last iterate and summary.json "interrupted".
+      if (dd_solver)
+        write_failed_run("interrupted");
+      else
+        report.write_summary(results(), "interrupted");
+      throw;
+    }
 
     std::string status = "completed", shortfall;
     if (dd_solver)
@@ -533,10 +622,22 @@ namespace ddcontact
     }
     if (!parameters.adaptation.enabled())
       output_results(0);
+    // A Target error that the adaptation stopped above is a shortfall of
+    // the run, named in summary.json and by the exit code 5.
+    const double target   = parameters.adaptation.target_error;
+    const double estimate = relative_energy_error_estimate(adaptations);
+    const bool   missed   = parameters.adaptation.enabled() && target > 0 &&
+                        estimate > target && shortfall.empty();
+    if (missed)
+      status = "target_not_reached";
     report.write_summary(results(), status);
     report.print_warnings();
     if (!shortfall.empty())
       throw DivergenceError(shortfall);
+    if (missed)
+      for (const auto &warning : report.summary().at("warnings"))
+        if (warning.get<std::string>().rfind("Adaptation/Target error", 0) == 0)
+          throw TargetNotReachedError(warning.get<std::string>());
 
     timer.print_summary();
     pcout << "wall time " << std::fixed << std::setprecision(2)

@@ -52,18 +52,17 @@ namespace
     if (whole_arc)
       geo << "Physical Curve(" << id << ") = {1, 4};\n";
     else
-      geo << "Physical Curve(" << id << ") = {1};\nPhysical Curve("
-          << id + 3 << ") = {4};\n";
-    geo << "Physical Curve(" << id + 1 << ") = {2};\nPhysical Curve("
-        << id + 2 << ") = {3};\nPhysical Surface(1) = {1};\n"
+      geo << "Physical Curve(" << id << ") = {1};\nPhysical Curve(" << id + 3
+          << ") = {4};\n";
+    geo << "Physical Curve(" << id + 1 << ") = {2};\nPhysical Curve(" << id + 2
+        << ") = {3};\nPhysical Surface(1) = {1};\n"
         << "Field[1] = Distance;\nField[1].PointsList = {2};\n"
         << "Field[2] = Threshold;\nField[2].InField = 1;\n"
         << "Field[2].SizeMin = " << h << ";\nField[2].SizeMax = R/5;\n"
         << "Field[2].DistMin = 0.05*R;\nField[2].DistMax = 0.8*R;\n"
         << "Background Field = 2;\nMesh.MeshSizeExtendFromBoundary = 0;\n"
         << "Mesh.MeshSizeFromPoints = 0;\nMesh.MeshSizeFromCurvature = 0;\n";
-    const std::string file =
-      name + (whole_arc ? "_whole" : "_cut") + ".geo";
+    const std::string file = name + (whole_arc ? "_whole" : "_cut") + ".geo";
     std::ofstream(file) << geo.str();
     return file;
   }
@@ -75,7 +74,8 @@ namespace
   std::string
   cylinders_scene(const bool whole_arc)
   {
-    const std::string upper = quarter_disc("upper", 1., 1., 0.0025, 11, whole_arc);
+    const std::string upper =
+      quarter_disc("upper", 1., 1., 0.0025, 11, whole_arc);
     const std::string lower =
       quarter_disc("lower", 2., -1., 0.004, 21, whole_arc);
     std::ostringstream prm;
@@ -96,8 +96,8 @@ namespace
           << "  subsection Element\n    set Cell type = triangle\n  end\n"
           << "  subsection Material\n    set Young's modulus = " << E
           << "\n    set Poisson's ratio = " << nu << "\n  end\n"
-          << "  subsection Boundary conditions\n" << conditions
-          << "    set Contact ids = " << id << "\n  end\nend\n";
+          << "  subsection Boundary conditions\n"
+          << conditions << "    set Contact ids = " << id << "\n  end\nend\n";
     };
     body("upper",
          upper,
@@ -173,19 +173,18 @@ main(int argc, char **argv)
 
   // 1. Hertz with the whole arcs as zones (doc/verification.md, 2.2).
   std::cout << "two cylinders, whole quarter arcs as zones" << std::endl;
-  const auto whole = run_scene(cylinders_scene(true),
-                               {"Output directory=contact_search_whole"},
-                               {});
-  const auto cut =
-    run_scene(cylinders_scene(false), {"Output directory=contact_search_cut"}, {});
+  const auto whole = run_scene(
+    cylinders_scene(true), {"Output directory=contact_search_whole"}, {});
+  const auto cut = run_scene(
+    cylinders_scene(false), {"Output directory=contact_search_cut"}, {});
   {
     const auto   state = whole->get_dd_solver().contact_state(0);
     const auto  &pts   = whole->get_contact_pairs()[0]->points();
     const double P     = 2 * state.force_1[1]; // the whole force
     const double R     = 1. / (1. / 1. + 1. / 2.);
-    const double E     = 1. / ((1 - 0.3 * 0.3) / 1000 + (1 - 0.25 * 0.25) / 2000);
-    const double a     = std::sqrt(4 * P * R / (M_PI * E));
-    const double p0    = 2 * P / (M_PI * a);
+    const double E  = 1. / ((1 - 0.3 * 0.3) / 1000 + (1 - 0.25 * 0.25) / 2000);
+    const double a  = std::sqrt(4 * P * R / (M_PI * E));
+    const double p0 = 2 * P / (M_PI * a);
     // The load is q R1 = 0.5 on the half model: all of it goes through the
     // contact (equilibrium of the upper body).
     check("vertical contact force = q R1 (equilibrium)",
@@ -214,7 +213,8 @@ main(int argc, char **argv)
     // assumes a << R (a/R* = 5 %, its correction to a and p0 is below
     // 1 %, doc/verification.md 2.2). Each stays within 2 %.
     check("half-width a against Hertz", relative(a_fit, a), 0.02);
-    check("peak pressure p0 against Hertz", relative(state.max_pressure, p0), 0.02);
+    check(
+      "peak pressure p0 against Hertz", relative(state.max_pressure, p0), 0.02);
     // The horizontal force of the half model: the pressure along n_1 =
     // (x/R1, -...) on the upper body, int_0^a p0 sqrt(1 - x^2/a^2) x/R1 dx
     // = p0 a^2 / (3 R1), to the same accuracy as a^2 p0 (two errors of 2 %
@@ -326,8 +326,8 @@ main(int argc, char **argv)
     double worst_stress = 0;
     for (unsigned int b = 0; b < 2; ++b)
       for (const Point<2> x :
-           b == 0 ? std::vector<Point<2>>{{0.5, 1.02}, {0.91, 1.66}} :
-                    std::vector<Point<2>>{{0.13, 0.97}, {0.77, 0.41}})
+           b == 0 ? std::vector<Point<2>>{{0.5, 1.02}, {0.91, 1.66}}
+                  : std::vector<Point<2>>{{0.13, 0.97}, {0.77, 0.41}})
       {
         const auto v = s->get_bodies()[b]->stresses().at_point(x);
         worst_stress = std::max({worst_stress,

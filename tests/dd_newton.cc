@@ -121,11 +121,10 @@ main(int argc, char **argv)
   //    gives the same.
   for (const std::string c : {"0.05", "100"})
   {
-    const auto sim =
-      run_scene(uniaxial,
-                {"Output directory=dd_newton_output", newton},
-                {"Contact pair S/Formulation=exact",
-                 "Contact pair S/Penalty=" + c});
+    const auto sim = run_scene(
+      uniaxial,
+      {"Output directory=dd_newton_output", newton},
+      {"Contact pair S/Formulation=exact", "Contact pair S/Penalty=" + c});
     const double L       = 4;
     const double p_exact = uniaxial_pressure(0.);
     const auto   state   = sim->get_dd_solver().contact_state(0);
@@ -175,13 +174,12 @@ main(int argc, char **argv)
     const std::string message = error_message<DivergenceError>(
       [&]
       {
-        run_coarse_paper_scene(
-          source_dir,
-          "dd_newton_output",
-          1,
-          {"Adaptation/Mode=none"},
-          {"Contact pair S/Formulation=exact",
-           "Domain decomposition/AL tolerance=2e-4"});
+        run_coarse_paper_scene(source_dir,
+                               "dd_newton_output",
+                               1,
+                               {"Adaptation/Mode=none"},
+                               {"Contact pair S/Formulation=exact",
+                                "Domain decomposition/AL tolerance=2e-4"});
       });
     std::cout << "dd, paper scene, AL tolerance 2e-4: "
               << message.substr(0, 160) << "..." << std::endl;
@@ -248,7 +246,9 @@ main(int argc, char **argv)
       "Output directory=dd_newton_output",
       "Domain decomposition/eps_residual=1e-8"};
     if (mode == "exact")
-      overrides.push_back("Contact pair S/Formulation=exact");
+      overrides.insert(overrides.end(),
+                       {"Contact pair punch_on_plate/Formulation=exact",
+                        "Contact pair plate_on_base/Formulation=exact"});
     else
       overrides.insert(overrides.end(),
                        {"Domain decomposition/Contact pressure=nodes",

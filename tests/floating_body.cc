@@ -68,7 +68,8 @@ main(int argc, char **argv)
     const std::vector<std::string> common = {
       "Output directory=floating_body_output",
       newton,
-      std::string("Contact pair S/Formulation=") + (exact == "true" ? "exact" : "penalty"),
+      std::string("Contact pair S/Formulation=") +
+        (exact == "true" ? "exact" : "penalty"),
       "Domain decomposition/eps_residual=1e-10"};
     const auto         pressed = run_scene(uniaxial, common, {});
     const double       F       = vertical_force(*pressed);

@@ -35,15 +35,14 @@ main(int argc, char **argv)
   const double Delta = 1.366e-3, k = 2e-5, h = 0.25;
   for (const std::string evaluation : {"nodes", "points"})
   {
-    const auto sim =
-      run_scene(source_dir + "/prm/stability/uniaxial.prm",
-                {"Output directory=gap_evaluation_output",
-                 "Domain decomposition/Solver=dd-newton",
-                 "Contact pair S/Formulation=exact"},
-                {"Body omega2/Mesh/Subdivisions=16, 4",
-                 "Constants=Delta=1.366e-3, k=2e-5",
-                 "Contact pair S/Gap=k*x^2",
-                 "Contact pair S/Gap evaluation=" + evaluation});
+    const auto sim   = run_scene(source_dir + "/prm/stability/uniaxial.prm",
+                               {"Output directory=gap_evaluation_output",
+                                  "Domain decomposition/Solver=dd-newton",
+                                  "Contact pair S/Formulation=exact"},
+                               {"Body omega2/Mesh/Subdivisions=16, 4",
+                                  "Constants=Delta=1.366e-3, k=2e-5",
+                                  "Contact pair S/Gap=k*x^2",
+                                  "Contact pair S/Gap evaluation=" + evaluation});
     const auto state = sim->get_dd_solver().contact_state(0);
     std::cout << "exact contact, gap k x^2 at the " << evaluation
               << ": max penetration " << state.max_penetration

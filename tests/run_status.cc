@@ -182,8 +182,7 @@ main(int argc, char **argv)
 
     for (const auto &remedy :
          {std::vector<std::string>{"Contact pair S/Penalty=1",
-                                   "Domain decomposition/Augmented "
-                                   "Lagrangian=true"},
+                                   "Contact pair S/Formulation=exact"},
           std::vector<std::string>{"Contact pair S/Penalty=0.01"}})
     {
       const auto exact =

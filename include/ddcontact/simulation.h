@@ -140,6 +140,13 @@ namespace ddcontact
     unsigned int
     mark_cells(bool may_refine);
 
+    /** Above Adaptation/Target error: if the cells @p marked carry less
+     * than AdaptationParameters::min_refined_error_share of the estimated
+     * error, mark the fewest cells that carry that share instead (Doerfler
+     * over all adapted bodies). Returns the marked cells. */
+    unsigned int
+    ensure_error_share(unsigned int marked);
+
     /** Refine the marked cells, transfer the iterates, rebuild the
      * contact pairs and the DD's vectors. */
     void
@@ -193,7 +200,10 @@ namespace ddcontact
     std::unique_ptr<ContactZoneWriter>               contact_zone_writer;
     std::vector<std::unique_ptr<AdaptiveRefinement>> adaptations;
     unsigned int                                     n_adaptation_steps = 0;
-    unsigned int                                     n_output_steps     = 0;
+    /** What stopped the refinement while the estimate was still above
+     * Adaptation/Target error ("" while it goes on). */
+    std::string  adaptation_stop;
+    unsigned int n_output_steps = 0;
   };
 } // namespace ddcontact
 

@@ -10,6 +10,8 @@
 #include <ddcontact/body/elastic_body.h>
 
 #include <array>
+#include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace ddcontact
@@ -99,6 +101,32 @@ namespace ddcontact
   }
 
   template <int dim>
+  std::pair<double, double>
+  BodyStresses<dim>::largest_strain_and_rotation() const
+  {
+    const Quadrature<dim> centre = body.is_simplex()
+                                     ? Quadrature<dim>(QGaussSimplex<dim>(1))
+                                     : Quadrature<dim>(QGauss<dim>(1));
+    FEValues<dim>         fe_values(
+      body.get_mapping(), body.get_fe(), centre, update_gradients);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<Tensor<2, dim>>      gradient(1);
+    double                           strain = 0, rotation = 0;
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (body.computes(cell))
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_gradients(u, gradient);
+        const SymmetricTensor<2, dim> eps = symmetrize(gradient[0]);
+        for (const double e : eigenvalues(eps))
+          strain = std::max(strain, std::abs(e));
+        rotation = std::max(
+          rotation, 0.5 * std::abs(gradient[0][1][0] - gradient[0][0][1]));
+      }
+    return {strain, rotation};
+  }
+
+  template <int dim>
   double
   BodyStresses<dim>::strain_energy() const
   {
@@ -149,7 +177,8 @@ namespace ddcontact
     const auto outside = [&]()
     {
       std::ostringstream s;
-      s << "Output/Points: the point (" << x << ") does not lie in body '"
+      s << std::setprecision(std::numeric_limits<double>::max_digits10)
+        << "Output/Points: the point (" << x << ") does not lie in body '"
         << body.name() << "'";
       return InputError(s.str());
     };

@@ -88,8 +88,8 @@ namespace ddcontact
     gap_at(const ContactPoint &p)
     {
       std::ostringstream s;
-      s << std::setprecision(6) << "the gap is " << p.gap << " at x = "
-        << coordinates(p.x);
+      s << std::setprecision(6) << "the gap is " << p.gap
+        << " at x = " << coordinates(p.x);
       return s.str();
     }
 
@@ -297,9 +297,9 @@ namespace ddcontact
     }
     for (const auto &f : faces_1)
       h_max = std::max(h_max, f.a.distance(f.b));
-    const double search_distance = parameters.search_distance > 0 ?
-                                     parameters.search_distance :
-                                     default_search_distance(h_max);
+    const double        search_distance = parameters.search_distance > 0
+                                            ? parameters.search_distance
+                                            : default_search_distance(h_max);
     const ContactSearch search_2(segments_2, normals_2, search_distance);
     // Zones whose normals are nowhere opposed can never touch: a wrong
     // boundary id (issue 31's same-facing zones).
@@ -307,15 +307,14 @@ namespace ddcontact
                      faces_1.end(),
                      [&](const ZoneFace &f)
                      { return search_2.has_opposed_normal(f.normal); }))
-      throw InputError(section + "Boundary id 2: no face of the zone of '" +
-                       body_1.name() + "' (boundary id " +
-                       std::to_string(parameters.boundary_id_1) +
-                       ") faces any face of the zone of '" + body_2.name() +
-                       "' (boundary id " +
-                       std::to_string(parameters.boundary_id_2) +
-                       "): their outward normals are nowhere opposed (within "
-                       "60 degrees), so the zones can never touch; check the "
-                       "boundary ids");
+      throw InputError(
+        section + "Boundary id 2: no face of the zone of '" + body_1.name() +
+        "' (boundary id " + std::to_string(parameters.boundary_id_1) +
+        ") faces any face of the zone of '" + body_2.name() +
+        "' (boundary id " + std::to_string(parameters.boundary_id_2) +
+        "): their outward normals are nowhere opposed (within "
+        "60 degrees), so the zones can never touch; check the "
+        "boundary ids");
 
     const QGauss<1> gauss(parameters.n_gauss);
     contact_points.clear();
@@ -352,8 +351,7 @@ namespace ddcontact
       // S_2 within reach cross it: there the partner face changes, and so
       // does the polynomial of u_2n (ContactSearch).
       std::vector<double> breaks = {0., 1.};
-      for (const auto &v :
-           search_2.segments().end_points_over(face.a, face.b))
+      for (const auto &v : search_2.segments().end_points_over(face.a, face.b))
       {
         if (std::abs((v - face.a) * face.normal) > search_distance)
           continue;
@@ -402,9 +400,8 @@ namespace ddcontact
                              "on the whole zone");
           report.record(p.x, p.gap, partner->gap, length);
           if (!body_2.is_mesh_distributed())
-            shapes_2.push_back(point_shapes_at(body_2,
-                                               faces_2[partner->segment].cell,
-                                               {p.projection})[0]);
+            shapes_2.push_back(point_shapes_at(
+              body_2, faces_2[partner->segment].cell, {p.projection})[0]);
           xs.push_back(p.x);
           contact_points.push_back(p);
         }
@@ -547,8 +544,8 @@ namespace ddcontact
     if (report.worst_excess > 0)
     {
       s << pair << "the Gap expression '" << parameters.gap_expression
-        << "' gives " << report.worst_expression << " at x = "
-        << coordinates(report.worst_excess_at)
+        << "' gives " << report.worst_expression
+        << " at x = " << coordinates(report.worst_excess_at)
         << ", where the meshes are " << report.worst_geometric
         << " apart along the normal (geometric gap): the expression lets the "
            "bodies touch across empty space; use Gap type = geometric, or a "

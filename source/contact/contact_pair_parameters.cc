@@ -113,10 +113,9 @@ namespace ddcontact
     body_2                    = Utilities::trim(prm.get("Body 2"));
     boundary_id_1             = prm.get_integer("Boundary id 1");
     boundary_id_2             = prm.get_integer("Boundary id 2");
-    formulation =
-      parse_selection<ContactFormulation>(prm.get("Formulation"));
-    gap_type = parse_selection<GapType>(prm.get("Gap type"));
-    gap_expression            = prm.get("Gap");
+    formulation = parse_selection<ContactFormulation>(prm.get("Formulation"));
+    gap_type    = parse_selection<GapType>(prm.get("Gap type"));
+    gap_expression = prm.get("Gap");
     gap_evaluation = parse_selection<GapEvaluation>(prm.get("Gap evaluation"));
     penalty_type   = parse_selection<PenaltyType>(prm.get("Penalty type"));
     penalty        = prm.get_double("Penalty");

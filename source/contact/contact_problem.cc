@@ -179,7 +179,7 @@ namespace ddcontact
       state.max_penetration =
         std::max(state.max_penetration, state.u_1n[q] + state.u_2n[q] - pt.gap);
     }
-    state.half_width   = (hi >= lo) ? 0.5 * (hi - lo) : 0.;
+    state.half_width = (hi >= lo) ? 0.5 * (hi - lo) : 0.;
     // The peak is that of the field written to the CSV and the VTU, at the
     // contact points; the largest nodal multiplier (exact contact, Contact
     // pressure = nodes) lies at a node of S_1 and is kept beside it.

@@ -68,11 +68,12 @@ namespace ddcontact
   std::optional<FacingPoint>
   ContactSearch::facing_point(const Point<2> &x, const Tensor<1, 2> &n_1) const
   {
-    const double d = search_distance;
+    const double               d = search_distance;
     std::optional<FacingPoint> best;
     // Only the faces whose boxes the normal segment [x - d n_1, x + d n_1]
     // crosses can be met within the search distance.
-    for (const unsigned int j : search.segments_crossed(x - d * n_1, x + d * n_1))
+    for (const unsigned int j :
+         search.segments_crossed(x - d * n_1, x + d * n_1))
     {
       const Tensor<1, 2> &n_2    = normals[j];
       const double        cosine = n_1 * n_2;
@@ -84,7 +85,7 @@ namespace ddcontact
       if (std::abs(t) > d)
         continue;
       const Tensor<1, 2> along = b - a;
-      const double       s     = (x + t * n_1 - a) * along / along.norm_square();
+      const double       s = (x + t * n_1 - a) * along / along.norm_square();
       // On the face: the tolerance only keeps a point whose normal line
       // passes through a vertex from falling between two faces.
       if (s < -1e-10 || s > 1. + 1e-10)

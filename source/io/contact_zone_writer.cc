@@ -1,6 +1,7 @@
 #include <deal.II/numerics/data_component_interpretation.h>
 
 #include <ddcontact/io/contact_zone_writer.h>
+#include <ddcontact/io/output_file.h>
 #include <ddcontact/io/vtk_flags.h>
 
 #include <fstream>
@@ -146,16 +147,18 @@ namespace ddcontact
     std::ostringstream name;
     name << "contact_" << pair.name() << '-' << std::setw(4)
          << std::setfill('0') << step << ".vtu";
-    std::ofstream out(directory + "/" + name.str());
+    OutputFile out(directory + "/" + name.str());
     DataOutBase::write_vtu(build_patches(pair, state, multipliers),
                            names,
                            vectors,
                            vtk_flags(),
-                           out);
+                           out.stream());
+    out.commit();
 
     auto &pair_records = records[pair.name()];
     pair_records.emplace_back(time, name.str());
-    std::ofstream pvd(directory + "/contact_" + pair.name() + ".pvd");
-    DataOutBase::write_pvd_record(pvd, pair_records);
+    OutputFile pvd(directory + "/contact_" + pair.name() + ".pvd");
+    DataOutBase::write_pvd_record(pvd.stream(), pair_records);
+    pvd.commit();
   }
 } // namespace ddcontact

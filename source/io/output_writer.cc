@@ -4,6 +4,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <ddcontact/body/smoothed_stresses.h>
+#include <ddcontact/io/output_file.h>
 #include <ddcontact/io/output_writer.h>
 #include <ddcontact/io/vtk_flags.h>
 
@@ -193,29 +194,33 @@ namespace ddcontact
             pieces.push_back(name + "." + std::to_string(p) + ".vtu");
         if (owned[this_process] > 0)
         {
-          std::ofstream out(directory + "/" + name + "." +
-                            std::to_string(this_process) + ".vtu");
-          data_out.write_vtu(out);
+          OutputFile out(directory + "/" + name + "." +
+                         std::to_string(this_process) + ".vtu");
+          data_out.write_vtu(out.stream());
+          out.commit();
         }
       }
       else
       {
         pieces.push_back(name + ".vtu");
-        std::ofstream out(directory + "/" + pieces.back());
-        data_out.write_vtu(out);
+        OutputFile out(directory + "/" + pieces.back());
+        data_out.write_vtu(out.stream());
+        out.commit();
       }
       // Group the bodies of this step; every piece has the same fields.
       if (root && b + 1 == bodies.size())
       {
-        std::ofstream out(directory + "/" + group);
-        data_out.write_pvtu_record(out, pieces);
+        OutputFile out(directory + "/" + group);
+        data_out.write_pvtu_record(out.stream(), pieces);
+        out.commit();
       }
     }
     if (!root)
       return;
 
     records.emplace_back(time, group);
-    std::ofstream pvd(directory + "/solution.pvd");
-    DataOutBase::write_pvd_record(pvd, records);
+    OutputFile pvd(directory + "/solution.pvd");
+    DataOutBase::write_pvd_record(pvd.stream(), records);
+    pvd.commit();
   }
 } // namespace ddcontact

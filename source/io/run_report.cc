@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <ddcontact/io/output_file.h>
 #include <ddcontact/io/run_report.h>
 #include <ddcontact/version.h>
 
@@ -60,8 +61,8 @@ namespace ddcontact
       std::ostringstream s;
       const bool         exact = parameters.dd.exact_contact();
       s << std::setprecision(2) << "contact pair " << pair
-        << (exact ? ": exact contact leaves a penetration of " :
-                    ": the penalty leaves a penetration of ")
+        << (exact ? ": exact contact leaves a penetration of "
+                  : ": the penalty leaves a penetration of ")
         << penetration << ", ";
       if (approach > 0)
         s << 100 * penetration / approach << " % of the approach " << approach
@@ -110,6 +111,9 @@ namespace ddcontact
     if (!writes_files)
       return;
     statistics.open(parameters.output_directory + "/statistics.csv");
+    if (!statistics)
+      throw WriteError("cannot write '" + parameters.output_directory +
+                       "/statistics.csv'");
     statistics << "cycle,dd_iterations";
     for (const auto &body : bodies)
       statistics << ",cells_" << body->name() << ",dofs_" << body->name();
@@ -167,6 +171,9 @@ namespace ddcontact
         << std::max(0., relative_energy_error_estimate(results.adaptations))
         << '\n';
     out.flush();
+    if (!out)
+      throw WriteError("cannot write '" + parameters.output_directory +
+                       "/statistics.csv'; is the disk full?");
   }
 
   void
@@ -174,7 +181,8 @@ namespace ddcontact
   {
     if (!writes_files)
       return;
-    std::ofstream out(parameters.output_directory + "/history.csv");
+    OutputFile file(parameters.output_directory + "/history.csv");
+    auto      &out = file.stream();
     out << "k,residual,increment,gamma,contact_force,active_length,"
            "max_penetration,time_s\n";
     out << std::setprecision(10);
@@ -182,6 +190,7 @@ namespace ddcontact
       out << r.iteration << ',' << r.residual << ',' << r.increment << ','
           << r.gamma << ',' << r.force << ',' << r.active_length << ','
           << r.max_penetration << ',' << r.time << '\n';
+    file.commit();
   }
 
   void
@@ -192,16 +201,19 @@ namespace ddcontact
       return;
     for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
     {
-      const auto    state = results.dd_solver->contact_state(p);
-      const auto   &pair  = *results.contact_pairs[p];
-      const auto   &pts   = pair.points();
-      std::ofstream out(parameters.output_directory + "/contact_" +
-                        pair.name() + suffix + ".csv");
+      const auto  state = results.dd_solver->contact_state(p);
+      const auto &pair  = *results.contact_pairs[p];
+      const auto &pts   = pair.points();
+      OutputFile  file(parameters.output_directory + "/contact_" + pair.name() +
+                      suffix + ".csv");
+      auto       &out = file.stream();
       out << "x1,x2,pressure,u_1n,u_2n,gap,weight\n" << std::setprecision(12);
+      // (0 - sigma_n: no "-0" where the pressure is zero.)
       for (unsigned int q = 0; q < pts.size(); ++q)
-        out << pts[q].x[0] << ',' << pts[q].x[1] << ',' << -state.sigma_n[q]
+        out << pts[q].x[0] << ',' << pts[q].x[1] << ',' << 0. - state.sigma_n[q]
             << ',' << state.u_1n[q] << ',' << state.u_2n[q] << ',' << pts[q].gap
             << ',' << pts[q].JxW << '\n';
+      file.commit();
     }
   }
 
@@ -270,8 +282,9 @@ namespace ddcontact
       std::ostringstream name;
       name << parameters.output_directory << "/cells_" << body.name() << '-'
            << std::setw(4) << std::setfill('0') << step << ".csv";
-      std::ofstream out(name.str());
-      out << "x0,y0,x1,y1,x2,y2,x3,y3,level,von_mises,eta\n" << text;
+      OutputFile out(name.str());
+      out.stream() << "x0,y0,x1,y1,x2,y2,x3,y3,level,von_mises,eta\n" << text;
+      out.commit();
     }
   }
 
@@ -295,6 +308,10 @@ namespace ddcontact
       b["dofs"]              = body->n_dofs();
       b["min_cell_diameter"] = body->get_mesh().min_cell_diameter();
       b["strain_energy"]     = body->stresses().strain_energy();
+      const auto [strain, rotation] =
+        body->stresses().largest_strain_and_rotation();
+      b["largest_strain"]   = Utilities::MPI::max(strain, MPI_COMM_WORLD);
+      b["largest_rotation"] = Utilities::MPI::max(rotation, MPI_COMM_WORLD);
       list.push_back(b);
     }
     return list;
@@ -364,7 +381,7 @@ namespace ddcontact
       c["force"] =
         Json::array({Json::array({state.force_1[0], state.force_1[1]}),
                      Json::array({state.force_2[0], state.force_2[1]})});
-      c["max_pressure"]    = state.max_pressure;
+      c["max_pressure"] = state.max_pressure;
       if (state.max_nodal_pressure > 0)
         c["max_nodal_pressure"] = state.max_nodal_pressure;
       c["contact_length"]  = state.contact_length;
@@ -387,6 +404,21 @@ namespace ddcontact
         zone_cell_diameter(pair.get_body_1(), pair_parameters.boundary_id_1),
         zone_cell_diameter(pair.get_body_2(), pair_parameters.boundary_id_2));
       c["approach"] = approach;
+      // An approach beyond a few per cent of the thinner body is no
+      // small-strain contact (units, most likely).
+      const double thinner =
+        std::min(pair.thickness_of_body_1(), pair.thickness_of_body_2());
+      if (approach > small_strain_limit * thinner)
+      {
+        std::ostringstream s;
+        s << std::setprecision(3) << "contact pair " << pair.name()
+          << ": the bodies approach by " << approach << ", "
+          << 100 * approach / thinner << " % of the thinner body (" << thinner
+          << "), beyond the " << 100 * small_strain_limit
+          << " % of a small-strain problem; check the units of the loads, "
+             "the prescribed displacements and Young's modulus";
+        json["warnings"].push_back(s.str());
+      }
       // The contact search at the last setup of the pair.
       const auto &found = pair.search_report();
       Json        search;
@@ -471,6 +503,19 @@ namespace ddcontact
     json["target_error"] = target > 0 ? Json(target) : Json();
     json["target_reached"] =
       (target > 0 && estimate >= 0) ? Json(estimate <= target) : Json();
+    if (target > 0 && estimate > target)
+    {
+      std::ostringstream s;
+      s << "Adaptation/Target error " << target
+        << " not reached: the estimated relative energy-norm error is "
+        << estimate << " after " << results.n_adaptation_steps
+        << " refinement cycles, and "
+        << (results.adaptation_stop.empty() ? "the refinement stopped"
+                                            : results.adaptation_stop)
+        << "; raise the cap that stopped it, or set a larger Target error";
+      json["adaptation_stopped_by"] = results.adaptation_stop;
+      json["warnings"].push_back(s.str());
+    }
   }
 
   Json
@@ -513,13 +558,34 @@ namespace ddcontact
                        "per unit thickness (plane strain)";
     json["warnings"] = Json::array();
     json["bodies"]   = bodies_json(results);
+    for (const auto &b : json["bodies"])
+    {
+      const double strain   = b["largest_strain"].get<double>();
+      const double rotation = b["largest_rotation"].get<double>();
+      if (!(std::max(strain, rotation) <= small_strain_limit))
+      {
+        std::ostringstream s;
+        s << std::setprecision(3) << "body '" << b["name"].get<std::string>()
+          << "': the largest strain is " << strain << " and the largest "
+          << "rotation " << rotation << ", beyond the "
+          << 100 * small_strain_limit
+          << " % where linear elasticity (small strains (1)) holds; the "
+             "loads or displacements and Young's modulus are probably in "
+             "different units (a load in Pa with E in MPa is 1e6 times too "
+             "large)";
+        json["warnings"].push_back(s.str());
+      }
+    }
     json["mpi_processes"] = results.distribution.n_processes();
     json["body_owners"]   = results.distribution.describe();
     json["points"]        = points_json(results);
     // The penetration is judged only where the contact iteration converged
     // (also "stalled": the DD converged, the Uzawa loop did not).
     if (!results.contact_pairs.empty())
-      add_contact(results, status == "converged" || status == "stalled", json);
+      add_contact(results,
+                  status == "converged" || status == "stalled" ||
+                    status == "target_not_reached",
+                  json);
     if (parameters.adaptation.enabled())
       add_adaptation(results, json);
     json["wall_time_s"] = wall_clock.wall_time();

@@ -1,3 +1,4 @@
+#include <ddcontact/io/run_record.h>
 #include <ddcontact/parameter_tools.h>
 #include <ddcontact/solvers/contact_solver.h>
 #include <ddcontact/solvers/dd_newton_solver.h>
@@ -77,6 +78,9 @@ namespace ddcontact
     records.push_back(record);
     if (iteration_callback)
       iteration_callback(record.iteration);
+    // SIGINT/SIGTERM: stop here, with this iteration recorded.
+    interruption::check("contact iteration " +
+                        std::to_string(record.iteration));
   }
 
   void

@@ -75,6 +75,13 @@ namespace ddcontact
     // target).
     double target_error = 0;
 
+    /** With a Target error above the estimate, each cycle refines cells
+     * that carry at least this share of the squared estimate (Doerfler),
+     * whatever the marking rule flagged: a geometric reduction of the
+     * error per cycle, so that the run ends within a few times the cost of
+     * its final mesh. */
+    static constexpr double min_refined_error_share = 0.2;
+
     bool
     enabled() const
     {

@@ -71,6 +71,16 @@ namespace ddcontact
     PointValues<dim>
     at_point(const Point<dim> &x) const;
 
+    /** The largest strain and the largest rotation of the body, each the
+     * largest over the cell centres (of this process's cells): the
+     * largest principal strain magnitude of eps(u) (1), and |omega| of the
+     * skew part (d_1 u_2 - d_2 u_1) / 2 of grad u. Linear elasticity holds
+     * while both are small (RunReport::small_strain_limit). The cell
+     * centres soften the singular corners of a punch, which no mesh
+     * resolves anyway. */
+    std::pair<double, double>
+    largest_strain_and_rotation() const;
+
     /** The elastic energy 1/2 a_a(u, u) of (11), with the quadrature of the
      * assembly. */
     double

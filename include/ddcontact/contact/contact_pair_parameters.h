@@ -55,18 +55,18 @@ namespace ddcontact
    */
   struct ContactPairParameters
   {
-    std::string   name;
-    std::string   body_1, body_2;
-    unsigned int  boundary_id_1 = 0, boundary_id_2 = 0;
-    ContactFormulation formulation = ContactFormulation::exact;
-    GapType       gap_type       = GapType::expression;
-    std::string   gap_expression = "0";
-    GapEvaluation gap_evaluation = GapEvaluation::nodes;
-    PenaltyType   penalty_type   = PenaltyType::relative;
-    double        penalty        = 0.05; // c, or theta itself
-    double        thickness      = 0;    // H; 0: from body 1's mesh
-    unsigned int  n_gauss        = 3;    // Gauss points per piece
-    double        search_distance = 0;   // d of the search; 0: auto
+    std::string        name;
+    std::string        body_1, body_2;
+    unsigned int       boundary_id_1 = 0, boundary_id_2 = 0;
+    ContactFormulation formulation     = ContactFormulation::exact;
+    GapType            gap_type        = GapType::expression;
+    std::string        gap_expression  = "0";
+    GapEvaluation      gap_evaluation  = GapEvaluation::nodes;
+    PenaltyType        penalty_type    = PenaltyType::relative;
+    double             penalty         = 0.05; // c, or theta itself
+    double             thickness       = 0;    // H; 0: from body 1's mesh
+    unsigned int       n_gauss         = 3;    // Gauss points per piece
+    double             search_distance = 0;    // d of the search; 0: auto
 
     static void
     declare(ParameterHandler &prm);

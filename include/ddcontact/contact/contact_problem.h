@@ -22,9 +22,9 @@ namespace ddcontact
   {
     std::vector<double> u_1n, u_2n, sigma_n; // at every contact point
     Tensor<1, 2>        force_1, force_2;
-    double              max_pressure   = 0; // over the contact points
-    double max_nodal_pressure = 0; // over the nodal multipliers, 0: none
-    double              contact_length = 0;
+    double              max_pressure = 0; // over the contact points
+    double max_nodal_pressure        = 0; // over the nodal multipliers, 0: none
+    double contact_length            = 0;
     double half_width      = 0; // half the extent of the active set along S
     double max_penetration = 0;
   };

@@ -39,10 +39,10 @@ namespace ddcontact
     Point<2> min_gap_at;
     /** Whether the gap is an expression; then the largest excess of the
      * geometric distance over it beyond the tolerance, and where. */
-    bool     expression_gap      = false;
-    double   worst_excess        = 0;
-    double   worst_expression    = 0;
-    double   worst_geometric     = 0;
+    bool     expression_gap   = false;
+    double   worst_excess     = 0;
+    double   worst_expression = 0;
+    double   worst_geometric  = 0;
     Point<2> worst_excess_at;
     double   worst_excess_length = 0; // face length there
     /** Length of the face of S_1 at the deepest overlap. */

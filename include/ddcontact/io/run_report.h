@@ -57,6 +57,8 @@ namespace ddcontact
       unsigned int n_contact_iterations;
       /** Newton iterations of the monolithic solver (Solver = monolithic). */
       unsigned int n_newton_iterations;
+      /** What stopped the refinement above Adaptation/Target error, or "". */
+      std::string adaptation_stop = "";
     };
 
     /** The report of a run of @p parameters, timed by @p timer and
@@ -113,6 +115,11 @@ namespace ddcontact
     /** ... and by at most this fraction of the smallest cell diameter
      * along the contact zone (see README, summary.json `warnings`). */
     static constexpr double penetration_per_cell = 0.1;
+    /** Linear elasticity (small strains (1), small rotations, the small-gap
+     * assumption) is trusted up to strains and rotations of this size, and
+     * an approach of this fraction of the thinner body of a pair; beyond,
+     * the run warns and names units as the likely cause. */
+    static constexpr double small_strain_limit = 0.05;
 
     /** The summary last written (also for tests). */
     const Json &

@@ -74,15 +74,15 @@ namespace ddcontact
     InitialGuess      initial_guess  = InitialGuess::elastic_layer;
     /** Exact contact (Contact pair/Formulation = exact): set by the scene
      * from its pairs, not read here. */
-    bool              augmented_lagrangian  = false;
-    double            al_tolerance          = 1e-3; // penetration / approach
-    unsigned int      al_max_updates        = 30;
-    bool              write_every_iteration = false;
-    bool              print_every_iteration = false; // Output/Verbosity = full
-    unsigned int      n_newton              = 50;
-    bool              pressure_on_nodes     = false; // Contact pressure
-    std::string       contact_pressure      = "auto"; // the entry
-    bool              penalty_continuation  = true;
+    bool         augmented_lagrangian  = false;
+    double       al_tolerance          = 1e-3; // penetration / approach
+    unsigned int al_max_updates        = 30;
+    bool         write_every_iteration = false;
+    bool         print_every_iteration = false; // Output/Verbosity = full
+    unsigned int n_newton              = 50;
+    bool         pressure_on_nodes     = false;  // Contact pressure
+    std::string  contact_pressure      = "auto"; // the entry
+    bool         penalty_continuation  = true;
 
     /** Exact contact (theta = 0) solved directly by dd-newton with one
      * multiplier per node of S_1 (ContactInterface); the other solvers

@@ -23,6 +23,14 @@ namespace ddcontact
   public:
     using DivergenceError::DivergenceError;
   };
+  /** An adaptive run stopped with its estimate above Adaptation/Target
+   * error (summary.json `status` "target_not_reached"); the message gives
+   * the estimate and what stopped the refinement. Exit code 5. */
+  class TargetNotReachedError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
 } // namespace ddcontact
 
 #endif
