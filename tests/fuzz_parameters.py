@@ -14,7 +14,8 @@ address-space limit and a time limit and is judged:
 
   converged  exit 0, summary.json says converged/completed, no NaN in it
              or in the CSV files;
-  refused    exit 1 (bad input) or 4 (diverged), exactly one line on
+  refused    exit 1 (bad input), 4 (diverged), 5 (target not reached),
+             7 (write failure) or 8 (out of memory), exactly one line on
              stderr and it starts `ddcontact: error:`;
   FAILURE    anything else: a signal, another exit code, a time-out,
              several lines or a stack trace, a NaN written as a result.
@@ -127,7 +128,9 @@ def judge(code, stderr, outdir):
             if re.search(r"\bnan\b|\binf\b", open(name).read(), re.I):
                 return "NaN or inf in " + os.path.basename(name)
         return "converged"
-    if code in (1, 4) and len(lines) == 1 and \
+    # The documented exit codes of a clean refusal (README): bad input,
+    # failed iteration, target not reached, write failure, out of memory.
+    if code in (1, 4, 5, 7, 8) and len(lines) == 1 and \
             lines[0].startswith("ddcontact: error: ") and \
             "Stacktrace" not in stderr:
         return "refused"
