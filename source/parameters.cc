@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -54,6 +55,21 @@ namespace ddcontact
     std::string
     without_input_string(std::string message, const std::string &text)
     {
+      // deal.II 9.4 on a subsection nobody declared: "Line <n> of file
+      // <input string: There is no such subsection to be entered: A.B".
+      const std::string unknown = "There is no such subsection to be entered: ";
+      const auto        u       = message.find(unknown);
+      const auto        l       = message.find("Line <");
+      if (u != std::string::npos && l != std::string::npos)
+      {
+        std::string path = Utilities::trim(message.substr(u + unknown.size()));
+        std::replace(path.begin(), path.end(), '.', '/');
+        const std::string number =
+          message.substr(l + 6, message.find('>', l) - l - 6);
+        return "line " + number + ": there is no subsection '" + path +
+               "' (misspelled? a body or contact pair also needs its name "
+               "in Bodies or Contact pairs)";
+      }
       const std::string tag  = " of file <input string>";
       const auto        at   = message.find(tag);
       const auto        line = message.find("Line <");
@@ -485,6 +501,50 @@ namespace ddcontact
     }
     for (const auto &o : overrides)
       apply_override(prm, o);
+
+    // A listed body or pair needs its subsection (in the file, or in an
+    // override of one of its entries): without it every entry would take
+    // its default, and the first complaint would name some default.
+    {
+      std::set<std::string> sections;
+      std::istringstream    lines(text);
+      std::string           line;
+      while (std::getline(lines, line))
+      {
+        std::istringstream words(line.substr(0, line.find('#')));
+        std::string        keyword, word, name;
+        words >> keyword;
+        std::transform(keyword.begin(),
+                       keyword.end(),
+                       keyword.begin(),
+                       [](const unsigned char c) { return std::tolower(c); });
+        if (keyword != "subsection")
+          continue;
+        while (words >> word)
+          name += (name.empty() ? "" : " ") + word;
+        sections.insert(name);
+      }
+      const auto has_section = [&](const std::string &section)
+      {
+        return sections.count(section) > 0 ||
+               std::any_of(overrides.begin(),
+                           overrides.end(),
+                           [&](const std::string &o)
+                           { return o.rfind(section + "/", 0) == 0; });
+      };
+      for (const auto &name : body_names)
+        if (!has_section("Body " + name))
+          throw InputError("Bodies: '" + name +
+                           "' is listed, but the file has no subsection "
+                           "'Body " +
+                           name + "'");
+      for (const auto &name : pair_names)
+        if (!has_section("Contact pair " + name))
+          throw InputError("Contact pairs: '" + name +
+                           "' is listed, but the file has no subsection "
+                           "'Contact pair " +
+                           name + "'");
+    }
 
     try
     {

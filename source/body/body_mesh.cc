@@ -30,6 +30,50 @@ namespace ddcontact
 {
   namespace
   {
+    /**
+     * The cells of a Gmsh file in the 2.2 format (what gmsh writes for a
+     * .geo here): refuse a file without 2D cells -- a .geo whose Physical
+     * Curves have no Physical Surface makes one -- and second-order cells,
+     * naming them, before GridIn fails without saying why.
+     */
+    void
+    check_cell_types(const std::string &text,
+                     const std::string &file,
+                     const std::string &geometry,
+                     const std::string &what)
+    {
+      const auto at = text.find("$Elements");
+      if (at == std::string::npos || text.find("$MeshFormat\n2") != 0)
+        return; // another format: GridIn judges it
+      std::istringstream in(text.substr(at + 9));
+      std::size_t        n = 0;
+      in >> n;
+      unsigned int n_2d = 0;
+      std::string  line;
+      std::getline(in, line);
+      for (std::size_t i = 0; i < n && std::getline(in, line); ++i)
+      {
+        std::istringstream words(line);
+        unsigned int       number = 0, type = 0;
+        words >> number >> type;
+        if (type == 9 || type == 10 || type == 16)
+          throw InputError(what + ": '" + file + "' holds second-order " +
+                           (type == 9 ? "triangles" : "quadrilaterals") +
+                           ", which are not supported; mesh with first-order "
+                           "cells (gmsh -order 1)");
+        if (type == 2 || type == 3)
+          ++n_2d;
+      }
+      if (n_2d == 0)
+        throw InputError(
+          what + ": '" + (geometry.empty() ? file : geometry) +
+          "' gives no 2D cells" +
+          (geometry.empty()
+             ? ""
+             : ": a .geo with Physical Curves needs a Physical Surface "
+               "too, or gmsh writes only the curves"));
+    }
+
     /** Seconds gmsh may take for one .geo: DDCONTACT_GMSH_TIMEOUT, or 120. */
     double
     gmsh_time_limit()
@@ -165,6 +209,7 @@ namespace ddcontact
                0;
     };
 
+    std::string geometry; // the .geo the mesh was made from, if any
     if (ends_with(".geo"))
     {
       // Mesh the geometry with the gmsh binary, in the legacy ASCII format
@@ -195,7 +240,8 @@ namespace ddcontact
       if (status != 0)
         throw InputError(what + ": gmsh could not mesh '" + file + "' (see " +
                          log + ")");
-      file = msh;
+      geometry = file;
+      file     = msh;
     }
     else if (!ends_with(".msh"))
       throw InputError(what + ": '" + file +
@@ -203,7 +249,9 @@ namespace ddcontact
 
     // A mesh of 512 MiB has millions of cells: beyond what a body here
     // can factorize; refuse before reading it (and anything not a file).
-    std::istringstream in(read_bounded_file(file, 512u << 20, what));
+    const std::string text = read_bounded_file(file, 512u << 20, what);
+    check_cell_types(text, file, geometry, what);
+    std::istringstream in(text);
     GridIn<dim>        grid_in;
     grid_in.attach_triangulation(*tria);
     try

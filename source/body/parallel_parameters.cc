@@ -1,5 +1,7 @@
 #include <ddcontact/body/parallel_parameters.h>
 
+#include <cctype>
+
 #include <algorithm>
 #include <cmath>
 
@@ -113,6 +115,17 @@ namespace ddcontact
                          std::to_string(n_processes) + " processes");
       return static_cast<unsigned int>(r);
     };
+    // Empty items ("a: 0,, b: 1") are refused, not skipped.
+    {
+      std::string joined;
+      for (const char c : text)
+        if (!std::isspace(static_cast<unsigned char>(c)))
+          joined += c;
+      if (joined.find(",,") != std::string::npos || joined.front() == ',' ||
+          joined.back() == ',')
+        throw InputError("Parallel/Body owners: '" + text +
+                         "' has an empty item between its commas");
+    }
     for (const auto &item : split(text, ','))
     {
       const auto what  = "Parallel/Body owners: '" + item + "'";
@@ -120,6 +133,11 @@ namespace ddcontact
       if (parts.size() != 2)
         throw InputError(what + " is not 'body: process' or "
                                 "'body: first-last'");
+      if (Utilities::trim(parts[1]).rfind('-', 0) == 0)
+        throw InputError(what + ": a process number cannot be negative");
+      if (body_groups.count(parts[0]))
+        throw InputError(what + ": body '" + parts[0] +
+                         "' is listed twice; give each body once");
       if (std::find(body_names.begin(), body_names.end(), parts[0]) ==
           body_names.end())
         throw InputError(what + ": '" + parts[0] +
