@@ -75,5 +75,30 @@ else
   echo "skip read-only and full file systems: tmpfs cannot be mounted here (needs root)"
 fi
 
+# 6. Honest reports: a target the adaptation stops above, and units off
+# by 1e6.
+"$exe" --output "$work/target" "$paper" --set "Adaptation/Target error=0.01" \
+  --set "Adaptation/Max cells=300" >/dev/null 2>"$work/target.err"
+code=$?
+[ $code -eq 5 ] && [ "$(status_of "$work/target/summary.json")" = "target_not_reached" ] &&
+  grep -q "^ddcontact: error: Adaptation/Target error 0.01 not reached: .*Max cells (300)" "$work/target.err"
+check $? "a missed Target error: exit 5, target_not_reached, naming Max cells (exit $code: $(head -1 "$work/target.err"))"
+"$exe" --output "$work/units" "$src/prm/hertz_force.prm" --set "Constants=q=191390, R=5" \
+  --set "Output/Write vtu=false" >/dev/null 2>&1
+python3 - "$work/units/summary.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+ok = any("largest strain" in w and "units" in w for w in s["warnings"])
+sys.exit(0 if ok else 1)
+PY
+check $? "a load 1e6 too large: the strain warning names units"
+"$exe" --output "$work/units_ok" "$src/prm/hertz_force.prm" --set "Output/Write vtu=false" >/dev/null 2>&1
+python3 - "$work/units_ok/summary.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+sys.exit(0 if s["warnings"] == [] and s["bodies"][0]["largest_strain"] < 0.05 else 1)
+PY
+check $? "... and the shipped load gives no warning"
+
 echo "$failures failed"
 [ $failures -eq 0 ]
