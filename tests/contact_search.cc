@@ -179,7 +179,6 @@ main(int argc, char **argv)
     cylinders_scene(false), {"Output directory=contact_search_cut"}, {});
   {
     const auto   state = whole->get_dd_solver().contact_state(0);
-    const auto  &pts   = whole->get_contact_pairs()[0]->points();
     const double P     = 2 * state.force_1[1]; // the whole force
     const double R     = 1. / (1. / 1. + 1. / 2.);
     const double E  = 1. / ((1 - 0.3 * 0.3) / 1000 + (1 - 0.25 * 0.25) / 2000);
@@ -190,21 +189,9 @@ main(int argc, char **argv)
     check("vertical contact force = q R1 (equilibrium)",
           relative(state.force_1[1], 0.5),
           1e-8);
-    // Half-width from the profile, p^2 linear in x^2 (as tests/hertz.cc).
-    double s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0, fx = 0;
-    for (unsigned int q = 0; q < pts.size(); ++q)
-      if (state.sigma_n[q] < 0)
-      {
-        const double X = pts[q].x[0] * pts[q].x[0],
-                     Y = state.sigma_n[q] * state.sigma_n[q];
-        s0 += 1;
-        s1 += X;
-        s2 += X * X;
-        t0 += Y;
-        t1 += X * Y;
-      }
-    const double slope = (s0 * t1 - s1 * t0) / (s0 * s2 - s1 * s1);
-    const double a_fit = std::sqrt(-(t0 - slope * s1) / s0 / slope);
+    // Half-width from the whole profile (scene_tools.h).
+    const double a_fit = hertz_half_width(*whole);
+    double       fx    = 0;
     std::cout << "  P = " << P << ", a = " << a_fit << " (Hertz " << a
               << "), p0 = " << state.max_pressure << " (Hertz " << p0 << ")"
               << std::endl;

@@ -5,6 +5,7 @@
 
 #include <ddcontact/simulation.h>
 
+#include "scene_tools.h"
 #include "test_tools.h"
 
 #include <cmath>
@@ -38,7 +39,6 @@ main(int argc, char **argv)
     simulation.run();
 
     const auto   state = simulation.get_dd_solver().contact_state(0);
-    const auto  &pts   = simulation.get_contact_pairs()[0]->points();
     const double P     = state.force_1.norm();
 
     // Closed form at the computed force (doc/verification.md §2.2: in plane
@@ -47,26 +47,8 @@ main(int argc, char **argv)
     const double a_exact  = std::sqrt(4. * P * R / (M_PI * E_star));
     const double p0_exact = std::sqrt(P * E_star / (M_PI * R));
 
-    // Half-width from the profile: p^2 = p0^2 (1 - x^2/a^2) is linear in
-    // x^2, so a least-squares line through (x^2, p^2) over the points in
-    // contact gives a^2 = -intercept/slope. This uses the whole profile
-    // instead of the last active point, whose position is only known to
-    // the spacing of the contact points.
-    double s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
-    for (unsigned int q = 0; q < pts.size(); ++q)
-      if (state.sigma_n[q] < 0)
-      {
-        const double X = pts[q].x[0] * pts[q].x[0];
-        const double Y = state.sigma_n[q] * state.sigma_n[q];
-        s0 += 1;
-        s1 += X;
-        s2 += X * X;
-        t0 += Y;
-        t1 += X * Y;
-      }
-    const double slope     = (s0 * t1 - s1 * t0) / (s0 * s2 - s1 * s1);
-    const double intercept = (t0 - slope * s1) / s0;
-    const double a         = std::sqrt(-intercept / slope);
+    // Half-width from the whole profile (scene_tools.h).
+    const double a = hertz_half_width(simulation);
 
     const double h = simulation.get_bodies()[0]->get_mesh().min_cell_diameter();
     error_a.push_back(std::abs(a - a_exact) / a_exact);

@@ -35,6 +35,36 @@ namespace ddcontact
       simulation->run();
       return simulation;
     }
+    /**
+     * The Hertz half-width of the pressure profile of pair @p pair, centred
+     * on x1 = 0: p^2 = p0^2 (1 - x1^2/a^2) is linear in x1^2, so a
+     * least-squares line through (x1^2, p^2) over the points in contact
+     * gives a^2 = -intercept/slope. This uses the whole profile instead of
+     * the last active point, whose position is known only to the spacing
+     * of the contact points.
+     */
+    inline double
+    hertz_half_width(const Simulation &s, const unsigned int pair = 0)
+    {
+      const auto  state = s.get_dd_solver().contact_state(pair);
+      const auto &pts   = s.get_contact_pairs()[pair]->points();
+      double      s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
+      for (unsigned int q = 0; q < pts.size(); ++q)
+        if (state.sigma_n[q] < 0)
+        {
+          const double X = pts[q].x[0] * pts[q].x[0];
+          const double Y = state.sigma_n[q] * state.sigma_n[q];
+          s0 += 1;
+          s1 += X;
+          s2 += X * X;
+          t0 += Y;
+          t1 += X * Y;
+        }
+      const double slope     = (s0 * t1 - s1 * t0) / (s0 * s2 - s1 * s1);
+      const double intercept = (t0 - slope * s1) / s0;
+      return std::sqrt(-intercept / slope);
+    }
+
     /** The magnitude of the contact force on body 1 of pair @p pair. */
     inline double
     contact_force(const Simulation &s, const unsigned int pair = 0)
