@@ -5,7 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 
-#include <ddcontact/io/output_file.h>
+#include <ddcontact/output_file.h>
 #include <ddcontact/io/run_record.h>
 #include <ddcontact/parameters.h>
 #include <ddcontact/simulation.h>

@@ -1,6 +1,6 @@
 #include <deal.II/base/utilities.h>
 
-#include <ddcontact/io/output_file.h>
+#include <ddcontact/output_file.h>
 #include <ddcontact/parameters.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 #include <ddcontact/adaptivity/marking.h>
-#include <ddcontact/io/run_record.h>
+#include <ddcontact/interruption.h>
 #include <ddcontact/simulation.h>
 #include <ddcontact/solvers/monolithic_solver.h>
 #include <ddcontact/tasks.h>

@@ -1,5 +1,5 @@
 #include <ddcontact/io/json.h>
-#include <ddcontact/io/output_file.h>
+#include <ddcontact/output_file.h>
 
 #include <fstream>
 #include <stdexcept>

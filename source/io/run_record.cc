@@ -1,8 +1,8 @@
 #include <deal.II/base/mpi.h>
 
 #include <ddcontact/io/json.h>
-#include <ddcontact/io/output_file.h>
 #include <ddcontact/io/run_record.h>
+#include <ddcontact/output_file.h>
 #include <ddcontact/parameter_tools.h>
 #include <ddcontact/version.h>
 
@@ -17,16 +17,6 @@ namespace ddcontact
 {
   namespace
   {
-    volatile std::sig_atomic_t signal_received = 0;
-
-    extern "C" void
-    note_signal(const int signal)
-    {
-      signal_received = signal;
-      // A second signal ends the process at once.
-      std::signal(signal, SIG_DFL);
-    }
-
     /** Whether @p name is a file that a run writes into its directory. */
     bool
     is_result_file(const std::string &name)
@@ -54,27 +44,6 @@ namespace ddcontact
       return pid;
     }
   } // namespace
-
-  namespace interruption
-  {
-    void
-    install_handlers()
-    {
-      std::signal(SIGINT, note_signal);
-      std::signal(SIGTERM, note_signal);
-    }
-
-    void
-    check(const std::string &where)
-    {
-      const int any =
-        Utilities::MPI::max(static_cast<int>(signal_received), MPI_COMM_WORLD);
-      if (any != 0)
-        throw InterruptedError(
-          std::string(any == SIGINT ? "SIGINT" : "SIGTERM") +
-          " received: the run stopped after " + where);
-    }
-  } // namespace interruption
 
   RunRecord::RunRecord(const std::string &directory, const std::string &scene)
     : lock_file(directory + "/.ddcontact.lock")

@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <ddcontact/io/output_file.h>
+#include <ddcontact/output_file.h>
 #include <ddcontact/io/run_report.h>
 #include <ddcontact/version.h>
 

@@ -1,4 +1,4 @@
-#include <ddcontact/io/run_record.h>
+#include <ddcontact/interruption.h>
 #include <ddcontact/parameter_tools.h>
 #include <ddcontact/solvers/contact_solver.h>
 #include <ddcontact/solvers/dd_newton_solver.h>

@@ -1,4 +1,4 @@
-#include <ddcontact/io/output_file.h>
+#include <ddcontact/output_file.h>
 
 #include <cerrno>
 #include <cstdio>
