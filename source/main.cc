@@ -5,8 +5,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 
-#include <ddcontact/output_file.h>
 #include <ddcontact/io/run_record.h>
+#include <ddcontact/output_file.h>
 #include <ddcontact/parameters.h>
 #include <ddcontact/simulation.h>
 #include <ddcontact/version.h>
