@@ -1,8 +1,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <ddcontact/output_file.h>
 #include <ddcontact/io/run_report.h>
+#include <ddcontact/output_file.h>
 #include <ddcontact/version.h>
 
 #include <algorithm>
