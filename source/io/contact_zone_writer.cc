@@ -1,8 +1,8 @@
 #include <deal.II/numerics/data_component_interpretation.h>
 
 #include <ddcontact/io/contact_zone_writer.h>
-#include <ddcontact/output_file.h>
 #include <ddcontact/io/vtk_flags.h>
+#include <ddcontact/output_file.h>
 
 #include <fstream>
 #include <iomanip>

@@ -4,9 +4,9 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <ddcontact/body/smoothed_stresses.h>
-#include <ddcontact/output_file.h>
 #include <ddcontact/io/output_writer.h>
 #include <ddcontact/io/vtk_flags.h>
+#include <ddcontact/output_file.h>
 
 #include <algorithm>
 #include <fstream>
