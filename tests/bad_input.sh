@@ -100,6 +100,8 @@ printf 'include %s\nsubsection Body omega2\n  subsection Meshh\n  end\nend\n' "$
 case_ "misspelled subsection" "there is no subsection 'Body omega2/Meshh'" "$work/misspelled.prm"
 printf 'Point(1) = {0, 0, 0, 0.5};\nPoint(2) = {1, 0, 0, 0.5};\nPoint(3) = {1, 1, 0, 0.5};\nPoint(4) = {0, 1, 0, 0.5};\nLine(1) = {1, 2};\nLine(2) = {2, 3};\nLine(3) = {3, 4};\nLine(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\nPhysical Curve(2) = {1};\nPhysical Curve(3) = {3};\n' >"$work/nosurface.geo"
 case_ ".geo without a Physical Surface" "nosurface.geo' gives no 2D cells: a .geo with Physical Curves needs a Physical Surface" "$base" --set "Body lower/Mesh/Type=file" --set "Body lower/Mesh/File=$work/nosurface.geo"
+printf 'Point(1) = {-2, 0, 0, 0.5};\nPoint(2) = {2, 0, 0, 0.5};\nPoint(3) = {2, 1, 0, 0.5};\nPoint(4) = {-2, 1, 0, 0.5};\nLine(1) = {1, 2};\nLine(2) = {2, 3};\nLine(3) = {3, 4};\nLine(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\nPhysical Curve(2) = {1};\nPhysical Curve(3) = {3};\nPhysical Curve(7) = {3};\nPhysical Surface(1) = {1};\n' >"$work/twogroups.geo"
+case_ "an edge in two physical groups" "in the physical groups 3 and 7" "$base" --set "Body lower/Mesh/Type=file" --set "Body lower/Mesh/File=$work/twogroups.geo" --set "Body lower/Element/Cell type=triangle"
 case_ "Body owners with a negative rank" "a process number cannot be negative" "$paper" --set "Parallel/Body owners=omega1: -1, omega2: 0"
 case_ "Body owners listing a body twice" "body 'omega1' is listed twice" "$paper" --set "Parallel/Body owners=omega1: 0, omega1: 0, omega2: 0"
 case_ "Body owners with an empty item" "has an empty item" "$paper" --set "Parallel/Body owners=omega1: 0,, omega2: 0"

@@ -19,10 +19,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -48,8 +50,9 @@ namespace ddcontact
       std::istringstream in(text.substr(at + 9));
       std::size_t        n = 0;
       in >> n;
-      unsigned int n_2d = 0;
-      std::string  line;
+      unsigned int                                                  n_2d = 0;
+      std::string                                                   line;
+      std::map<std::pair<unsigned int, unsigned int>, unsigned int> edge_group;
       std::getline(in, line);
       for (std::size_t i = 0; i < n && std::getline(in, line); ++i)
       {
@@ -63,6 +66,28 @@ namespace ddcontact
                            "cells (gmsh -order 1)");
         if (type == 2 || type == 3)
           ++n_2d;
+        // A boundary edge in two physical groups: gmsh writes it once per
+        // group, and each face would get one id or the other (a contact
+        // curve also listed as Dirichlet lost three quarters of its points).
+        unsigned int n_tags = 0, physical = 0, tag = 0, a = 0, b = 0;
+        if (type == 1 && (words >> n_tags) && n_tags > 0 && (words >> physical))
+        {
+          for (unsigned int t = 1; t < n_tags; ++t)
+            words >> tag;
+          if (words >> a >> b)
+          {
+            const auto [it, inserted] =
+              edge_group.emplace(std::minmax(a, b), physical);
+            if (!inserted && it->second != physical)
+              throw InputError(
+                what + ": '" + (geometry.empty() ? file : geometry) +
+                "' puts the edge between its nodes " + std::to_string(a) +
+                " and " + std::to_string(b) + " in the physical groups " +
+                std::to_string(it->second) + " and " +
+                std::to_string(physical) +
+                "; give every curve one physical group (one boundary id)");
+          }
+        }
       }
       if (n_2d == 0)
         throw InputError(
