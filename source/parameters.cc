@@ -532,18 +532,16 @@ namespace ddcontact
                            [&](const std::string &o)
                            { return o.rfind(section + "/", 0) == 0; });
       };
-      for (const auto &name : body_names)
-        if (!has_section("Body " + name))
-          throw InputError("Bodies: '" + name +
-                           "' is listed, but the file has no subsection "
-                           "'Body " +
-                           name + "'");
-      for (const auto &name : pair_names)
-        if (!has_section("Contact pair " + name))
-          throw InputError("Contact pairs: '" + name +
-                           "' is listed, but the file has no subsection "
-                           "'Contact pair " +
-                           name + "'");
+      using Listed =
+        std::tuple<std::string, std::string, const std::vector<std::string> &>;
+      for (const auto &[entry, prefix, names] :
+           {Listed("Bodies", "Body ", body_names),
+            Listed("Contact pairs", "Contact pair ", pair_names)})
+        for (const auto &name : names)
+          if (!has_section(prefix + name))
+            throw InputError(entry + ": '" + name +
+                             "' is listed, but the file has no subsection '" +
+                             prefix + name + "'");
     }
 
     try

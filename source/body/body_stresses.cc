@@ -77,16 +77,21 @@ namespace ddcontact
   }
 
   template <int dim>
+  Quadrature<dim>
+  BodyStresses<dim>::cell_centre() const
+  {
+    return body.is_simplex() ? Quadrature<dim>(QGaussSimplex<dim>(1))
+                             : Quadrature<dim>(QGauss<dim>(1));
+  }
+
+  template <int dim>
   std::vector<SymmetricTensor<2, dim>>
   BodyStresses<dim>::at_cell_centres() const
   {
     std::vector<SymmetricTensor<2, dim>> result(
       body.get_triangulation().n_active_cells());
-    const Quadrature<dim> centre = body.is_simplex()
-                                     ? Quadrature<dim>(QGaussSimplex<dim>(1))
-                                     : Quadrature<dim>(QGauss<dim>(1));
-    FEValues<dim>         fe_values(
-      body.get_mapping(), body.get_fe(), centre, update_gradients);
+    FEValues<dim> fe_values(
+      body.get_mapping(), body.get_fe(), cell_centre(), update_gradients);
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(1);
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
@@ -104,11 +109,8 @@ namespace ddcontact
   std::pair<double, double>
   BodyStresses<dim>::largest_strain_and_rotation() const
   {
-    const Quadrature<dim> centre = body.is_simplex()
-                                     ? Quadrature<dim>(QGaussSimplex<dim>(1))
-                                     : Quadrature<dim>(QGauss<dim>(1));
-    FEValues<dim>         fe_values(
-      body.get_mapping(), body.get_fe(), centre, update_gradients);
+    FEValues<dim> fe_values(
+      body.get_mapping(), body.get_fe(), cell_centre(), update_gradients);
     const FEValuesExtractors::Vector displacement(0);
     std::vector<Tensor<2, dim>>      gradient(1);
     double                           strain = 0, rotation = 0;

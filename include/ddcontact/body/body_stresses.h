@@ -87,6 +87,10 @@ namespace ddcontact
     strain_energy() const;
 
   private:
+    /** The one-point rule at the centre of the body's cells. */
+    Quadrature<dim>
+    cell_centre() const;
+
     const ElasticBody<dim> &body;
     const Vector<double>   &u;
     /** div u at the reduced point of every active cell; empty with full
