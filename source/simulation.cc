@@ -127,6 +127,13 @@ namespace ddcontact
       for (const auto &circle : body->get_mesh().circular_boundaries())
         pcout << "    " << body->name() << ", curved boundary " << circle
               << std::endl;
+    for (const auto &body : bodies)
+      if (body->get_mesh().n_merged_vertices() > 0)
+        pcout << "    " << body->name() << ", merged "
+              << body->get_mesh().n_merged_vertices()
+              << " coincident vertices of its mesh file (Mesh/Merge "
+                 "coincident vertices)"
+              << std::endl;
   }
 
   void
@@ -631,6 +638,7 @@ namespace ddcontact
     if (missed)
       status = "target_not_reached";
     report.write_summary(results(), status);
+    report.print_reactions();
     report.print_warnings();
     if (!shortfall.empty())
       throw DivergenceError(shortfall);

@@ -123,7 +123,8 @@ namespace ddcontact
 
   template <int dim>
   void
-  ElasticBody<dim>::complete_constraints()
+  ElasticBody<dim>::complete_constraints(
+    AffineConstraints<double> &to_complete) const
   {
     // Every dof's constraint as the process owning the dof computed it,
     // on every process, in one closed object: the DD keeps the whole
@@ -133,7 +134,7 @@ namespace ddcontact
     // and the hanging nodes: few next to the iterate.
     std::vector<ConstraintLine> owned_lines;
     const IndexSet             &owned = dof_handler.locally_owned_dofs();
-    for (const auto &line : constraints.get_lines())
+    for (const auto &line : to_complete.get_lines())
       if (owned.is_element(line.index))
       {
         ConstraintLine l{line.index, {}, {}, line.inhomogeneity};
@@ -145,17 +146,17 @@ namespace ddcontact
         owned_lines.push_back(l);
       }
     // (reinit() also drops the restriction to the locally relevant dofs.)
-    constraints.reinit();
+    to_complete.reinit();
     for (const auto &from_process : Utilities::MPI::all_gather(
            get_triangulation().get_communicator(), owned_lines))
       for (const auto &l : from_process)
       {
-        constraints.add_line(l.index);
+        to_complete.add_line(l.index);
         for (unsigned int k = 0; k < l.masters.size(); ++k)
-          constraints.add_entry(l.index, l.masters[k], l.weights[k]);
-        constraints.set_inhomogeneity(l.index, l.inhomogeneity);
+          to_complete.add_entry(l.index, l.masters[k], l.weights[k]);
+        to_complete.set_inhomogeneity(l.index, l.inhomogeneity);
       }
-    constraints.close();
+    to_complete.close();
   }
 
   template <int dim>
@@ -170,13 +171,20 @@ namespace ddcontact
     // distributed mesh computes the constraints of its locally relevant
     // dofs (below, they are completed).
     constraints.clear();
+    hanging_node_constraints.clear();
     if (mesh.is_distributed())
     {
       IndexSet relevant;
       DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
       constraints.reinit(relevant);
+      hanging_node_constraints.reinit(relevant);
     }
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    DoFTools::make_hanging_node_constraints(dof_handler,
+                                            hanging_node_constraints);
+    hanging_node_constraints.close();
+    if (mesh.is_distributed())
+      complete_constraints(hanging_node_constraints);
     check_dirichlet_values(*this);
     for (const auto &[id, d] : boundary_conditions.dirichlet)
       VectorTools::interpolate_boundary_values(
@@ -184,7 +192,7 @@ namespace ddcontact
     setup_rigid_modes();
     constraints.close();
     if (mesh.is_distributed())
-      complete_constraints();
+      complete_constraints(constraints);
 
     solution.reinit(dof_handler.n_dofs());
     if (solved_here)
@@ -238,7 +246,67 @@ namespace ddcontact
   {
     linear_solver->zero();
     Vector<double> data_load(is_floating() ? dof_handler.n_dofs() : 0);
+    // A load expression that is not finite somewhere (sqrt(x) at x < 0) is
+    // found here, in the serial part (a worker thread must not throw), and
+    // named after the loop.
+    bool       non_finite_load = false;
+    const auto copier          = [&](const MeshWorker::CopyData<1, 1, 1> &copy)
+    {
+      for (const double v : copy.vectors[0])
+        non_finite_load = non_finite_load || !std::isfinite(v);
+      if (non_finite_load)
+        return;
+      // The load on the dofs as assembled, before the constraints drop the
+      // fixed components: its work on the rigid modes.
+      if (is_floating())
+        for (unsigned int i = 0; i < copy.local_dof_indices[0].size(); ++i)
+          data_load(copy.local_dof_indices[0][i]) += copy.vectors[0](i);
+      linear_solver->add(constraints,
+                         copy.matrices[0],
+                         copy.vectors[0],
+                         copy.local_dof_indices[0]);
+    };
+    assemble_cells(copier);
 
+    if (non_finite_load)
+      throw_non_finite_load(*this);
+    mode_loads.clear();
+    for (unsigned int k = 0; k < rigid_modes.size(); ++k)
+      mode_loads.push_back(rigid_modes.mode(k) * data_load);
+    linear_solver->compress();
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::unconstrained_residual(const Vector<double> &u,
+                                           Vector<double>       &r) const
+  {
+    AssertDimension(u.size(), dof_handler.n_dofs());
+    r.reinit(dof_handler.n_dofs());
+    // r_K = A_K u_K - f_K of every cell, added without constraints: the
+    // same cell matrices and loads the solver was given.
+    Vector<double> u_cell, r_cell;
+    assemble_cells(
+      [&](const MeshWorker::CopyData<1, 1, 1> &copy)
+      {
+        const auto &dofs = copy.local_dof_indices[0];
+        u_cell.reinit(dofs.size());
+        r_cell.reinit(dofs.size());
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          u_cell(i) = u(dofs[i]);
+        copy.matrices[0].vmult(r_cell, u_cell);
+        r_cell -= copy.vectors[0];
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          r(dofs[i]) += r_cell(i);
+      });
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::assemble_cells(
+    const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier)
+    const
+  {
     using Iterator = typename DoFHandler<dim>::active_cell_iterator;
     const FEValuesExtractors::Vector displacement(0);
     const double                     lambda = material.lambda();
@@ -327,27 +395,6 @@ namespace ddcontact
     };
 
     // On a partitioned mesh mesh_loop visits only this process's cells.
-    // A load expression that is not finite somewhere (sqrt(x) at x < 0) is
-    // found here, in the serial part (a worker thread must not throw), and
-    // named after the loop.
-    bool       non_finite_load = false;
-    const auto copier          = [&](const MeshWorker::CopyData<1, 1, 1> &copy)
-    {
-      for (const double v : copy.vectors[0])
-        non_finite_load = non_finite_load || !std::isfinite(v);
-      if (non_finite_load)
-        return;
-      // The load on the dofs as assembled, before the constraints drop the
-      // fixed components: its work on the rigid modes.
-      if (is_floating())
-        for (unsigned int i = 0; i < copy.local_dof_indices[0].size(); ++i)
-          data_load(copy.local_dof_indices[0][i]) += copy.vectors[0](i);
-      linear_solver->add(constraints,
-                         copy.matrices[0],
-                         copy.vectors[0],
-                         copy.local_dof_indices[0]);
-    };
-
     MeshWorker::ScratchData<dim> scratch(
       get_mapping(),
       *fe,
@@ -364,21 +411,15 @@ namespace ddcontact
                           MeshWorker::assemble_own_cells |
                             MeshWorker::assemble_boundary_faces,
                           boundary_worker);
-
-    if (non_finite_load)
-      throw_non_finite_load(*this);
-    mode_loads.clear();
-    for (unsigned int k = 0; k < rigid_modes.size(); ++k)
-      mode_loads.push_back(rigid_modes.mode(k) * data_load);
     if ((volumetric_quadrature != nullptr))
       assemble_reduced_volumetric_term(copier);
-    linear_solver->compress();
   }
 
   template <int dim>
   void
   ElasticBody<dim>::assemble_reduced_volumetric_term(
     const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier)
+    const
   {
     using Iterator = typename DoFHandler<dim>::active_cell_iterator;
     const FEValuesExtractors::Vector displacement(0);

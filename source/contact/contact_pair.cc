@@ -605,6 +605,26 @@ namespace ddcontact
   }
 
   void
+  ContactPair::add_unconstrained_contact_load(
+    const std::vector<double> &sigma_n,
+    const ElasticBody<2>      &body,
+    Vector<double>            &load) const
+  {
+    AssertDimension(sigma_n.size(), contact_points.size());
+    Assert(&body == &body_1 || &body == &body_2, ExcInternalError());
+    const bool on_body_1 = (&body == &body_1);
+    for (unsigned int q = 0; q < contact_points.size(); ++q)
+    {
+      const auto  &p            = contact_points[q];
+      const double s            = sigma_n[q] * p.JxW;
+      const auto  &dofs         = on_body_1 ? p.dofs_1 : p.dofs_2;
+      const auto  &coefficients = on_body_1 ? p.a : p.b;
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        load(dofs[i]) += s * coefficients[i];
+    }
+  }
+
+  void
   ContactPair::add_traction_samples(const std::vector<double> &sigma_n,
                                     const ElasticBody<2>      &body,
                                     BoundaryTractionSamples   &samples) const

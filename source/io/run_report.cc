@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <ddcontact/body/reaction_forces.h>
 #include <ddcontact/io/run_report.h>
 #include <ddcontact/output_file.h>
 #include <ddcontact/version.h>
@@ -312,9 +313,65 @@ namespace ddcontact
         body->stresses().largest_strain_and_rotation();
       b["largest_strain"]   = Utilities::MPI::max(strain, MPI_COMM_WORLD);
       b["largest_rotation"] = Utilities::MPI::max(rotation, MPI_COMM_WORLD);
+      add_reactions(results, *body, b);
       list.push_back(b);
     }
     return list;
+  }
+
+  void
+  RunReport::add_reactions(const Results        &results,
+                           const ElasticBody<2> &body,
+                           Json                 &json) const
+  {
+    // The contact traction of the reported state (contact_<pair>.csv).
+    Vector<double> contact_load;
+    if (results.dd_solver != nullptr)
+      for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
+      {
+        const auto &pair = *results.contact_pairs[p];
+        if (&pair.get_body_1() != &body && &pair.get_body_2() != &body)
+          continue;
+        contact_load.reinit(body.n_dofs(), contact_load.size() > 0);
+        pair.add_unconstrained_contact_load(
+          results.dd_solver->contact_state(p).sigma_n, body, contact_load);
+      }
+    const ReactionForces<2> reactions(body, body.get_solution(), contact_load);
+    const auto vector = [](const Tensor<1, 2> &f) { return Json{f[0], f[1]}; };
+    Json       supports = Json::array();
+    for (const auto &support : reactions.supports())
+    {
+      std::string prescribed;
+      for (unsigned int c = 0; c < 2; ++c)
+        if (support.prescribed[c])
+          prescribed += (c == 0) ? "x" : "y";
+      supports.push_back({{"boundary_id", support.id},
+                          {"force", vector(support.force)},
+                          {"prescribed", prescribed}});
+    }
+    json["reactions"]     = supports;
+    json["applied_load"]  = vector(reactions.applied_load());
+    json["contact_force"] = vector(reactions.contact_force());
+    // What the forces leave over, against the largest of them: the
+    // contact solver's tolerance (or a floating body's clamped modes).
+    double largest = std::max(reactions.applied_load().norm(),
+                              reactions.contact_force().norm());
+    for (const auto &support : reactions.supports())
+      largest = std::max(largest, support.force.norm());
+    json["force_imbalance"] =
+      (largest > 0) ? reactions.imbalance().norm() / largest : 0.;
+  }
+
+  void
+  RunReport::print_reactions() const
+  {
+    for (const auto &b : summary_json.at("bodies"))
+      for (const auto &r : b.at("reactions"))
+        pcout << std::setprecision(6) << "  body '"
+              << b.at("name").get<std::string>() << "', Dirichlet id "
+              << r.at("boundary_id").get<int>() << ": reaction ("
+              << r.at("force")[0].get<double>() << ", "
+              << r.at("force")[1].get<double>() << ")" << std::endl;
   }
 
   Json

@@ -267,6 +267,26 @@ namespace ddcontact
       return constraints;
     }
 
+    /** The hanging-node constraints alone (no Dirichlet data), of all
+     * dofs on every process: the conforming test functions of the reaction
+     * forces (ReactionForces), which must not lose the share of a hanging
+     * node on a Dirichlet boundary. */
+    const AffineConstraints<double> &
+    get_hanging_node_constraints() const
+    {
+      return hanging_node_constraints;
+    }
+
+    /**
+     * r_i = a_a(u, phi_i) - l_a(phi_i) for every dof i, with the cell
+     * matrices and loads of assemble_system() and no constraints applied:
+     * at a Dirichlet dof, the force the support exerts (plus the share of
+     * a hanging node, see get_hanging_node_constraints()). On a mesh
+     * partitioned between processes, the sum of this process's cells only.
+     */
+    void
+    unconstrained_residual(const Vector<double> &u, Vector<double> &r) const;
+
     /** The assembled stiffness matrix (on a body solved here by one
      * process). */
     const SparseMatrix<double> &
@@ -345,21 +365,29 @@ namespace ddcontact
     }
 
   private:
+    /** The cell matrices of a_a (11) and the loads of l_a (12) of this
+     * process's cells, each passed to @p copier (one thread at a time). */
+    void
+    assemble_cells(
+      const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier)
+      const;
+
     /** The lambda div u div v term of a_a (11) on one Gauss point per cell
      * (see get_volumetric_quadrature()), through @p copier. */
     void
     assemble_reduced_volumetric_term(
-      const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier);
+      const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier)
+      const;
 
     /** A new linear solver with its sparsity pattern, where the body is
      * solved. */
     void
     setup_matrix();
 
-    /** On a distributed mesh: replace the constraints of the locally
-     * relevant dofs by those of all dofs, each from its owner. */
+    /** On a distributed mesh: replace the lines of @p to_complete for the
+     * locally relevant dofs by those of all dofs, each from its owner. */
     void
-    complete_constraints();
+    complete_constraints(AffineConstraints<double> &to_complete) const;
 
     /** The free rigid modes (rigid_modes) and their fixed components,
      * added to the open @p constraints. */
@@ -381,6 +409,7 @@ namespace ddcontact
     DoFHandler<dim>                  dof_handler;
 
     AffineConstraints<double> constraints;
+    AffineConstraints<double> hanging_node_constraints;
     Vector<double>            solution;
     RigidBodyModes<dim>       rigid_modes;
     std::vector<double>       mode_loads;

@@ -143,6 +143,17 @@ namespace ddcontact
                       Vector<double>            &load_2) const;
 
     /**
+     * Add the load of the normal stress @p sigma_n on @p body (either side
+     * of the pair) to @p load, as add_contact_loads() does but with no
+     * constraints applied: the contact's share in the residual of a
+     * Dirichlet node (ReactionForces).
+     */
+    void
+    add_unconstrained_contact_load(const std::vector<double> &sigma_n,
+                                   const ElasticBody<2>      &body,
+                                   Vector<double>            &load) const;
+
+    /**
      * Append the traction sigma_n n_a that the normal stress @p sigma_n
      * (one value per contact point) exerts on @p body (either side of the
      * pair) to @p samples: at x with n_1 on body 1, at P(x) with n_2 = -n_1

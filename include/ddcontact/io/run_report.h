@@ -105,6 +105,11 @@ namespace ddcontact
     void
     write_summary(const Results &results, const std::string &status);
 
+    /** The reaction of every Dirichlet id of every body in the summary
+     * last written, one line each. */
+    void
+    print_reactions() const;
+
     /** Each warning of the summary last written, one line each. */
     void
     print_warnings() const;
@@ -132,6 +137,14 @@ namespace ddcontact
     /** Name, size, memory and strain energy of every body. */
     Json
     bodies_json(const Results &results) const;
+
+    /** The reaction forces of @p body (ReactionForces): per Dirichlet id,
+     * with its applied load, contact force and their imbalance, into
+     * @p json. Collective over a partitioned mesh. */
+    void
+    add_reactions(const Results        &results,
+                  const ElasticBody<2> &body,
+                  Json                 &json) const;
 
     /** The values at the requested points, also printed on the screen. */
     Json

@@ -1,0 +1,150 @@
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/fe/fe.h>
+
+#include <ddcontact/body/elastic_body.h>
+#include <ddcontact/body/reaction_forces.h>
+
+#include <map>
+
+namespace ddcontact
+{
+  namespace
+  {
+    /** For every dof, the index into the sorted Dirichlet ids of the id
+     * that prescribes it (the lowest, where ids meet), or -1. The faces of
+     * ghost cells count too: a process's cells touch their nodes. */
+    template <int dim>
+    std::vector<int>
+    support_of_dofs(const ElasticBody<dim>                &body,
+                    const std::vector<types::boundary_id> &ids)
+    {
+      const auto      &dirichlet = body.get_boundary_conditions().dirichlet;
+      const auto      &fe        = body.get_fe();
+      std::vector<int> support(body.n_dofs(), -1);
+      std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+      for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      {
+        if (cell->is_artificial())
+          continue;
+        for (const auto &face : cell->face_iterators())
+        {
+          if (!face->at_boundary())
+            continue;
+          const auto it = dirichlet.find(face->boundary_id());
+          if (it == dirichlet.end())
+            continue;
+          const int k = std::distance(
+            ids.begin(), std::find(ids.begin(), ids.end(), it->first));
+          face->get_dof_indices(face_dofs);
+          for (unsigned int i = 0; i < face_dofs.size(); ++i)
+          {
+            const unsigned int c = fe.face_system_to_component_index(i).first;
+            int               &s = support[face_dofs[i]];
+            if (it->second.mask[c] && (s < 0 || k < s))
+              s = k;
+          }
+        }
+      }
+      return support;
+    }
+
+    /** The sum of @p r over the dofs of each support, per direction; the
+     * last entry is the sum over all dofs. The dofs are those of this
+     * process's cells (with @p owned_only: the dofs it owns), summed over
+     * the processes of the mesh. */
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    sum_by_support(const ElasticBody<dim> &body,
+                   const std::vector<int> &support,
+                   const unsigned int      n_supports,
+                   const Vector<double>   &r,
+                   const bool              owned_only)
+    {
+      const IndexSet &owned = body.get_dof_handler().locally_owned_dofs();
+      // Component of each dof: the dofs of a cell name them.
+      const auto                          &fe = body.get_fe();
+      std::vector<Tensor<1, dim>>          sums(n_supports + 1);
+      std::vector<bool>                    counted(body.n_dofs(), false);
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      {
+        if (cell->is_artificial())
+          continue;
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+        {
+          if (counted[dofs[i]] || (owned_only && !owned.is_element(dofs[i])))
+            continue;
+          counted[dofs[i]]     = true;
+          const unsigned int c = fe.system_to_component_index(i).first;
+          sums[n_supports][c] += r(dofs[i]);
+          if (support[dofs[i]] >= 0)
+            sums[support[dofs[i]]][c] += r(dofs[i]);
+        }
+      }
+      for (auto &f : sums)
+        f = Utilities::MPI::sum(f, body.get_triangulation().get_communicator());
+      return sums;
+    }
+  } // namespace
+
+  template <int dim>
+  ReactionForces<dim>::ReactionForces(const ElasticBody<dim> &body,
+                                      const Vector<double>   &u,
+                                      const Vector<double>   &contact_load)
+  {
+    std::vector<types::boundary_id> ids;
+    for (const auto &[id, d] : body.get_boundary_conditions().dirichlet)
+      ids.push_back(id);
+    const auto support = support_of_dofs(body, ids);
+
+    // The residual of this process's cells, condensed onto the conforming
+    // test functions, summed per support over the processes.
+    Vector<double> r;
+    body.unconstrained_residual(u, r);
+    body.get_hanging_node_constraints().condense(r);
+    const auto cells = sum_by_support(body, support, ids.size(), r, false);
+
+    // The contact load is the same on every process: each counts the dofs
+    // it owns.
+    std::vector<Tensor<1, dim>> by_contact(ids.size() + 1);
+    if (contact_load.size() > 0)
+    {
+      Vector<double> c(contact_load);
+      body.get_hanging_node_constraints().condense(c);
+      by_contact = sum_by_support(body, support, ids.size(), c, true);
+    }
+
+    // The loads alone: the residual of u = 0 is -l_a(phi_i), which sums to
+    // -l_a(e_k) (the shape functions are a partition of unity); exactly 0
+    // without loads, where a_a(u, e_k) would leave round-off.
+    Vector<double> minus_load;
+    body.unconstrained_residual(Vector<double>(body.n_dofs()), minus_load);
+    applied =
+      -sum_by_support(body, support, ids.size(), minus_load, false)[ids.size()];
+    contact = by_contact[ids.size()];
+    for (unsigned int k = 0; k < ids.size(); ++k)
+    {
+      Support s;
+      s.id    = ids[k];
+      s.force = cells[k] - by_contact[k];
+      for (unsigned int c = 0; c < dim; ++c)
+        s.prescribed[c] =
+          body.get_boundary_conditions().dirichlet.at(ids[k]).mask[c];
+      support_forces.push_back(s);
+    }
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  ReactionForces<dim>::imbalance() const
+  {
+    Tensor<1, dim> sum = applied + contact;
+    for (const auto &s : support_forces)
+      sum += s.force;
+    return sum;
+  }
+
+  template class ReactionForces<2>;
+} // namespace ddcontact
