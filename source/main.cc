@@ -5,6 +5,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 
+#include <ddcontact/fatal_error.h>
+#include <ddcontact/interruption.h>
 #include <ddcontact/io/run_record.h>
 #include <ddcontact/output_file.h>
 #include <ddcontact/parameters.h>
@@ -13,7 +15,6 @@
 
 #include <filesystem>
 #include <iostream>
-#include <new>
 
 namespace
 {
@@ -38,16 +39,17 @@ namespace
 int
 main(int argc, char **argv)
 {
-  bool root = true;
   using namespace ddcontact;
+  // MPI lives until main returns: an error is reported while every process
+  // can still be reached (FatalError).
+  Utilities::MPI::MPI_InitFinalize mpi(
+    argc, argv, numbers::invalid_unsigned_int);
+  const FatalError fatal_error;
+  // Under mpirun every process holds every body and solves the ones it
+  // owns (BodyDistribution); the first process alone prints.
+  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   try
   {
-    Utilities::MPI::MPI_InitFinalize mpi(
-      argc, argv, numbers::invalid_unsigned_int);
-    // Under mpirun every process holds every body and solves the ones it
-    // owns (BodyDistribution); errors are the same on all of them, so the
-    // first process alone prints.
-    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     // SIGINT and SIGTERM end the run at the end of its current step.
     interruption::install_handlers();
 
@@ -133,49 +135,9 @@ main(int argc, char **argv)
     Simulation simulation(scene, std::cout);
     simulation.run();
   }
-  catch (const DivergenceError &e)
+  catch (...)
   {
-    if (root)
-      std::cerr << "ddcontact: error: " << e.what() << std::endl;
-    return exit_codes::iteration_failed;
-  }
-  catch (const TargetNotReachedError &e)
-  {
-    if (root)
-      std::cerr << "ddcontact: error: " << e.what() << std::endl;
-    return exit_codes::target_not_reached;
-  }
-  catch (const InterruptedError &e)
-  {
-    if (root)
-      std::cerr << "ddcontact: error: " << e.what() << std::endl;
-    return exit_codes::interrupted;
-  }
-  catch (const WriteError &e)
-  {
-    if (root)
-      std::cerr << "ddcontact: error: " << e.what() << std::endl;
-    return exit_codes::write_failed;
-  }
-  catch (const std::bad_alloc &)
-  {
-    if (root)
-      std::cerr << "ddcontact: error: out of memory; refine less (Initial "
-                   "refinement, Max cells) or run on more processes"
-                << std::endl;
-    return exit_codes::out_of_memory;
-  }
-  catch (const InputError &e)
-  {
-    if (root)
-      std::cerr << "ddcontact: error: " << e.what() << std::endl;
-    return exit_codes::bad_input;
-  }
-  catch (const std::exception &e)
-  {
-    if (root)
-      std::cerr << "ddcontact: error: " << e.what() << std::endl;
-    return exit_codes::internal_error;
+    return fatal_error.report(std::current_exception());
   }
   return 0;
 }

@@ -1,8 +1,10 @@
 #ifndef ddcontact_interruption_h
 #define ddcontact_interruption_h
 
+#include <new>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace ddcontact
 {
@@ -25,6 +27,27 @@ namespace ddcontact
   {
   public:
     using std::runtime_error::runtime_error;
+  };
+
+  /** An allocation failed in a step that names itself (reading a mesh
+   * file, say): main() prints the message, exit code 8. Any other
+   * std::bad_alloc gets main()'s general out-of-memory line. */
+  class OutOfMemoryError : public std::bad_alloc
+  {
+  public:
+    explicit OutOfMemoryError(std::string message)
+      : message(std::move(message))
+    {
+    }
+
+    const char *
+    what() const noexcept override
+    {
+      return message.c_str();
+    }
+
+  private:
+    std::string message;
   };
 
   /**
