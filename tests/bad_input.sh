@@ -9,11 +9,13 @@ failures=0
 
 # judge NAME EXPECTED_SUBSTRING EXIT_CODE: the run that wrote
 # $work/stderr must have failed cleanly with one line of ddcontact's
-# (mpirun adds its own report of the exit code after it).
+# (mpirun adds its own report of the exit code after it), and with the
+# exit code $expect_code if that is set (expect_code=8 case_ ...).
 judge_() {
   local name="$1" expect="$2" code="$3" lines
   lines=$(grep -c "^ddcontact: error" "$work/stderr")
   if [ "$code" -eq 0 ] || [ "$code" -ge 128 ] || [ "$lines" -ne 1 ] ||
+     [ "$code" -ne "${expect_code:-$code}" ] ||
      grep -q -E "Stacktrace|Aborted|Signal|Segmentation" "$work/stderr" ||
      ! grep -q -F -- "$expect" "$work/stderr"; then
     echo "FAIL $name: exit $code, $lines error line(s) on stderr, expected '$expect':"
@@ -99,9 +101,97 @@ case_ "pair listed without its subsection" "Contact pairs: 'T' is listed, but th
 printf 'include %s\nsubsection Body omega2\n  subsection Meshh\n  end\nend\n' "$paper" >"$work/misspelled.prm"
 case_ "misspelled subsection" "there is no subsection 'Body omega2/Meshh'" "$work/misspelled.prm"
 printf 'Point(1) = {0, 0, 0, 0.5};\nPoint(2) = {1, 0, 0, 0.5};\nPoint(3) = {1, 1, 0, 0.5};\nPoint(4) = {0, 1, 0, 0.5};\nLine(1) = {1, 2};\nLine(2) = {2, 3};\nLine(3) = {3, 4};\nLine(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\nPhysical Curve(2) = {1};\nPhysical Curve(3) = {3};\n' >"$work/nosurface.geo"
-case_ ".geo without a Physical Surface" "nosurface.geo' gives no 2D cells: a .geo with Physical Curves needs a Physical Surface" "$base" --set "Body lower/Mesh/Type=file" --set "Body lower/Mesh/File=$work/nosurface.geo"
+case_ ".geo without a Physical Surface" "nosurface.geo' gives no 2D cells: it needs a Plane Surface, and with Physical Curves a Physical Surface too" "$base" --set "Body lower/Mesh/Type=file" --set "Body lower/Mesh/File=$work/nosurface.geo"
 printf 'Point(1) = {-2, 0, 0, 0.5};\nPoint(2) = {2, 0, 0, 0.5};\nPoint(3) = {2, 1, 0, 0.5};\nPoint(4) = {-2, 1, 0, 0.5};\nLine(1) = {1, 2};\nLine(2) = {2, 3};\nLine(3) = {3, 4};\nLine(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\nPhysical Curve(2) = {1};\nPhysical Curve(3) = {3};\nPhysical Curve(7) = {3};\nPhysical Surface(1) = {1};\n' >"$work/twogroups.geo"
 case_ "an edge in two physical groups" "in the physical groups 3 and 7" "$base" --set "Body lower/Mesh/Type=file" --set "Body lower/Mesh/File=$work/twogroups.geo" --set "Body lower/Element/Cell type=triangle"
+
+# Mesh validation on reading (issue 31). msh_ FILE NODES ELEMENTS writes a
+# Gmsh 2.2 file: NODES "x y" per node (numbered from 1), ELEMENTS "type
+# tag nodes..." per element (type 1 a line, 3 a quadrilateral).
+msh_() {
+  local file="$1" nodes="$2" elements="$3" i=0
+  { printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n%s\n' "$(echo "$nodes" | wc -l)"
+    echo "$nodes" | while read -r x y; do i=$((i + 1)); echo "$i $x $y 0"; done
+    printf '$EndNodes\n$Elements\n%s\n' "$(echo "$elements" | wc -l)"
+    echo "$elements" | while read -r type tag rest; do
+      i=$((i + 1)); echo "$i $type 2 $tag $tag $rest"; done
+    printf '$EndElements\n'; } >"$file"
+}
+# file_case_ NAME EXPECTED_SUBSTRING FILE ARGS...: case_ with FILE as the
+# mesh of body lower.
+file_case_() {
+  local name="$1" expect="$2" file="$3"; shift 3
+  case_ "$name" "$expect" "$base" --set "Body lower/Mesh/Type=file" \
+    --set "Body lower/Mesh/File=$file" "$@"
+}
+# Two unit squares 1 apart: the first held at its bottom (id 2) and loaded
+# on its top (3); the second carries the load of id 3 and, on a second top
+# id 4, nothing or a contact id. It was "solved" with u = 2e11.
+msh_ "$work/two_pieces.msh" "0 0
+1 0
+1 1
+0 1
+2 0
+3 0
+3 1
+2 1" "1 2 1 2
+1 3 3 4
+1 3 7 8
+3 1 1 2 3 4
+3 1 5 6 7 8"
+file_case_ "a mesh piece that nothing holds" "the piece of 1 cell with the vertex (2, 0) has no Dirichlet condition and no face among the Contact ids" "$work/two_pieces.msh"
+sed 's/^3 1 2 3 3 7 8$/3 1 2 4 4 7 8/' "$work/two_pieces.msh" >"$work/contact_piece.msh"
+file_case_ "a mesh piece held by contact only" "the piece of 1 cell with the vertex (2, 0) is held by contact only: a body of several pieces must hold each in x and y" "$work/contact_piece.msh" --set "Body lower/Boundary conditions/Contact ids=4"
+# Two squares side by side whose common side has its own nodes twice: a
+# hidden crack (the force was 6.8 % low).
+msh_ "$work/crack.msh" "0 0
+1 0
+1 1
+0 1
+1 0
+2 0
+2 1
+1 1" "1 2 1 2
+1 2 5 6
+1 3 3 4
+1 3 7 8
+3 1 1 2 3 4
+3 1 5 6 7 8"
+file_case_ "coincident vertices (a hidden crack)" "crack.msh' has 2 vertices that coincide with another one but are separate nodes (a hidden crack), the first at (1, 0)" "$work/crack.msh"
+msh_ "$work/flat_cell.msh" "0 0
+1 0
+1 1
+0 1
+2 0
+3 0
+4 0" "1 2 1 2
+1 3 3 4
+3 1 1 2 3 4
+3 1 2 5 6 7"
+file_case_ "a cell of zero area" "flat_cell.msh' has 1 cell of zero or negative area" "$work/flat_cell.msh"
+msh_ "$work/folded_cell.msh" "0 0
+2 0
+0.5 0.5
+0 2" "1 2 1 2
+1 3 3 4
+3 1 1 2 3 4"
+file_case_ "a cell folded at a corner" "folded_cell.msh' has 1 cell of zero or negative area (degenerate, or folded at a corner), the first at its corner (0.5, 0.5)" "$work/folded_cell.msh"
+printf 'Point(1) = {0, 0, 0, 0.5};\nPoint(2) = {1, 0, 0, 0.5};\nPoint(3) = {1, 1, 0, 0.5};\nLine(1) = {1, 2};\nLine(2) = {2, 3};\n' >"$work/lines_only.geo"
+file_case_ ".geo without any surface" "lines_only.geo' gives no 2D cells: it needs a Plane Surface" "$work/lines_only.geo" --set "Body lower/Element/Cell type=triangle"
+# Under a 2 GB address-space limit, of which half counts as available: a
+# 400 MB file (sparse: no disk used) is refused by its size, naming it,
+# before any of it is read.
+truncate -s 400M "$work/huge.msh"
+printf '#!/usr/bin/env bash\nulimit -v 2000000\nexec "%s" "$@"\n' "$exe" >"$work/limited.sh"
+chmod +x "$work/limited.sh"
+exe_unlimited="$exe"; exe="$work/limited.sh"
+expect_code=1 file_case_ "a mesh file too large for the memory" "Body lower/Mesh/File: reading '$work/huge.msh' (419 MB) needs about 7 times its size" "$work/huge.msh"
+# A small file that declares 2e8 nodes: GridIn's vector of them does not
+# fit. Out of memory (exit 8) naming the file, not "cannot read".
+printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n200000000\n1 0 0 0\n$EndNodes\n' >"$work/many_nodes.msh"
+expect_code=8 file_case_ "out of memory while reading a mesh file" "Body lower/Mesh/File: out of memory while reading '$work/many_nodes.msh'" "$work/many_nodes.msh"
+exe="$exe_unlimited"; rm -f "$work/huge.msh"
+
 case_ "Body owners with a negative rank" "a process number cannot be negative" "$paper" --set "Parallel/Body owners=omega1: -1, omega2: 0"
 case_ "Body owners listing a body twice" "body 'omega1' is listed twice" "$paper" --set "Parallel/Body owners=omega1: 0, omega1: 0, omega2: 0"
 case_ "Body owners with an empty item" "has an empty item" "$paper" --set "Parallel/Body owners=omega1: 0,, omega2: 0"
@@ -147,6 +237,16 @@ printf 'For i In {1:1e15}\nEndFor\n' >"$work/inj/loop.geo"
 export DDCONTACT_GMSH_TIMEOUT=2
 case_ "gmsh in an endless loop" "within 2 s" "$src/prm/hertz_cylinder.prm" --set "Body cylinder/Mesh/File=$work/inj/loop.geo"
 unset DDCONTACT_GMSH_TIMEOUT
+# Mesh/Merge coincident vertices = true joins the crack and says so.
+"$exe" --output "$work/merged" "$base" --set "Output/Write vtu=false" \
+  --set "Body lower/Mesh/Type=file" --set "Body lower/Mesh/File=$work/crack.msh" \
+  --set "Body lower/Mesh/Merge coincident vertices=true" >"$work/stdout" 2>"$work/stderr"
+if [ $? -eq 0 ] && grep -q "lower, merged 2 coincident vertices" "$work/stdout"; then
+  echo "ok   Merge coincident vertices = true merges the crack's 2 vertices"
+else
+  echo "FAIL Merge coincident vertices = true:"; sed 's/^/    /' "$work/stderr" | head -5
+  failures=$((failures + 1))
+fi
 
 mpi_case_ "distributed mesh for a body on one process" "Parallel/Mesh" "$base" --set "Parallel/Mesh=distributed"
 
@@ -155,6 +255,6 @@ mpi_case_ "distributed mesh for a body on one process" "Parallel/Mesh" "$base" -
 case_ "Neumann on a Dirichlet component" "Body lower/Neumann: boundary id 2 has a Dirichlet condition on y" "$base" --set "Body lower/Boundary conditions/Neumann=2: 0; -p"
 case_ "roller with a load in the fixed direction" "Body lower/Neumann: boundary id 3 has a Dirichlet condition on x" "$base" --set "Body lower/Boundary conditions/Dirichlet=2: xy: 0; 0 | 3: x: 0; 0" --set "Body lower/Boundary conditions/Neumann=3: p; -p"
 
-total=$(( $(grep -c -E '^(mpi_)?case_ ' "$0") + 2 ))  # and two checks of outputs
+total=$(( $(grep -c -E '^(expect_code=[0-9]+ )?(mpi_|file_)?case_ ' "$0") + 3 ))  # and three checks of outputs
 echo "$((total - failures)) passed, $failures failed"
 [ $failures -eq 0 ]

@@ -4,7 +4,8 @@
 // uniaxial stress state with Dirichlet data on one tag and a traction on
 // another is reproduced exactly; a tag missing from the file is an
 // InputError naming the boundary id; a circular boundary stays on its
-// circle under refinement
+// circle under refinement; a hidden crack (coincident nodes) is refused, and
+// merged on request it gives the conforming mesh's answer
 #include <deal.II/base/function_parser.h>
 
 #include <deal.II/numerics/vector_tools.h>
@@ -33,12 +34,16 @@ namespace
   /**
    * A legacy ASCII (2.2) Gmsh file of nx x ny quadrilaterals whose interior
    * nodes are moved off the grid (by up to 0.2 h, deterministically) so the
-   * cells are general quadrilaterals; the sides stay straight.
+   * cells are general quadrilaterals; the sides stay straight. With
+   * @p crack_column in (0, nx), the cells right of the node column
+   * crack_column use copies of its nodes: a hidden crack, the same points
+   * twice.
    */
   void
   write_msh(const std::string &filename,
             const unsigned int nx,
-            const unsigned int ny)
+            const unsigned int ny,
+            const unsigned int crack_column = 0)
   {
     std::ofstream out(filename);
     out << std::setprecision(17);
@@ -47,20 +52,37 @@ namespace
         << "1 11 \"bottom\"\n1 12 \"right\"\n1 13 \"top\"\n1 14 \"left\"\n"
         << "2 1 \"body\"\n$EndPhysicalNames\n";
 
-    const auto node = [&](const unsigned int i, const unsigned int j)
-    { return 1 + i + j * (nx + 1); };
-    out << "$Nodes\n" << (nx + 1) * (ny + 1) << "\n";
+    const bool         crack   = crack_column > 0 && crack_column < nx;
+    const unsigned int n_nodes = (nx + 1) * (ny + 1);
+    // Node (i, j) as used by the cells of column @p cell_i.
+    const auto node = [&](const unsigned int i,
+                          const unsigned int j,
+                          const unsigned int cell_i = 0)
+    {
+      if (crack && i == crack_column && cell_i >= crack_column)
+        return n_nodes + 1 + j;
+      return 1 + i + j * (nx + 1);
+    };
+    const auto position = [&](const unsigned int i, const unsigned int j)
+    {
+      double x = L * i / nx, y = H * j / ny;
+      if (i > 0 && i < nx && j > 0 && j < ny)
+      {
+        x += 0.2 * (L / nx) * std::sin(1.7 * i + 2.3 * j);
+        y += 0.2 * (H / ny) * std::cos(0.9 * i + 3.1 * j);
+      }
+      return Point<2>(x, y);
+    };
+    out << "$Nodes\n" << n_nodes + (crack ? ny + 1 : 0) << "\n";
     for (unsigned int j = 0; j <= ny; ++j)
       for (unsigned int i = 0; i <= nx; ++i)
-      {
-        double x = L * i / nx, y = H * j / ny;
-        if (i > 0 && i < nx && j > 0 && j < ny)
-        {
-          x += 0.2 * (L / nx) * std::sin(1.7 * i + 2.3 * j);
-          y += 0.2 * (H / ny) * std::cos(0.9 * i + 3.1 * j);
-        }
-        out << node(i, j) << " " << x << " " << y << " 0\n";
-      }
+        out << node(i, j) << " " << position(i, j)[0] << " "
+            << position(i, j)[1] << " 0\n";
+    if (crack)
+      for (unsigned int j = 0; j <= ny; ++j)
+        out << node(crack_column, j, crack_column) << " "
+            << position(crack_column, j)[0] << " "
+            << position(crack_column, j)[1] << " 0\n";
     out << "$EndNodes\n";
 
     // Elements: "id type n_tags physical elementary nodes..."; type 1 is a
@@ -74,18 +96,18 @@ namespace
                << " " << b << "\n";
     };
     for (unsigned int i = 0; i < nx; ++i)
-      line(11, node(i, 0), node(i + 1, 0));
+      line(11, node(i, 0, i), node(i + 1, 0, i));
     for (unsigned int j = 0; j < ny; ++j)
       line(12, node(nx, j), node(nx, j + 1));
     for (unsigned int i = nx; i > 0; --i)
-      line(13, node(i, ny), node(i - 1, ny));
+      line(13, node(i, ny, i - 1), node(i - 1, ny, i - 1));
     for (unsigned int j = ny; j > 0; --j)
       line(14, node(0, j), node(0, j - 1));
     for (unsigned int j = 0; j < ny; ++j)
       for (unsigned int i = 0; i < nx; ++i)
-        elements << ++n_elements << " 3 2 1 1 " << node(i, j) << " "
-                 << node(i + 1, j) << " " << node(i + 1, j + 1) << " "
-                 << node(i, j + 1) << "\n";
+        elements << ++n_elements << " 3 2 1 1 " << node(i, j, i) << " "
+                 << node(i + 1, j, i) << " " << node(i + 1, j + 1, i) << " "
+                 << node(i, j + 1, i) << "\n";
     out << "$Elements\n"
         << n_elements << "\n"
         << elements.str() << "$EndElements\n";
@@ -298,6 +320,69 @@ namespace
     check(
       "half cylinder refined twice: top vertices off the line", off_top, 1e-12);
   }
+
+  /**
+   * A hidden crack: gmsh_mesh_crack.msh is the 6 x 3 mesh of @p conforming
+   * with the node column x = L/2 given twice, once for the cells on each
+   * side. Read as it is, it is refused, naming the 4 coincident vertices;
+   * with Mesh/Merge coincident vertices they are merged, and the body is
+   * the conforming one: as many vertices, and the same displacement of a
+   * cantilever under a top load (not linear, so every cell counts) to
+   * round-off.
+   */
+  void
+  check_merged_crack(const std::string &conforming)
+  {
+    const std::string cracked = "gmsh_mesh_crack.msh";
+    write_msh(cracked, 6, 3, 3);
+
+    BodyParameters p =
+      body_parameters("gmsh_mesh_crack", cracked, "quadrilateral");
+    p.dirichlet               = "14: xy: 0; 0";
+    p.neumann                 = "13: 0; -1";
+    const std::string message = error_message<InputError>(
+      [&]
+      {
+        ElasticBody<2> body(p, Constants());
+        body.make_mesh(".");
+      });
+    std::cout << "hidden crack: " << message << std::endl;
+    check(
+      message_names(message, {"has 4 vertices that coincide with another one"}),
+      "hidden crack refused, naming the 4 coincident vertices");
+
+    const Point<2> x(0.7 * L, 0.4 * H);
+    const auto     solve = [&](const BodyParameters &q, unsigned int &n_merged)
+    {
+      ElasticBody<2> body(q, Constants());
+      body.make_mesh(".");
+      n_merged = body.get_mesh().n_merged_vertices();
+      body.setup_and_factorize();
+      body.solve();
+      Vector<double> u(2);
+      VectorTools::point_value(
+        body.get_mapping(), body.get_dof_handler(), body.get_solution(), x, u);
+      return std::make_pair(body.get_triangulation().n_vertices(), u);
+    };
+    p.merge_coincident_vertices = true;
+    unsigned int n_merged = 0, n_none = 0;
+    const auto [n_vertices, u]            = solve(p, n_merged);
+    BodyParameters reference              = p;
+    reference.mesh_file                   = conforming;
+    const auto [n_reference, u_reference] = solve(reference, n_none);
+    std::cout << "hidden crack merged: " << n_merged << " vertices merged, "
+              << n_vertices << " vertices (conforming: " << n_reference
+              << "), u(" << x << ") = " << u << " (conforming: " << u_reference
+              << ")" << std::endl;
+    check(n_merged == 4 && n_none == 0 && n_vertices == n_reference,
+          "merged crack: 4 vertices merged, as many vertices as the "
+          "conforming mesh");
+    Vector<double> difference = u;
+    difference -= u_reference;
+    check("merged crack: displacement against the conforming mesh",
+          difference.linfty_norm() / u_reference.linfty_norm(),
+          1e-10);
+  }
 } // namespace
 
 int
@@ -331,6 +416,8 @@ main(int argc, char **argv)
 
     check_uniaxial_tension("gmsh_mesh_tension_quads", msh, "quadrilateral");
     check_uniaxial_tension("gmsh_mesh_tension_triangles", geo, "triangle");
+
+    check_merged_crack(msh);
 
     check_missing_tag(msh,
                       "quadrilateral",

@@ -184,6 +184,15 @@ namespace ddcontact
         "0",
         Patterns::Integer(0, 20),
         "Number of refinements of the cells in Refinement box.");
+      prm.declare_entry(
+        "Merge coincident vertices",
+        "false",
+        Patterns::Bool(),
+        "Type = file: vertices of different cells that lie at the same "
+        "point (closer than 1e-10 times the smallest cell diameter) but "
+        "are separate nodes form a hidden crack. false: such a file is "
+        "refused, naming the count and one location; true: they are "
+        "merged into one vertex each and the count is printed.");
     }
     prm.leave_subsection();
 
@@ -292,11 +301,12 @@ namespace ddcontact
       corner_2  = parse_point(prm.get("Corner 2"), section + "Mesh/Corner 2");
       const auto n = Utilities::string_to_int(
         Utilities::split_string_list(prm.get("Subdivisions")));
-      subdivisions       = {static_cast<unsigned int>(n[0]),
-                            static_cast<unsigned int>(n[1])};
-      mesh_file          = prm.get("File");
-      initial_refinement = prm.get_integer("Initial refinement");
-      box_refinement     = prm.get_integer("Box refinement");
+      subdivisions              = {static_cast<unsigned int>(n[0]),
+                                   static_cast<unsigned int>(n[1])};
+      mesh_file                 = prm.get("File");
+      initial_refinement        = prm.get_integer("Initial refinement");
+      box_refinement            = prm.get_integer("Box refinement");
+      merge_coincident_vertices = prm.get_bool("Merge coincident vertices");
       // The cells these entries would make are checked against the
       // machine's memory when the mesh is built (ElasticBody::make_mesh).
       const std::string box = Utilities::trim(prm.get("Refinement box"));

@@ -57,8 +57,12 @@ namespace ddcontact
      * 1 right, 2 bottom, 3 top, or the Gmsh file (a .geo is meshed into
      * @p work_directory); then the initial and the box refinement. Each
      * step is refused, naming its entry, if the mesh would not fit into
-     * the available memory, before its cells are made. Finally every
-     * boundary id named in @p conditions must exist in the mesh.
+     * the available memory, before its cells are made. A Gmsh mesh is
+     * validated as read: no cell of zero or negative area, no coincident
+     * but separate vertices (merged if Mesh/Merge coincident vertices),
+     * and, when it has several separate pieces, every piece held in x
+     * and y by a Dirichlet condition. Finally every boundary id named in
+     * @p conditions must exist in the mesh.
      */
     void
     make(const BoundaryConditions<dim> &conditions,
@@ -152,6 +156,14 @@ namespace ddcontact
       return circles.describe();
     }
 
+    /** How many coincident vertices of the file were merged into others
+     * (Mesh/Merge coincident vertices); 0 if none or not a file. */
+    unsigned int
+    n_merged_vertices() const
+    {
+      return n_merged;
+    }
+
   private:
     void
     make_rectangle();
@@ -173,6 +185,30 @@ namespace ddcontact
     void
     check_boundary_ids(const BoundaryConditions<dim> &conditions) const;
 
+    /** Refuse a coarse cell whose Jacobian is zero or negative at a
+     * corner (a degenerate, folded or inverted cell), naming the file and
+     * the corner, before it is blamed on the material. */
+    void
+    check_cell_areas() const;
+
+    /** Vertices of different coarse cells closer than 1e-10 times the
+     * smallest cell diameter: merged (Mesh/Merge coincident vertices),
+     * or refused naming their count and one location. */
+    void
+    merge_coincident_vertices();
+
+    /**
+     * The connected pieces of the coarse mesh, cells joined through a
+     * shared face (cells meeting at a vertex only are separate pieces:
+     * a vertex holds a translation but no rotation). A mesh of one piece
+     * is left to RigidBodyModes. Of several, each must be held by
+     * Dirichlet conditions in x and y: a piece with no condition at all is
+     * held by nothing, and a piece held only by contact (or in one
+     * component) floats, while the rigid modes are those of one body.
+     */
+    void
+    check_pieces(const BoundaryConditions<dim> &conditions) const;
+
     /** Subdomain ids of the cells: the group's ranks, the cells split in
      * z-order (quadrilaterals) or in the order of the active cells
      * (triangles). */
@@ -185,8 +221,12 @@ namespace ddcontact
     const bool                          distributed;
     std::unique_ptr<Triangulation<dim>> tria;
     std::unique_ptr<const Mapping<dim>> cell_mapping;
-    std::vector<unsigned int>           group{0};
-    MPI_Comm                            group_comm = MPI_COMM_NULL;
+    // The file named in messages: the .geo the user gave, not the .msh
+    // gmsh made of it.
+    std::string               file_name;
+    unsigned int              n_merged = 0;
+    std::vector<unsigned int> group{0};
+    MPI_Comm                  group_comm = MPI_COMM_NULL;
   };
 } // namespace ddcontact
 

@@ -70,6 +70,9 @@ namespace ddcontact
     unsigned int              initial_refinement = 0;
     std::vector<double>       refinement_box; // x0, y0, x1, y1, or empty
     unsigned int              box_refinement = 0;
+    // Vertices of a Gmsh file that coincide but are separate nodes (a
+    // hidden crack): merged when true, refused otherwise.
+    bool merge_coincident_vertices = false;
 
     // Element
     CellType     cell_type = CellType::quadrilateral;
