@@ -11,6 +11,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ddcontact/body/body_linear_solver.h>
+#include <ddcontact/interruption.h>
 
 #include <type_traits>
 
@@ -229,6 +230,42 @@ namespace ddcontact
       {
       }
 
+      /** A factorization failed with @p error: out of memory (a
+       * std::bad_alloc, or UMFPACK's status -1) is named as such (exit 8),
+       * never as a singular matrix; anything else is a singular matrix. */
+      [[noreturn]] void
+      throw_factorization_error(const std::exception_ptr &error) const
+      {
+        bool out_of_memory = false;
+        try
+        {
+          std::rethrow_exception(error);
+        }
+        catch (const std::bad_alloc &)
+        {
+          out_of_memory = true;
+        }
+        catch (const std::exception &e)
+        {
+          out_of_memory =
+            std::string(e.what()).find("error status -1") != std::string::npos;
+        }
+        if (out_of_memory)
+          throw OutOfMemoryError(
+            parameters.section() +
+            ": out of memory while factorizing the stiffness matrix of " +
+            std::to_string(system.load.size()) +
+            " unknowns; refine less (Mesh/Initial refinement, Adaptation/Max "
+            "cells), use Solver/Type = cg-amg, or run on more processes");
+        // UMFPACK reports a singular or overflowing matrix by an exception
+        // with a stack trace; the user needs the body.
+        throw InputError(parameters.section() +
+                         ": the stiffness matrix cannot be factorized "
+                         "(singular, or its entries overflow); check "
+                         "Material/Young's modulus and the Dirichlet "
+                         "conditions");
+      }
+
       const BodyParameters &parameters;
       System                system;
     };
@@ -249,13 +286,7 @@ namespace ddcontact
         }
         catch (const std::exception &)
         {
-          // UMFPACK reports a singular or overflowing matrix by an
-          // exception with a stack trace; the user needs the body.
-          throw InputError(this->parameters.section() +
-                           ": the stiffness matrix cannot be factorized "
-                           "(singular, or its entries overflow); check "
-                           "Material/Young's modulus and the Dirichlet "
-                           "conditions");
+          this->throw_factorization_error(std::current_exception());
         }
       }
 
@@ -294,7 +325,14 @@ namespace ddcontact
           control,
           TrilinosWrappers::SolverDirect::AdditionalData(false,
                                                          "Amesos_Mumps"));
-        direct->initialize(this->system.matrix);
+        try
+        {
+          direct->initialize(this->system.matrix);
+        }
+        catch (const std::bad_alloc &)
+        {
+          this->throw_factorization_error(std::current_exception());
+        }
       }
 
       void
