@@ -291,6 +291,8 @@ namespace ddcontact
   Simulation::refine_and_transfer()
   {
     TimerOutput::Scope t(timer, "adaptation: refine and transfer");
+    step = "adaptation step " + std::to_string(n_adaptation_steps + 1) +
+           " (refinement and transfer)";
     // The adapted bodies' meshes are independent: refine them at once
     // (one after the other on partitioned meshes, whose refinement is
     // collective).
@@ -299,6 +301,8 @@ namespace ddcontact
                                         [](AdaptiveRefinement &a)
                                         { a.refine(); });
     ++n_adaptation_steps;
+    step =
+      "the solve after adaptation step " + std::to_string(n_adaptation_steps);
     // Refinement changed the bodies' sizes: balance them again.
     if (distribution->distribute())
       pcout << "  bodies now solved on processes " << distribution->describe()
@@ -316,6 +320,8 @@ namespace ddcontact
   {
     interruption::check("adaptation cycle " +
                         std::to_string(n_adaptation_steps));
+    step = "adaptation step " + std::to_string(n_adaptation_steps + 1) +
+           " (estimate and marking)";
     unsigned int marked = estimate_and_mark();
     // Adaptation/Target error: the estimate of the relative energy-norm
     // error decides, whatever the marking rule flagged.
@@ -577,6 +583,26 @@ namespace ddcontact
   void
   Simulation::run()
   {
+    try
+    {
+      run_steps();
+    }
+    catch (const OutOfMemoryError &)
+    {
+      throw;
+    }
+    catch (const std::bad_alloc &)
+    {
+      throw OutOfMemoryError("out of memory in " + step +
+                             "; refine less (Mesh/Initial refinement, "
+                             "Adaptation/Max cells or Max level) or run on "
+                             "more processes");
+    }
+  }
+
+  void
+  Simulation::run_steps()
+  {
     wall_clock.restart();
     std::filesystem::create_directories(parameters.output_directory);
     pcout << version_banner() << std::endl
@@ -593,10 +619,14 @@ namespace ddcontact
     if (parameters.adaptation.enabled())
       setup_adaptation();
     if (!parameters.contact_pairs.empty())
+    {
+      step = "the contact setup";
       setup_contact();
+    }
 
     try
     {
+      step                 = "the first solve";
       n_contact_iterations = solve();
     }
     catch (const DivergenceError &error)

@@ -183,13 +183,23 @@ file_case_ ".geo without any surface" "lines_only.geo' gives no 2D cells: it nee
 # before any of it is read.
 truncate -s 400M "$work/huge.msh"
 printf '#!/usr/bin/env bash\nulimit -v 2000000\nexec "%s" "$@"\n' "$exe" >"$work/limited.sh"
-chmod +x "$work/limited.sh"
+printf '#!/usr/bin/env bash\nulimit -v 1000000\nexec "%s" "$@"\n' "$exe" >"$work/limited_1g.sh"
+chmod +x "$work/limited.sh" "$work/limited_1g.sh"
 exe_unlimited="$exe"; exe="$work/limited.sh"
 expect_code=1 file_case_ "a mesh file too large for the memory" "Body lower/Mesh/File: reading '$work/huge.msh' (419 MB) needs about 7 times its size" "$work/huge.msh"
 # A small file that declares 2e8 nodes: GridIn's vector of them does not
 # fit. Out of memory (exit 8) naming the file, not "cannot read".
 printf '$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n200000000\n1 0 0 0\n$EndNodes\n' >"$work/many_nodes.msh"
 expect_code=8 file_case_ "out of memory while reading a mesh file" "Body lower/Mesh/File: out of memory while reading '$work/many_nodes.msh'" "$work/many_nodes.msh"
+# Uniform refinement of the paper's scene under 1 GB: the fourth mesh
+# (1.3e5 unknowns in omega1) does not fit. Either the estimate before the
+# refinement refuses it or the factorization runs out: exit 8 and "out of
+# memory" either way, never a singular matrix.
+exe="$work/limited_1g.sh"
+expect_code=8 case_ "out of memory in uniform refinement" "out of memory" "$paper" \
+  --set "Adaptation/Mode=uniform" --set "Adaptation/Max cells=100000000" \
+  --set "Adaptation/Max level=20" --set "Adaptation/Bodies=omega1,omega2" \
+  --set "Domain decomposition/Solver=dd-newton"
 exe="$exe_unlimited"; rm -f "$work/huge.msh"
 
 case_ "Body owners with a negative rank" "a process number cannot be negative" "$paper" --set "Parallel/Body owners=omega1: -1, omega2: 0"

@@ -88,6 +88,10 @@ namespace ddcontact
     }
 
   private:
+    /** run() without its translation of std::bad_alloc. */
+    void
+    run_steps();
+
     /** What the run has computed so far, for the report. */
     RunReport::Results
     results() const;
@@ -202,7 +206,9 @@ namespace ddcontact
     unsigned int                                     n_adaptation_steps = 0;
     /** What stopped the refinement while the estimate was still above
      * Adaptation/Target error ("" while it goes on). */
-    std::string  adaptation_stop;
+    std::string adaptation_stop;
+    // The step the run is in, for an out-of-memory message.
+    std::string  step           = "the setup of the bodies";
     unsigned int n_output_steps = 0;
   };
 } // namespace ddcontact

@@ -495,6 +495,7 @@ namespace ddcontact
   ElasticBody<dim>::refine_and_transfer()
   {
     get_triangulation().prepare_coarsening_and_refinement();
+    mesh.check_refinement_size("the refinement");
     if (mesh.is_distributed())
     {
       // p4est refines the owned cells, repartitions, and moves the

@@ -156,6 +156,12 @@ namespace ddcontact
       return circles.describe();
     }
 
+    /** Before refining the flagged cells: refuse, naming @p step (e.g.
+     * "adaptation step 3"), a refinement whose unknowns would not fit into
+     * the memory available (the estimate of the mesh's making). */
+    void
+    check_refinement_size(const std::string &step) const;
+
     /** How many coincident vertices of the file were merged into others
      * (Mesh/Merge coincident vertices); 0 if none or not a file. */
     unsigned int
@@ -176,11 +182,15 @@ namespace ddcontact
     void
     refine_box();
 
-    /** Refuse, naming @p entry of the body's section, a mesh of
+    /** Refuse, naming @p entry (its whole path), a mesh of
      * @p n_cells cells whose unknowns would not fit into the memory this
-     * machine has available. */
+     * machine has available: an InputError, or for the refinement of a
+     * mesh of @p n_cells_now > 0 cells (which needs only the growth) an
+     * OutOfMemoryError. */
     void
-    check_size(double n_cells, const std::string &entry) const;
+    check_size(double             n_cells,
+               const std::string &entry,
+               double             n_cells_now = 0) const;
 
     void
     check_boundary_ids(const BoundaryConditions<dim> &conditions) const;
