@@ -3,7 +3,6 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <ddcontact/adaptivity/fem_bem_estimator.h>
-#include <ddcontact/parameter_tools.h>
 
 #include <cmath>
 
@@ -44,21 +43,16 @@ namespace ddcontact
     time.bem_solve += timer.wall_time();
 
     timer.restart();
-    // On one process the BEM stress is interpolated from the support
-    // points inside the body (a fraction of the quadrature points). Under
-    // mpirun every process holds the body and its boundary solution: the
-    // evaluation at the quadrature points, the estimator's main cost, is
-    // split between them.
+    // The BEM stress is interpolated from the support points inside the
+    // body (a fraction of the quadrature points). Under mpirun every
+    // process holds the body and its boundary solution and takes a share
+    // of the points, with the same result on any number of processes; a
+    // distributed mesh (p4est) interpolates its own cells.
     const auto sigma_B =
-      (!body.is_mesh_distributed() && parsing::n_world_processes() == 1)
-        ? bem.interpolated_stress_at_quadrature_points(
-            body.get_dof_handler(),
-            body.get_mapping(),
-            body.get_cell_quadrature())
-        : bem.stress_at_quadrature_points(body.get_dof_handler(),
-                                          body.get_mapping(),
-                                          body.get_cell_quadrature(),
-                                          MPI_COMM_WORLD);
+      bem.interpolated_stress_at_quadrature_points(body.get_dof_handler(),
+                                                   body.get_mapping(),
+                                                   body.get_cell_quadrature(),
+                                                   MPI_COMM_WORLD);
     time.bem_interior += timer.wall_time();
 
     // (24), (27): cell norms of sigma_B - sigma_F and the global norm of

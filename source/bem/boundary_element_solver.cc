@@ -340,6 +340,20 @@ namespace ddcontact
   BoundaryElementSolver::stress_at_points(
     const std::vector<Point<2>> &points) const
   {
+    return evaluate_stress(
+      points, use_far_field_interpolation && points.size() > far_field_points);
+  }
+
+  bool
+  BoundaryElementSolver::hierarchical(const std::size_t n_points) const
+  {
+    return use_far_field_interpolation && n_points > far_field_points;
+  }
+
+  std::vector<SymmetricTensor<2, 2>>
+  BoundaryElementSolver::evaluate_stress(const std::vector<Point<2>> &points,
+                                         const bool hierarchical) const
+  {
     Assert(is_solved, ExcMessage("Call solve() first."));
     Timer timer;
 
@@ -349,7 +363,7 @@ namespace ddcontact
     for (std::size_t p = 0; p < points.size(); ++p)
       scaled[p] = mesh.scaled(points[p]);
 
-    if (use_far_field_interpolation && points.size() > 1000)
+    if (hierarchical)
     {
       // Hierarchical evaluation (cost about linear in the points instead
       // of points x elements).
@@ -374,6 +388,45 @@ namespace ddcontact
     std::lock_guard<std::mutex> lock(*timing_mutex);
     timing_data.interior += timer.wall_time();
     interior_points = points.size();
+    return stress;
+  }
+
+  std::vector<SymmetricTensor<2, 2>>
+  BoundaryElementSolver::stress_at_points(const std::vector<Point<2>> &points,
+                                          const MPI_Comm communicator,
+                                          const bool     hierarchical) const
+  {
+    // (Programs that never initialized MPI, e.g. the BEM tests, are one
+    // process.)
+    const unsigned int n_procs =
+      Utilities::MPI::job_supports_mpi()
+        ? Utilities::MPI::n_mpi_processes(communicator)
+        : 1;
+    if (n_procs == 1 || hierarchical)
+      return evaluate_stress(points, hierarchical);
+
+    // This process's share [first, last); the others stay zero, and the
+    // sum over the processes fills them all with the very same numbers.
+    const unsigned int rank  = Utilities::MPI::this_mpi_process(communicator);
+    const std::size_t  first = points.size() * rank / n_procs;
+    const std::size_t  last  = points.size() * (rank + 1) / n_procs;
+    const auto         share = evaluate_stress(
+      std::vector<Point<2>>(points.begin() + first, points.begin() + last),
+      false);
+    std::vector<double> values(points.size() * 3, 0.);
+    for (std::size_t p = 0; p < share.size(); ++p)
+      for (unsigned int k = 0; k < 3; ++k)
+        values[(first + p) * 3 + k] = share[p][k == 2 ? 0 : k][k == 2 ? 1 : k];
+    std::vector<double> all(values.size());
+    Utilities::MPI::sum(
+      ArrayView<const double>(values), communicator, ArrayView<double>(all));
+    std::vector<SymmetricTensor<2, 2>> stress(points.size());
+    for (std::size_t p = 0; p < points.size(); ++p)
+    {
+      stress[p][0][0] = all[p * 3];
+      stress[p][1][1] = all[p * 3 + 1];
+      stress[p][0][1] = all[p * 3 + 2];
+    }
     return stress;
   }
 
@@ -421,7 +474,13 @@ namespace ddcontact
           const auto &q_points = fe_values.get_quadrature_points();
           points.insert(points.end(), q_points.begin(), q_points.end());
         }
-      const auto stress = stress_at_points(points);
+      // The choice of the evaluation follows the whole mesh, as on one
+      // process.
+      const auto stress = evaluate_stress(
+        points,
+        hierarchical(
+          std::size_t(dof_handler.get_triangulation().n_global_active_cells()) *
+          quadrature.size()));
       std::vector<std::vector<SymmetricTensor<2, 2>>> result(n_cells);
       std::size_t                                     p = 0;
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -431,57 +490,28 @@ namespace ddcontact
       return result;
     }
 
-    // This process's share: cells [first, last) in active cell order.
-    // (Programs that never initialized MPI, e.g. the BEM tests, are one
-    // process.)
-    const bool         mpi = Utilities::MPI::job_supports_mpi();
-    const unsigned int n_procs =
-      mpi ? Utilities::MPI::n_mpi_processes(communicator) : 1;
-    const unsigned int rank =
-      mpi ? Utilities::MPI::this_mpi_process(communicator) : 0;
-    const unsigned int first = std::uint64_t(n_cells) * rank / n_procs;
-    const unsigned int last  = std::uint64_t(n_cells) * (rank + 1) / n_procs;
-
+    // Every cell's points, shared between the processes by
+    // stress_at_points(), which gives the same numbers on any number.
     FEValues<2> fe_values(
       mapping, dof_handler.get_fe(), quadrature, update_quadrature_points);
     std::vector<Point<2>> points;
-    points.reserve((last - first) * quadrature.size());
+    points.reserve(std::size_t(n_cells) * quadrature.size());
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->active_cell_index() >= first &&
-          cell->active_cell_index() < last)
-      {
-        fe_values.reinit(cell);
-        const auto &q_points = fe_values.get_quadrature_points();
-        points.insert(points.end(), q_points.begin(), q_points.end());
-      }
-
-    const auto stress = stress_at_points(points);
-
-    // The three components of every point of every cell, zero outside
-    // this process's share; the sum over the processes fills them all.
-    const unsigned int  n_q = quadrature.size();
-    std::vector<double> values(std::size_t(n_cells) * n_q * 3, 0.);
-    for (std::size_t p = 0; p < stress.size(); ++p)
-      for (unsigned int k = 0; k < 3; ++k)
-        values[(std::size_t(first) * n_q + p) * 3 + k] =
-          stress[p][k == 2 ? 0 : k][k == 2 ? 1 : k];
-    if (n_procs > 1)
     {
-      std::vector<double> own = values;
-      Utilities::MPI::sum(
-        ArrayView<const double>(own), communicator, ArrayView<double>(values));
+      fe_values.reinit(cell);
+      const auto &q_points = fe_values.get_quadrature_points();
+      points.insert(points.end(), q_points.begin(), q_points.end());
     }
+    const auto stress =
+      stress_at_points(points,
+                       communicator,
+                       hierarchical(std::size_t(n_cells) * quadrature.size()));
 
-    std::vector<std::vector<SymmetricTensor<2, 2>>> result(
-      n_cells, std::vector<SymmetricTensor<2, 2>>(n_q));
-    for (unsigned int c = 0; c < n_cells; ++c)
-      for (unsigned int q = 0; q < n_q; ++q)
-      {
-        const double *v    = &values[(std::size_t(c) * n_q + q) * 3];
-        result[c][q][0][0] = v[0];
-        result[c][q][1][1] = v[1];
-        result[c][q][0][1] = v[2];
-      }
+    std::vector<std::vector<SymmetricTensor<2, 2>>> result(n_cells);
+    std::size_t                                     p = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        result[cell->active_cell_index()].push_back(stress[p++]);
     return result;
   }
 

@@ -1,3 +1,5 @@
+#include <deal.II/distributed/tria_base.h>
+
 #include <deal.II/dofs/dof_handler.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -10,7 +12,8 @@ namespace ddcontact
   BoundaryElementSolver::interpolated_stress_at_quadrature_points(
     const DoFHandler<2> &dof_handler,
     const Mapping<2>    &mapping,
-    const Quadrature<2> &quadrature) const
+    const Quadrature<2> &quadrature,
+    const MPI_Comm       communicator) const
   {
     const auto             &tria = dof_handler.get_triangulation();
     const FiniteElement<2> &fe   = dof_handler.get_fe().base_element(0);
@@ -18,14 +21,21 @@ namespace ddcontact
            ExcInternalError());
     DoFHandler<2> scalar(tria);
     scalar.distribute_dofs(fe);
+    // On a distributed mesh (p4est) this process interpolates its own
+    // cells; the other cells' entries stay empty (no process needs them).
+    const bool distributed =
+      dynamic_cast<const parallel::DistributedTriangulationBase<2> *>(&tria);
+    const auto skipped = [&](const auto &cell)
+    { return distributed && !cell->is_locally_owned(); };
 
     // Cells with a vertex on the boundary keep their quadrature points.
     std::vector<bool> boundary_vertex(tria.n_vertices(), false);
     for (const auto &cell : tria.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary())
-          for (const unsigned int v : face->vertex_indices())
-            boundary_vertex[face->vertex_index(v)] = true;
+      if (!cell->is_artificial())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            for (const unsigned int v : face->vertex_indices())
+              boundary_vertex[face->vertex_index(v)] = true;
     const auto touches_boundary = [&](const auto &cell)
     {
       for (const unsigned int v : cell->vertex_indices())
@@ -45,7 +55,9 @@ namespace ddcontact
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     FEValues<2> values(mapping, fe, quadrature, update_quadrature_points);
     for (const auto &cell : scalar.active_cell_iterators())
-      if (touches_boundary(cell))
+      if (skipped(cell))
+        continue;
+      else if (touches_boundary(cell))
       {
         values.reinit(cell);
         first_point[cell->active_cell_index()] = points.size();
@@ -64,13 +76,22 @@ namespace ddcontact
           }
       }
 
-    const auto stress = stress_at_points(points);
+    // The choice of the evaluation follows the whole mesh: the same on any
+    // number of processes. A distributed mesh evaluates its own points.
+    const bool hierarchical_evaluation =
+      hierarchical(std::size_t(tria.n_global_active_cells()) * n_q);
+    const auto stress =
+      distributed
+        ? evaluate_stress(points, hierarchical_evaluation)
+        : stress_at_points(points, communicator, hierarchical_evaluation);
 
     std::vector<std::vector<SymmetricTensor<2, 2>>> result(
       tria.n_active_cells(), std::vector<SymmetricTensor<2, 2>>(n_q));
     FEValues<2> shapes(mapping, fe, quadrature, update_values);
     for (const auto &cell : scalar.active_cell_iterators())
     {
+      if (skipped(cell))
+        continue;
       auto &cell_result = result[cell->active_cell_index()];
       if (const unsigned int first = first_point[cell->active_cell_index()];
           first != numbers::invalid_unsigned_int)

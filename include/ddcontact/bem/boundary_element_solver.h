@@ -85,6 +85,25 @@ namespace ddcontact
     std::vector<SymmetricTensor<2, 2>>
     stress_at_points(const std::vector<Point<2>> &points) const;
 
+    /**
+     * The same on every process of @p communicator (each holding the same
+     * body and boundary solution), with the work shared and the result
+     * independent of the number of processes: where every point is
+     * integrated on its own, each process takes a contiguous share and the
+     * shares are summed exactly (zeros elsewhere); the @p hierarchical
+     * evaluation (see hierarchical()), whose boxes depend on the whole
+     * set, runs whole on every process (its cost is about linear).
+     */
+    std::vector<SymmetricTensor<2, 2>>
+    stress_at_points(const std::vector<Point<2>> &points,
+                     const MPI_Comm               communicator,
+                     bool                         hierarchical) const;
+
+    /** Whether an evaluation at @p n_points points (of the whole mesh, on
+     * any number of processes) uses the hierarchical evaluation. */
+    bool
+    hierarchical(std::size_t n_points) const;
+
     /** sigma_B at the quadrature points of every active cell, indexed
      * [active_cell_index][q], ready for the estimator (27). With a
      * communicator of several processes (each holding the same body and
@@ -108,14 +127,17 @@ namespace ddcontact
      * where the identity is singular at the support points and is
      * evaluated at the quadrature points themselves. The interpolation
      * error is O(h^(p+1)), an order above the FEM stress error O(h^p) that
-     * the estimator measures. One process, serial mesh only (the others
-     * use stress_at_quadrature_points()).
+     * the estimator measures. A mesh that every process of
+     * @p communicator holds whole (not distributed); the points are shared
+     * as stress_at_points() shares them, and the result does not depend on
+     * the number of processes.
      */
     std::vector<std::vector<SymmetricTensor<2, 2>>>
     interpolated_stress_at_quadrature_points(
       const DoFHandler<2> &dof_handler,
       const Mapping<2>    &mapping,
-      const Quadrature<2> &quadrature) const;
+      const Quadrature<2> &quadrature,
+      const MPI_Comm       communicator = MPI_COMM_SELF) const;
 
     /** Number of points at which the last interior evaluation computed
      * the Somigliana identity. */
@@ -264,6 +286,12 @@ namespace ddcontact
     /** @} */
 
   private:
+    /** The stresses at @p points, by the hierarchical evaluation or point
+     * by point. */
+    std::vector<SymmetricTensor<2, 2>>
+    evaluate_stress(const std::vector<Point<2>> &points,
+                    bool                         hierarchical) const;
+
     void
     assemble_system(FullMatrix<double> &system_matrix);
 
@@ -301,6 +329,8 @@ namespace ddcontact
     FullMatrix<double> contact_matrix;
     bool               is_solved                   = false;
     bool               use_far_field_interpolation = true;
+    // Above this many points the hierarchical evaluation pays.
+    static constexpr std::size_t far_field_points = 1000;
 
     // Interior evaluations may run concurrently (const); the mutex sits
     // behind a pointer so that the solver stays movable.
