@@ -1,3 +1,4 @@
+#include <ddcontact/adaptivity/contact_zone_grading.h>
 #include <ddcontact/adaptivity/marking.h>
 #include <ddcontact/interruption.h>
 #include <ddcontact/simulation.h>
@@ -284,6 +285,24 @@ namespace ddcontact
             : 0.;
     for (auto &a : adaptations)
       marked += joint ? a->mark_above(threshold) : a->mark();
+
+    // Multipliers on the nodes of S_1 need an S_2 at least as fine
+    // (grade_contact_zone()); the paper's penalty on the points is left as
+    // the paper has it.
+    if (marked > 0 && parameters.dd.multipliers_on_nodes())
+      for (const auto &pair : contact_pairs)
+        for (auto &body : bodies)
+        {
+          const bool adapted = std::any_of(
+            adaptations.begin(),
+            adaptations.end(),
+            [&](const auto &a) { return &a->get_body() == body.get(); });
+          if (body.get() == &pair->get_body_2() && adapted &&
+              !body->is_mesh_distributed())
+            marked += grade_contact_zone(*pair,
+                                         body->get_triangulation(),
+                                         parameters.adaptation.max_level);
+        }
     return marked;
   }
 
