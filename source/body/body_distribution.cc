@@ -1,4 +1,5 @@
 #include <ddcontact/body/body_distribution.h>
+#include <ddcontact/interruption.h>
 #include <ddcontact/tasks.h>
 
 #include <deal.II/base/thread_management.h>
@@ -10,6 +11,12 @@
 
 namespace ddcontact
 {
+  namespace
+  {
+    // Leads the message of an out-of-memory error between processes.
+    const std::string out_of_memory_mark = "\x01";
+  } // namespace
+
   BodyDistribution::BodyDistribution(
     const std::vector<ElasticBody<2> *> &bodies,
     const ParallelParameters            &parameters,
@@ -126,6 +133,18 @@ namespace ddcontact
       {
         work(b);
       }
+      // An allocation that failed stays out of memory (exit 8) on every
+      // process: its message is marked for agree_on_errors().
+      catch (const OutOfMemoryError &e)
+      {
+        errors[b] = out_of_memory_mark + e.what();
+      }
+      catch (const std::bad_alloc &)
+      {
+        errors[b] = out_of_memory_mark + std::string("out of memory in a body "
+                                                     "problem; refine less or "
+                                                     "run on more processes");
+      }
       catch (const std::exception &e)
       {
         errors[b] = e.what();
@@ -149,13 +168,26 @@ namespace ddcontact
     agree_on_errors(first_error);
   }
 
+  namespace
+  {
+    /** InputError, or OutOfMemoryError for a message that carries the
+     * out-of-memory mark. */
+    [[noreturn]] void
+    throw_error(const std::string &message)
+    {
+      if (message.rfind(out_of_memory_mark, 0) == 0)
+        throw OutOfMemoryError(message.substr(out_of_memory_mark.size()));
+      throw InputError(message);
+    }
+  } // namespace
+
   void
   BodyDistribution::agree_on_errors(const std::string &message) const
   {
     if (n_procs == 1)
     {
       if (!message.empty())
-        throw InputError(message);
+        throw_error(message);
       return;
     }
     // Collective: every process calls this once at the same point (after
@@ -166,7 +198,7 @@ namespace ddcontact
       return;
     for (const auto &m : Utilities::MPI::all_gather(communicator, message))
       if (!m.empty())
-        throw InputError(m);
+        throw_error(m);
   }
 
   void

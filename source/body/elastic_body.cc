@@ -290,6 +290,9 @@ namespace ddcontact
       [&](const MeshWorker::CopyData<1, 1, 1> &copy)
       {
         const auto &dofs = copy.local_dof_indices[0];
+        // (mesh_loop hands over an empty copy for another process's cell.)
+        if (dofs.empty())
+          return;
         u_cell.reinit(dofs.size());
         r_cell.reinit(dofs.size());
         for (unsigned int i = 0; i < dofs.size(); ++i)
