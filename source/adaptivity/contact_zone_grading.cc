@@ -2,24 +2,12 @@
 #include <deal.II/grid/grid_tools_cache.h>
 
 #include <ddcontact/adaptivity/contact_zone_grading.h>
+#include <ddcontact/contact/segment_search.h>
 
 #include <limits>
 
 namespace ddcontact
 {
-  namespace
-  {
-    /** The distance from @p x to the segment [a, b]. */
-    double
-    distance_to_segment(const Point<2> &x, const Point<2> &a, const Point<2> &b)
-    {
-      const Tensor<1, 2> d  = b - a;
-      const double       t  = std::clamp(((x - a) * d) / (d * d), 0., 1.);
-      const Point<2>     on = a + t * d;
-      return x.distance(on);
-    }
-  } // namespace
-
   unsigned int
   grade_contact_zone(const ContactPair &pair,
                      Triangulation<2>  &triangulation_2,
@@ -60,8 +48,9 @@ namespace ddcontact
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary())
         {
-          const double d = distance_to_segment(
-            point.projection, face->vertex(0), face->vertex(1));
+          const double d = closest_point_on_segment(
+                             face->vertex(0), face->vertex(1), point.projection)
+                             .distance(point.projection);
           if (d < nearest)
           {
             nearest = d;

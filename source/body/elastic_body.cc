@@ -279,10 +279,12 @@ namespace ddcontact
   template <int dim>
   void
   ElasticBody<dim>::unconstrained_residual(const Vector<double> &u,
-                                           Vector<double>       &r) const
+                                           Vector<double>       &r,
+                                           Vector<double>       &load) const
   {
     AssertDimension(u.size(), dof_handler.n_dofs());
     r.reinit(dof_handler.n_dofs());
+    load.reinit(dof_handler.n_dofs());
     // r_K = A_K u_K - f_K of every cell, added without constraints: the
     // same cell matrices and loads the solver was given.
     Vector<double> u_cell, r_cell;
@@ -300,7 +302,10 @@ namespace ddcontact
         copy.matrices[0].vmult(r_cell, u_cell);
         r_cell -= copy.vectors[0];
         for (unsigned int i = 0; i < dofs.size(); ++i)
+        {
           r(dofs[i]) += r_cell(i);
+          load(dofs[i]) += copy.vectors[0](i);
+        }
       });
   }
 

@@ -5,8 +5,6 @@
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/body/reaction_forces.h>
 
-#include <map>
-
 namespace ddcontact
 {
   namespace
@@ -101,8 +99,8 @@ namespace ddcontact
 
     // The residual of this process's cells, condensed onto the conforming
     // test functions, summed per support over the processes.
-    Vector<double> r;
-    body.unconstrained_residual(u, r);
+    Vector<double> r, load;
+    body.unconstrained_residual(u, r, load);
     body.get_hanging_node_constraints().condense(r);
     const auto cells = sum_by_support(body, support, ids.size(), r, false);
 
@@ -116,13 +114,11 @@ namespace ddcontact
       by_contact = sum_by_support(body, support, ids.size(), c, true);
     }
 
-    // The loads alone: the residual of u = 0 is -l_a(phi_i), which sums to
-    // -l_a(e_k) (the shape functions are a partition of unity); exactly 0
-    // without loads, where a_a(u, e_k) would leave round-off.
-    Vector<double> minus_load;
-    body.unconstrained_residual(Vector<double>(body.n_dofs()), minus_load);
+    // The loads alone: l_a(phi_i) sums to l_a(e_k) (the shape functions
+    // are a partition of unity); exactly 0 without loads, where the sum of
+    // r, -l_a(e_k) + a_a(u, e_k), would leave round-off.
     applied =
-      -sum_by_support(body, support, ids.size(), minus_load, false)[ids.size()];
+      sum_by_support(body, support, ids.size(), load, false)[ids.size()];
     contact = by_contact[ids.size()];
     for (unsigned int k = 0; k < ids.size(); ++k)
     {

@@ -56,12 +56,19 @@ namespace ddcontact
   }
 
   Point<2>
-  SegmentSearch::closest_point_on(const unsigned int i, const Point<2> &x) const
+  closest_point_on_segment(const Point<2> &a,
+                           const Point<2> &b,
+                           const Point<2> &x)
   {
-    const auto &[a, b]   = segments[i];
     const Tensor<1, 2> d = b - a;
     const double       r = std::clamp((x - a) * d / d.norm_square(), 0., 1.);
     return a + r * d;
+  }
+
+  Point<2>
+  SegmentSearch::closest_point_on(const unsigned int i, const Point<2> &x) const
+  {
+    return closest_point_on_segment(segments[i][0], segments[i][1], x);
   }
 
   std::pair<unsigned int, Point<2>>

@@ -278,14 +278,17 @@ namespace ddcontact
     }
 
     /**
-     * r_i = a_a(u, phi_i) - l_a(phi_i) for every dof i, with the cell
-     * matrices and loads of assemble_system() and no constraints applied:
-     * at a Dirichlet dof, the force the support exerts (plus the share of
-     * a hanging node, see get_hanging_node_constraints()). On a mesh
-     * partitioned between processes, the sum of this process's cells only.
+     * r_i = a_a(u, phi_i) - l_a(phi_i) for every dof i, and the load
+     * l_a(phi_i) alone, with the cell matrices and loads of
+     * assemble_system() and no constraints applied: at a Dirichlet dof, r
+     * is the force the support exerts (plus the share of a hanging node,
+     * see get_hanging_node_constraints()). On a mesh partitioned between
+     * processes, the sums of this process's cells only.
      */
     void
-    unconstrained_residual(const Vector<double> &u, Vector<double> &r) const;
+    unconstrained_residual(const Vector<double> &u,
+                           Vector<double>       &r,
+                           Vector<double>       &load) const;
 
     /** The assembled stiffness matrix (on a body solved here by one
      * process). */

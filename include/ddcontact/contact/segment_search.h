@@ -14,6 +14,12 @@ namespace ddcontact
 {
   using namespace dealii;
 
+  /** The closest point of the segment [@p a, @p b] to @p x. */
+  Point<2>
+  closest_point_on_segment(const Point<2> &a,
+                           const Point<2> &b,
+                           const Point<2> &x);
+
   /**
    * The geometric searches of ContactPair::setup() on the faces of a zone
    * S_2, given as straight segments: the closest point P(x) of the zone to
