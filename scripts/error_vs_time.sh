@@ -157,14 +157,14 @@ lv() { LV=(--set "Body omega1/Mesh/Initial refinement=$1" --set "Body omega2/Mes
 dg() { DG=(--set "Body omega1/Element/Degree=$1" --set "Body omega2/Element/Degree=$1"); }
 
 if [ "$quick" = 1 ]; then
-  U_MONO="0"; U_P2="0"; U_DD="0"; U_DD_P2="0"; U_FIXED="0"; U_AUTO="0"; U_AL="0"
+  U_MONO="0"; U_P2="0"; U_DD="0"; U_DD_P2="0"; U_FIXED="0"; U_AUTO="0"; U_AL="0"; U_AL_P2="0"
   KN1="1"; KC1="1"; KN2="1"; KC2="1"; K_CYC_AL="1"; T_ERR1="0.1"; T_ERR2="0.05"
   P_CAP="100"; S_DELTA="0.2"; S_DELTA_FIXED="0.2"
 else
   U_MONO="0 1 2 3 4 5"; U_P2="0 1 2 3 4"; U_DD="0 1 2 3 4 5"; U_DD_P2="0 1 2 3 4 5"
-  U_FIXED="0 1 2 3 4"; U_AUTO="0 1 2 3 4"; U_AL="0 1 2 3 4 5"
+  U_FIXED="0 1 2 3 4"; U_AUTO="0 1 2 3 4"; U_AL="0 1 2 3 4 5"; U_AL_P2="0 1 2 3"
   KN1="2 4 5 6 7 8"; KC1="4 6 8 10 11 12 13"; KN2="2 3 4 5 6 7"; KC2="4 6 8 10 12"
-  K_CYC_AL="2 4 6 8"
+  K_CYC_AL="2 3 4 5 6 7 8"
   T_ERR1="0.04 0.02 0.014 0.01 0.007 0.005"; T_ERR2="0.01 0.005 0.002 0.001 0.0007 0.0005"
   P_CAP="300 1200 5000 20000"; S_DELTA="0.2 0.1 0.07 0.05 0.035"; S_DELTA_FIXED="0.1 0.05"
 fi
@@ -197,8 +197,22 @@ for p in 1 2; do
   cyc=KC$p
   for n in ${!cyc}; do run "kelly-combined-p$p-c$n" kelly-combined-doerfler-P$p penalty $p $p "cycles=$n" "${adapt[@]}" "${kelly_c[@]}" "${DG[@]}" --set "Adaptation/Max cycles=$n"; done
 done
+# Adaptive exact contact starts from the uniform series' coarsest mesh
+# (both bodies at r = 0) and refines by Doerfler marking (0.7 at degree 1,
+# whose solution is smooth enough that uniform refinement keeps its
+# O(h^2) in force and peak pressure, 0.5 at degree 2); S_2 is graded
+# against S_1 (grade_contact_zone()).
+r0=(--set "Body omega1/Mesh/Initial refinement=0" --set "Body omega2/Mesh/Initial refinement=0")
+kelly_al=(--set "Adaptation/Mode=combined" --set "Adaptation/Estimator=kelly" --set "Adaptation/Marking=doerfler")
+fb_al=(--set "Adaptation/Mode=combined" --set "Adaptation/Estimator=fem-bem-scaled" --set "Adaptation/Marking=doerfler" --set "Adaptation/Fraction=0.5")
+dg 2
+for r in $U_AL_P2; do lv $r; run "uni-ddnewton-exact-p2-r$r" uniform-DDnewton-exact-P2 exact 2 2 "r=$r" "${none[@]}" "${LV[@]}" "${DG[@]}" "${AL[@]}"; done
 dg 1
-for n in $K_CYC_AL; do run "kelly-nested-ddnewton-exact-c$n" kelly-nested-DDnewton-exact-P1 exact 1 1 "cycles=$n" "${adapt[@]}" "${kelly_n[@]}" --set "Adaptation/Max cycles=$n" "${AL[@]}"; done
+for n in $K_CYC_AL; do run "kelly-combined-ddnewton-exact-p1-c$n" kelly-combined-DDnewton-exact-P1 exact 1 1 "cycles=$n" "${adapt[@]}" "${r0[@]}" "${kelly_al[@]}" --set "Adaptation/Fraction=0.7" --set "Adaptation/Max cycles=$n" "${AL[@]}"; done
+dg 2
+for n in $K_CYC_AL; do run "kelly-combined-ddnewton-exact-p2-c$n" kelly-combined-DDnewton-exact-P2 exact 2 2 "cycles=$n" "${adapt[@]}" "${r0[@]}" "${kelly_al[@]}" --set "Adaptation/Fraction=0.5" --set "Adaptation/Max cycles=$n" "${DG[@]}" "${AL[@]}"; done
+for n in $K_CYC_AL; do run "fembem-combined-ddnewton-exact-p2-c$n" fembem-scaled-combined-DDnewton-exact-P2 exact 2 2 "cycles=$n" "${adapt[@]}" "${r0[@]}" "${fb_al[@]}" --set "Adaptation/Max cycles=$n" "${DG[@]}" "${AL[@]}"; done
+dg 1
 
 # FEM-BEM (scale-consistent) with Doerfler 50 % and the target-error stop
 # (Adaptation/Target error, on the estimator's global estimate), nested and

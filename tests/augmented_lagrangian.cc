@@ -42,13 +42,14 @@ namespace
       run_scene(scene_file,
                 {"Output directory=augmented_lagrangian_output", al},
                 overrides);
-    const auto   state   = sim->get_dd_solver().contact_state(0);
+    const auto   state   = sim->get_contact_solver().contact_state(0);
     const double p       = state.force_1.norm() / L;
     const double overlap = state.max_penetration;
     std::cout << label << ": p = " << p << ", theta = 0 closed form "
               << Delta / C << ", overlap " << overlap / Delta
-              << " of the approach, " << sim->get_dd_solver().n_uzawa_updates()
-              << " Uzawa updates" << std::endl;
+              << " of the approach, "
+              << sim->get_contact_solver().n_uzawa_updates() << " Uzawa updates"
+              << std::endl;
     if (refinements > 0)
     {
       const auto &omega2 = sim->get_bodies()[1]->get_triangulation();
@@ -56,7 +57,7 @@ namespace
             label + ": Omega_2 was refined " + std::to_string(refinements) +
               " times");
     }
-    check(sim->get_dd_solver().n_uzawa_updates() >= 1,
+    check(sim->get_contact_solver().n_uzawa_updates() >= 1,
           label + ": the Uzawa loop ran");
     check(overlap <= al_tolerance * Delta,
           label + ": overlap within the AL tolerance of the approach");
@@ -124,8 +125,8 @@ main(int argc, char **argv)
     };
     const auto dd       = run("dd");
     const auto newton   = run("monolithic");
-    const auto f_dd     = dd->get_dd_solver().contact_state(0);
-    const auto f_newton = newton->get_dd_solver().contact_state(0);
+    const auto f_dd     = dd->get_contact_solver().contact_state(0);
+    const auto f_newton = newton->get_contact_solver().contact_state(0);
     const auto cells    = [](const Simulation &s)
     { return s.get_bodies()[1]->get_triangulation().n_active_cells(); };
     std::cout << "paper scene, nested: force " << f_dd.force_1.norm()

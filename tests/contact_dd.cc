@@ -35,7 +35,7 @@ main(int argc, char **argv)
   //    round-off.
   {
     const auto   sim      = run(source_dir, {});
-    const auto   state    = sim->get_dd_solver().contact_state(0);
+    const auto   state    = sim->get_contact_solver().contact_state(0);
     const double f        = state.force_1.norm();
     const double mismatch = (state.force_1 + state.force_2).norm() / f;
     std::cout << "force on body 1 = " << state.force_1
@@ -55,8 +55,8 @@ main(int argc, char **argv)
       run(source_dir, {"Domain decomposition/eps_residual=1e-13"});
     const auto newton =
       run(source_dir, {"Domain decomposition/Solver=monolithic"});
-    const auto s_dd = dd->get_dd_solver().contact_state(0);
-    const auto s_nt = newton->get_dd_solver().contact_state(0);
+    const auto s_dd = dd->get_contact_solver().contact_state(0);
+    const auto s_nt = newton->get_contact_solver().contact_state(0);
     double     diff = 0, scale = 0;
     for (unsigned int q = 0; q < s_dd.u_1n.size(); ++q)
     {
@@ -78,8 +78,8 @@ main(int argc, char **argv)
     const auto amg =
       run(source_dir,
           {"Body omega1/Solver/Type=cg-amg", "Body omega2/Solver/Type=cg-amg"});
-    const auto s_d  = direct->get_dd_solver().contact_state(0);
-    const auto s_a  = amg->get_dd_solver().contact_state(0);
+    const auto s_d  = direct->get_contact_solver().contact_state(0);
+    const auto s_a  = amg->get_contact_solver().contact_state(0);
     double     diff = 0, scale = 0;
     for (unsigned int q = 0; q < s_d.u_1n.size(); ++q)
     {
@@ -98,7 +98,7 @@ main(int argc, char **argv)
   {
     const auto sim =
       run(source_dir, {"Body omega1/Element/Cell type=quadrilateral"});
-    const auto  state = sim->get_dd_solver().contact_state(0);
+    const auto  state = sim->get_contact_solver().contact_state(0);
     const auto &pts   = sim->get_contact_pairs()[0]->points();
     double      worst = 0;
     for (unsigned int i = 0; i < pts.size(); ++i)
@@ -130,8 +130,8 @@ main(int argc, char **argv)
     const auto tri = run(source_dir, with({}));
     const auto quad =
       run(source_dir, with({"Body omega1/Element/Cell type=quadrilateral"}));
-    const auto  s_t   = tri->get_dd_solver().contact_state(0);
-    const auto  s_q   = quad->get_dd_solver().contact_state(0);
+    const auto  s_t   = tri->get_contact_solver().contact_state(0);
+    const auto  s_q   = quad->get_contact_solver().contact_state(0);
     const auto &pts   = tri->get_contact_pairs()[0]->points();
     double      diff2 = 0, norm2 = 0;
     for (unsigned int q = 0; q < pts.size(); ++q)
@@ -165,8 +165,8 @@ main(int argc, char **argv)
     const auto expression = run(source_dir, with({"Contact pair S/Gap=s"}));
     const auto geometric =
       run(source_dir, with({"Contact pair S/Gap type=geometric"}));
-    const auto s_e  = expression->get_dd_solver().contact_state(0);
-    const auto s_g  = geometric->get_dd_solver().contact_state(0);
+    const auto s_e  = expression->get_contact_solver().contact_state(0);
+    const auto s_g  = geometric->get_contact_solver().contact_state(0);
     double     diff = 0;
     for (unsigned int q = 0; q < s_e.sigma_n.size(); ++q)
       diff = std::max(diff, std::abs(s_e.sigma_n[q] - s_g.sigma_n[q]));
@@ -182,8 +182,8 @@ main(int argc, char **argv)
   //    first iteration has a zero residual.
   {
     const auto sim   = run(source_dir, {"Constants=r0=1e-3, Delta=0"});
-    const auto state = sim->get_dd_solver().contact_state(0);
-    const auto n     = sim->get_dd_solver().history().size();
+    const auto state = sim->get_contact_solver().contact_state(0);
+    const auto n     = sim->get_contact_solver().history().size();
     std::cout << "no contact: " << n << " iteration(s), peak pressure "
               << state.max_pressure << std::endl;
     check(n == 1 && state.max_pressure == 0.,
@@ -197,8 +197,8 @@ main(int argc, char **argv)
   {
     const auto s1   = run(source_dir, {});
     const auto s2   = run(source_dir, {"Contact pair S/Penalty=0.025"});
-    penetration_c   = s1->get_dd_solver().contact_state(0).max_penetration;
-    const double p2 = s2->get_dd_solver().contact_state(0).max_penetration;
+    penetration_c   = s1->get_contact_solver().contact_state(0).max_penetration;
+    const double p2 = s2->get_contact_solver().contact_state(0).max_penetration;
     std::cout << "penetration c = 0.05: " << penetration_c
               << ", c = 0.025: " << p2 << ", ratio " << penetration_c / p2
               << std::endl;
@@ -214,10 +214,10 @@ main(int argc, char **argv)
     const auto   sim = run(source_dir,
                          {"Contact pair S/Formulation=exact",
                             "Domain decomposition/AL tolerance=1e-3"});
-    const double p   = sim->get_dd_solver().contact_state(0).max_penetration;
+    const double p = sim->get_contact_solver().contact_state(0).max_penetration;
     std::cout << "augmented Lagrangian: penetration " << p << " = "
               << p / 1.366e-3 << " of the approach, after "
-              << sim->get_dd_solver().n_uzawa_updates() << " updates"
+              << sim->get_contact_solver().n_uzawa_updates() << " updates"
               << std::endl;
     check(p < 1e-3 * 1.366e-3 && p < 0.1 * penetration_c,
           "augmented Lagrangian removes the penalty penetration");

@@ -178,7 +178,7 @@ main(int argc, char **argv)
   const auto cut = run_scene(
     cylinders_scene(false), {"Output directory=contact_search_cut"}, {});
   {
-    const auto   state = whole->get_dd_solver().contact_state(0);
+    const auto   state = whole->get_contact_solver().contact_state(0);
     const double P     = 2 * state.force_1[1]; // the whole force
     const double R     = 1. / (1. / 1. + 1. / 2.);
     const double E  = 1. / ((1 - 0.3 * 0.3) / 1000 + (1 - 0.25 * 0.25) / 2000);
@@ -241,7 +241,7 @@ main(int argc, char **argv)
     // The same meshes with the arcs cut at 10 degrees: every point that
     // can touch is a candidate either way, so the answers agree to the
     // solver's tolerance.
-    const auto cut_state = cut->get_dd_solver().contact_state(0);
+    const auto cut_state = cut->get_contact_solver().contact_state(0);
     check("peak with whole arcs = peak with cut arcs",
           relative(state.max_pressure, cut_state.max_pressure),
           1e-9);
@@ -305,7 +305,7 @@ main(int argc, char **argv)
   {
     const auto s =
       run_scene(away, {"Output directory=contact_search_patch"}, {});
-    const auto state = s->get_dd_solver().contact_state(0);
+    const auto state = s->get_contact_solver().contact_state(0);
     double     worst = 0;
     for (const double sigma : state.sigma_n)
       worst = std::max(worst, std::abs(sigma + 2.) / 2.);

@@ -36,7 +36,7 @@ main(int argc, char **argv)
                                   "Adaptation/Marking=fraction",
                                   "Adaptation/Fraction=0.3",
                                   "Adaptation/Max cycles=5"});
-  const auto   state = sim->get_dd_solver().contact_state(0);
+  const auto   state = sim->get_contact_solver().contact_state(0);
   const double F     = state.force_1.norm();
   std::cout << "after 5 cycles: " << sim->get_bodies()[0]->n_dofs() << " + "
             << sim->get_bodies()[1]->n_dofs() << " dofs, force " << F

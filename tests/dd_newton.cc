@@ -23,7 +23,7 @@ namespace
   unsigned int
   body_solve_sets(const Simulation &s)
   {
-    return s.get_dd_solver().counts().body_solve_sets;
+    return s.get_contact_solver().counts().body_solve_sets;
   }
 } // namespace
 
@@ -51,7 +51,7 @@ main(int argc, char **argv)
     const auto reference =
       run_scene(uniaxial, common, {"Domain decomposition/Solver=monolithic"});
     const auto solution = run_scene(uniaxial, common, {newton});
-    const auto counts   = solution->get_dd_solver().counts();
+    const auto counts   = solution->get_contact_solver().counts();
     std::cout << "c = " << c << ": force " << std::setprecision(12)
               << contact_force(*solution) << " against "
               << contact_force(*reference) << std::setprecision(6) << "; "
@@ -127,20 +127,21 @@ main(int argc, char **argv)
       {"Contact pair S/Formulation=exact", "Contact pair S/Penalty=" + c});
     const double L       = 4;
     const double p_exact = uniaxial_pressure(0.);
-    const auto   state   = sim->get_dd_solver().contact_state(0);
+    const auto   state   = sim->get_contact_solver().contact_state(0);
     std::cout << "exact contact, c = " << c << ": force "
               << std::setprecision(12) << contact_force(*sim) << " against "
               << p_exact * L << ", peak " << state.max_pressure
               << std::setprecision(6) << "; "
-              << sim->get_dd_solver().n_uzawa_updates() << " Uzawa updates, "
-              << body_solve_sets(*sim) << " sets of body solves" << std::endl;
+              << sim->get_contact_solver().n_uzawa_updates()
+              << " Uzawa updates, " << body_solve_sets(*sim)
+              << " sets of body solves" << std::endl;
     check("exact contact, c = " + c + ": force equals the closed form",
           relative(contact_force(*sim), p_exact * L),
           1e-9);
     check("exact contact, c = " + c + ": peak pressure equals the closed form",
           relative(state.max_pressure, p_exact),
           1e-9);
-    check(sim->get_dd_solver().n_uzawa_updates() == 0 &&
+    check(sim->get_contact_solver().n_uzawa_updates() == 0 &&
             sim->summary().at("status") == "converged",
           "exact contact, c = " + c + ": converged without Uzawa updates");
   }
@@ -219,17 +220,17 @@ main(int argc, char **argv)
                 {"Adaptation/Mode=none",
                  "Body omega1/Mesh/Initial refinement=1",
                  "Body omega2/Mesh/Initial refinement=1"})
-        ->get_dd_solver()
+        ->get_contact_solver()
         .counts()
         .newton_steps;
     const unsigned int fine_steps =
-      nested->get_dd_solver().counts().newton_steps - coarse_steps;
+      nested->get_contact_solver().counts().newton_steps - coarse_steps;
     const double difference =
       std::abs(contact_force(*nested) - contact_force(*direct)) /
       contact_force(*direct);
     std::cout << "nested iteration r = 1 -> 2: " << coarse_steps << " + "
               << fine_steps << " Newton steps (direct at r = 2: "
-              << direct->get_dd_solver().counts().newton_steps
+              << direct->get_contact_solver().counts().newton_steps
               << "), force difference " << difference << std::endl;
     check(fine_steps <= 2, "at most 2 Newton steps on the refined mesh");
     check(difference < 1e-8, "the direct solve's force on the refined mesh");
@@ -283,7 +284,7 @@ main(int argc, char **argv)
       {"Contact pair S/Formulation=exact",
        "Body omega1/Mesh/Initial refinement=" + std::to_string(m.r_1),
        "Body omega2/Mesh/Initial refinement=" + std::to_string(m.r_2)});
-    const auto counts = sim->get_dd_solver().counts();
+    const auto counts = sim->get_contact_solver().counts();
     std::cout << name << ": " << counts.pairs_preconditioned_by_both
               << " pair preconditioned by both bodies, "
               << counts.body_solve_sets << " sets of body solves" << std::endl;

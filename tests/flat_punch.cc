@@ -22,7 +22,7 @@ namespace
   std::map<double, double>
   pressure_profile(const Simulation &simulation)
   {
-    const auto  state = simulation.get_dd_solver().contact_state(0);
+    const auto  state = simulation.get_contact_solver().contact_state(0);
     const auto &pts   = simulation.get_contact_pairs()[0]->points();
     std::map<double, double> profile;
     for (unsigned int q = 0; q < pts.size(); ++q)
@@ -46,7 +46,7 @@ namespace
   std::pair<double, double>
   closed_form_errors(const Simulation &simulation)
   {
-    const auto   state  = simulation.get_dd_solver().contact_state(0);
+    const auto   state  = simulation.get_contact_solver().contact_state(0);
     const auto  &pts    = simulation.get_contact_pairs()[0]->points();
     const double P      = state.force_1.norm();
     double       centre = 0, integral = 0;

@@ -23,7 +23,7 @@ namespace
   double
   vertical_force(const Simulation &s)
   {
-    return s.get_dd_solver().contact_state(0).force_1[1];
+    return s.get_contact_solver().contact_state(0).force_1[1];
   }
 
   /** The moment about x = @p x0 of the pressure on S_1 (contact points and
@@ -31,7 +31,7 @@ namespace
   double
   pressure_moment(const Simulation &s, const double x0)
   {
-    const auto  state  = s.get_dd_solver().contact_state(0);
+    const auto  state  = s.get_contact_solver().contact_state(0);
     const auto &points = s.get_contact_pairs()[0]->points();
     double      moment = 0;
     for (unsigned int q = 0; q < points.size(); ++q)
@@ -78,7 +78,7 @@ main(int argc, char **argv)
              << "Body omega1/Boundary conditions/Neumann=3: 0; " << -F / 4;
     const auto loaded =
       run_scene(uniaxial, common, {floating_upper, traction.str()});
-    const auto counts = loaded->get_dd_solver().counts();
+    const auto counts = loaded->get_contact_solver().counts();
     std::cout << "exact contact " << exact << ": force "
               << std::setprecision(12) << vertical_force(*loaded) << " against "
               << F << std::setprecision(6) << "; " << counts.body_solve_sets
@@ -168,7 +168,7 @@ main(int argc, char **argv)
               << " against " << summary_number(*pressed, "max_pressure")
               << "; approach " << summary_number(*loaded, "approach")
               << " against " << summary_number(*pressed, "approach") << "; "
-              << loaded->get_dd_solver().counts().body_solve_sets
+              << loaded->get_contact_solver().counts().body_solve_sets
               << " sets of body solves" << std::endl;
     check("Hertz: the contact force equals the load",
           relative(vertical_force(*loaded), F),

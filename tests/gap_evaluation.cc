@@ -43,7 +43,7 @@ main(int argc, char **argv)
                                   "Constants=Delta=1.366e-3, k=2e-5",
                                   "Contact pair S/Gap=k*x^2",
                                   "Contact pair S/Gap evaluation=" + evaluation});
-    const auto state = sim->get_dd_solver().contact_state(0);
+    const auto state = sim->get_contact_solver().contact_state(0);
     std::cout << "exact contact, gap k x^2 at the " << evaluation
               << ": max penetration " << state.max_penetration
               << " (k h^2 / 12 = " << k * h * h / 12 << "), contact length "
@@ -71,15 +71,15 @@ main(int argc, char **argv)
   for (const unsigned int i : {0u, 1u})
   {
     const std::string evaluation = (i == 0) ? "nodes" : "points";
-    const auto        sim  = run_scene(source_dir + "/prm/paper_two_bodies.prm",
+    const auto        sim = run_scene(source_dir + "/prm/paper_two_bodies.prm",
                                {"Output directory=gap_evaluation_output",
-                                        "Adaptation/Mode=none",
-                                        "Domain decomposition/Solver=monolithic"},
+                                       "Adaptation/Mode=none",
+                                       "Domain decomposition/Solver=monolithic"},
                                {"Body omega1/Mesh/Initial refinement=1",
-                                        "Body omega2/Mesh/Initial refinement=1",
-                                        "Contact pair S/Gap evaluation=" + evaluation});
-    const double      peak = sim->get_dd_solver().contact_state(0).max_pressure;
-    error[i]               = relative(peak, 186.75209);
+                                       "Body omega2/Mesh/Initial refinement=1",
+                                       "Contact pair S/Gap evaluation=" + evaluation});
+    const double peak = sim->get_contact_solver().contact_state(0).max_pressure;
+    error[i]          = relative(peak, 186.75209);
     std::cout << "paper scene, r = 1, gap at the " << evaluation
               << ": peak pressure " << std::setprecision(8) << peak
               << std::setprecision(3) << ", " << error[i]

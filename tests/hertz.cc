@@ -38,7 +38,7 @@ main(int argc, char **argv)
     Simulation            simulation(reader.scene(), quiet);
     simulation.run();
 
-    const auto   state = simulation.get_dd_solver().contact_state(0);
+    const auto   state = simulation.get_contact_solver().contact_state(0);
     const double P     = state.force_1.norm();
 
     // Closed form at the computed force (doc/verification.md §2.2: in plane

@@ -23,7 +23,7 @@ namespace
   ContactState
   state(const Simulation &s)
   {
-    return s.get_dd_solver().contact_state(0);
+    return s.get_contact_solver().contact_state(0);
   }
 } // namespace
 

@@ -123,10 +123,10 @@ main(int argc, char **argv)
   const auto f_b = contact_force(*one);
   std::cout << "force " << f_a << " (two processes) and " << f_b
             << " (one); DD iterations "
-            << balanced->get_dd_solver().history().size() << " and "
-            << one->get_dd_solver().history().size() << std::endl;
-  check(balanced->get_dd_solver().history().size() ==
-          one->get_dd_solver().history().size(),
+            << balanced->get_contact_solver().history().size() << " and "
+            << one->get_contact_solver().history().size() << std::endl;
+  check(balanced->get_contact_solver().history().size() ==
+          one->get_contact_solver().history().size(),
         "the same number of DD iterations");
   check(std::abs(f_a - f_b) <= 1e-10 * f_b, "the same contact force to 1e-10");
 
@@ -167,9 +167,9 @@ main(int argc, char **argv)
             mesh + ": every process holds fewer cells than the whole mesh");
     const auto f_all = contact_force(*all);
     std::cout << "force " << f_all << " (" << mesh << "); DD iterations "
-              << all->get_dd_solver().history().size() << std::endl;
-    check(all->get_dd_solver().history().size() ==
-            one->get_dd_solver().history().size(),
+              << all->get_contact_solver().history().size() << std::endl;
+    check(all->get_contact_solver().history().size() ==
+            one->get_contact_solver().history().size(),
           mesh + ": the same number of DD iterations");
     check(std::abs(f_all - f_b) <= 1e-10 * f_b,
           mesh + ": the same contact force to 1e-10");

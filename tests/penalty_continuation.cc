@@ -25,7 +25,7 @@ namespace
   Run
   measure(const Simulation &s, const std::string &name)
   {
-    const auto counts = s.get_dd_solver().counts();
+    const auto counts = s.get_contact_solver().counts();
     const Run  run{
       contact_force(s), counts.newton_steps, counts.body_solve_sets};
     std::cout << name << ": force " << std::setprecision(12) << run.force

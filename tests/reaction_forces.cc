@@ -236,7 +236,7 @@ main(int argc, char **argv)
     const auto sim = run_coarse_paper_scene(
       source_dir, "reaction_paper", 1, {}, {"Adaptation/Max cycles=3"});
     const auto   r     = reactions(*sim);
-    const auto   state = sim->get_dd_solver().contact_state(0);
+    const auto   state = sim->get_contact_solver().contact_state(0);
     const double F     = state.force_1.norm();
     const double error =
       std::max((r.at("omega1").at(3) + state.force_1).norm(),

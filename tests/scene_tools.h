@@ -46,7 +46,7 @@ namespace ddcontact
     inline double
     hertz_half_width(const Simulation &s, const unsigned int pair = 0)
     {
-      const auto  state = s.get_dd_solver().contact_state(pair);
+      const auto  state = s.get_contact_solver().contact_state(pair);
       const auto &pts   = s.get_contact_pairs()[pair]->points();
       double      s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
       for (unsigned int q = 0; q < pts.size(); ++q)
@@ -69,7 +69,7 @@ namespace ddcontact
     inline double
     contact_force(const Simulation &s, const unsigned int pair = 0)
     {
-      return s.get_dd_solver().contact_state(pair).force_1.norm();
+      return s.get_contact_solver().contact_state(pair).force_1.norm();
     }
 
     /** The contact pressure of prm/stability/uniaxial.prm, two equal blocks

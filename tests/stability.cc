@@ -73,8 +73,8 @@ main(int argc, char **argv)
     const double exact = closed_form(1.366e-3, E, E, nu, H, theta);
     p_zero_gap         = pressure(*sim, L);
     std::cout << "zero gap: p = " << p_zero_gap << ", closed form " << exact
-              << ", " << sim->get_dd_solver().history().size() << " iterations"
-              << std::endl;
+              << ", " << sim->get_contact_solver().history().size()
+              << " iterations" << std::endl;
     check(relative(p_zero_gap, exact) < tol, "zero gap: closed form to 1e-7");
   }
 
@@ -94,8 +94,8 @@ main(int argc, char **argv)
                              "Constants=Delta=1.366e-5, g0=0",
                              "Output/Points=omega2: 0.01, 0.005"});
     const double p_cm = pressure(*cm, L), p_si = pressure(*si, 0.04);
-    const auto   n_cm = cm->get_dd_solver().history().size();
-    const auto   n_si = si->get_dd_solver().history().size();
+    const auto   n_cm = cm->get_contact_solver().history().size();
+    const auto   n_si = si->get_contact_solver().history().size();
     std::cout << "units: p = " << p_cm << " MPa in cm, " << p_si
               << " Pa in m; iterations " << n_cm << " and " << n_si
               << std::endl;
@@ -125,8 +125,8 @@ main(int argc, char **argv)
                                 "Body omega2/Mesh/Corner 2=0.02, 0.01",
                                 "Constants=r0=0.1, Delta=1.366e-5",
                                 "Output/Points=omega2: 0.005, 0.0075"}));
-    const auto   sc = pc->get_dd_solver().contact_state(0);
-    const auto   ss = ps->get_dd_solver().contact_state(0);
+    const auto   sc = pc->get_contact_solver().contact_state(0);
+    const auto   ss = ps->get_contact_solver().contact_state(0);
     const double uc = pc->get_bodies()[1]
                         ->stresses()
                         .at_point(Point<2>(0.5, 0.75))
@@ -137,14 +137,15 @@ main(int argc, char **argv)
                         .displacement[1];
     std::cout << "paper scene: force " << sc.force_1.norm() << " MPa cm, "
               << ss.force_1.norm() << " N/m; u_2(0.5, 0.75) = " << uc << " cm, "
-              << us << " m; iterations " << pc->get_dd_solver().history().size()
-              << " and " << ps->get_dd_solver().history().size() << std::endl;
+              << us << " m; iterations "
+              << pc->get_contact_solver().history().size() << " and "
+              << ps->get_contact_solver().history().size() << std::endl;
     // Anderson's path differs by round-off between the two unit systems,
     // which can move the stop by an iteration at the threshold (81 and 80
     // in doc/stability.md); an absolute tolerance anywhere would change
     // the count by far more, or the answer.
-    const int dn = static_cast<int>(pc->get_dd_solver().history().size()) -
-                   static_cast<int>(ps->get_dd_solver().history().size());
+    const int dn = static_cast<int>(pc->get_contact_solver().history().size()) -
+                   static_cast<int>(ps->get_contact_solver().history().size());
     check(relative(ss.force_1.norm(), 1e4 * sc.force_1.norm()) < tol &&
             relative(us, 1e-2 * uc) < tol && std::abs(dn) <= 2,
           "paper scene: SI = MPa/cm scaled, iterations within 2");
@@ -153,9 +154,9 @@ main(int argc, char **argv)
   // 3. No contact: g0 = 2e-3 > Delta; the pressure is exactly zero.
   {
     const auto sim   = run(uniaxial, {"Constants=Delta=1.366e-3, g0=2e-3"});
-    const auto state = sim->get_dd_solver().contact_state(0);
+    const auto state = sim->get_contact_solver().contact_state(0);
     std::cout << "no contact: force " << state.force_1.norm() << " after "
-              << sim->get_dd_solver().history().size() << " iterations"
+              << sim->get_contact_solver().history().size() << " iterations"
               << std::endl;
     check(state.force_1.norm() == 0. && state.max_pressure == 0.,
           "no contact: zero force");
@@ -230,9 +231,9 @@ main(int argc, char **argv)
                               "Domain decomposition/Gamma=0.04",
                               "Domain decomposition/eps_residual=1e-9"});
     const double exact = closed_form(1.366e-3, E, E, nu, H, theta);
-    const double limit = sim->get_dd_solver().estimate_gamma_limit();
+    const double limit = sim->get_contact_solver().estimate_gamma_limit();
     std::cout << "gamma = 0.04: p = " << pressure(*sim, L) << " after "
-              << sim->get_dd_solver().history().size()
+              << sim->get_contact_solver().history().size()
               << " iterations; estimated gamma* = " << limit
               << " (uniform mode: 0.0535)" << std::endl;
     check(relative(pressure(*sim, L), exact) < 1e-6,

@@ -49,7 +49,7 @@ namespace
     {
       outcome.error = e.what();
     }
-    const auto &solver = simulation.get_dd_solver();
+    const auto &solver = simulation.get_contact_solver();
     for (const auto &record : solver.history())
       outcome.residuals.push_back(record.residual);
     for (unsigned int p = 0; p < simulation.get_contact_pairs().size(); ++p)

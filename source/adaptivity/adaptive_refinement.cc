@@ -203,11 +203,11 @@ namespace ddcontact
     body.refine_and_transfer();
   }
 
-  OutputWriter::CellData
+  std::map<std::string, Vector<double>>
   AdaptiveRefinement::cell_data() const
   {
     const auto diameters = element_diameters(body.get_triangulation());
-    OutputWriter::CellData data;
+    std::map<std::string, Vector<double>> data;
     data["D_e"] = diameters.D;
     data["d_e"] = diameters.d;
     data["K_e"] = diameters.K;

@@ -8,7 +8,7 @@
 #include <ddcontact/bem/boundary_element_solver.h>
 #include <ddcontact/bem/boundary_integration.h>
 #include <ddcontact/bem/far_field_stresses.h>
-#include <ddcontact/parameters.h>
+#include <ddcontact/parameter_tools.h>
 
 #include <limits>
 

@@ -8,7 +8,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <ddcontact/bem/boundary_mesh.h>
-#include <ddcontact/parameters.h>
+#include <ddcontact/parameter_tools.h>
 
 #include <map>
 

@@ -1,5 +1,5 @@
 #include <ddcontact/contact/contact_problem.h>
-#include <ddcontact/parameters.h>
+#include <ddcontact/parameter_tools.h>
 
 #include <cmath>
 #include <limits>

@@ -131,10 +131,10 @@ namespace ddcontact
   {
     if (!writes_files)
       return;
-    const ContactSolver *dd_solver = results.dd_solver;
-    auto                &out       = statistics;
+    const ContactSolver *contact_solver = results.contact_solver;
+    auto                &out            = statistics;
     out << std::setprecision(10) << results.n_adaptation_steps << ','
-        << (dd_solver ? dd_solver->history().size() : 0);
+        << (contact_solver ? contact_solver->history().size() : 0);
     for (const auto &body : results.bodies)
       out << ',' << body->n_active_cells() << ',' << body->n_dofs();
     unsigned int bem_unknowns = 0, capped = 0;
@@ -151,9 +151,10 @@ namespace ddcontact
       eta_sum += a->eta_sum();
       capped += a->n_capped();
     }
-    const IterationRecord last = (dd_solver && !dd_solver->history().empty())
-                                   ? dd_solver->history().back()
-                                   : IterationRecord();
+    const IterationRecord last =
+      (contact_solver && !contact_solver->history().empty())
+        ? contact_solver->history().back()
+        : IterationRecord();
     const auto sections = timer.get_summary_data(TimerOutput::total_wall_time);
     const auto seconds  = [&](const std::string &section)
     {
@@ -202,7 +203,7 @@ namespace ddcontact
       return;
     for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
     {
-      const auto  state = results.dd_solver->contact_state(p);
+      const auto  state = results.contact_solver->contact_state(p);
       const auto &pair  = *results.contact_pairs[p];
       const auto &pts   = pair.points();
       OutputFile  file(parameters.output_directory + "/contact_" + pair.name() +
@@ -223,7 +224,7 @@ namespace ddcontact
   {
     for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
     {
-      const auto state = results.dd_solver->contact_state(p);
+      const auto state = results.contact_solver->contact_state(p);
       pcout << std::setprecision(6) << "  contact "
             << results.contact_pairs[p]->name() << ": force "
             << state.force_1.norm() << ", peak pressure " << state.max_pressure
@@ -326,7 +327,7 @@ namespace ddcontact
   {
     // The contact traction of the reported state (contact_<pair>.csv).
     Vector<double> contact_load;
-    if (results.dd_solver != nullptr)
+    if (results.contact_solver != nullptr)
       for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
       {
         const auto &pair = *results.contact_pairs[p];
@@ -334,7 +335,7 @@ namespace ddcontact
           continue;
         contact_load.reinit(body.n_dofs(), contact_load.size() > 0);
         pair.add_unconstrained_contact_load(
-          results.dd_solver->contact_state(p).sigma_n, body, contact_load);
+          results.contact_solver->contact_state(p).sigma_n, body, contact_load);
       }
     const ReactionForces<2> reactions(body, body.get_solution(), contact_load);
     const auto vector = [](const Tensor<1, 2> &f) { return Json{f[0], f[1]}; };
@@ -406,15 +407,15 @@ namespace ddcontact
                          const bool     judge_penetration,
                          Json          &json) const
   {
-    const ContactSolver &dd_solver = *results.dd_solver;
-    json["dd_iterations"]          = results.n_contact_iterations;
-    json["gamma"]                  = parameters.dd.gamma;
-    json["relaxation"]             = to_string(parameters.dd.relaxation);
-    json["uzawa_updates"]          = dd_solver.n_uzawa_updates();
+    const ContactSolver &contact_solver = *results.contact_solver;
+    json["dd_iterations"]               = contact_solver.n_dd_iterations();
+    json["gamma"]                       = parameters.dd.gamma;
+    json["relaxation"]                  = to_string(parameters.dd.relaxation);
+    json["uzawa_updates"]               = contact_solver.n_uzawa_updates();
     // The work in sets of body solves (one solve of every body), and the
     // Newton and Krylov steps of dd-newton (zero for the relaxed DD).
-    const SolverCounts counts         = dd_solver.counts();
-    json["contact_solver"]            = dd_solver.name();
+    const SolverCounts counts         = contact_solver.counts();
+    json["contact_solver"]            = contact_solver.name();
     json["body_solve_sets"]           = counts.body_solve_sets;
     json["preconditioner_solve_sets"] = counts.preconditioner_solve_sets;
     json["preconditioner_factorizations"] =
@@ -423,15 +424,10 @@ namespace ddcontact
       counts.pairs_preconditioned_by_both;
     json["newton_steps"]      = counts.newton_steps;
     json["krylov_iterations"] = counts.krylov_iterations;
-    if (parameters.dd.solver == ContactSolverType::monolithic)
-    {
-      json["contact_solver"] = "monolithic";
-      json["newton_steps"]   = results.n_newton_iterations;
-    }
     Json thetas = Json::array(), contact = Json::array();
     for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
     {
-      const auto state = dd_solver.contact_state(p);
+      const auto state = contact_solver.contact_state(p);
       thetas.push_back(results.contact_pairs[p]->penalty());
       Json c;
       c["pair"] = results.contact_pairs[p]->name();
@@ -512,10 +508,10 @@ namespace ddcontact
     }
     json["theta"]   = thetas;
     json["contact"] = contact;
-    if (!dd_solver.history().empty())
+    if (!contact_solver.history().empty())
     {
-      json["dd_residual"]  = dd_solver.history().back().residual;
-      json["dd_increment"] = dd_solver.history().back().increment;
+      json["dd_residual"]  = contact_solver.history().back().residual;
+      json["dd_increment"] = contact_solver.history().back().increment;
     }
   }
 

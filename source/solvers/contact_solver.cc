@@ -1,12 +1,15 @@
+#include <ddcontact/contact/elastic_layer_guess.h>
 #include <ddcontact/interruption.h>
 #include <ddcontact/parameter_tools.h>
 #include <ddcontact/solvers/contact_solver.h>
 #include <ddcontact/solvers/dd_newton_solver.h>
+#include <ddcontact/solvers/monolithic_solver.h>
 #include <ddcontact/solvers/neumann_dd_solver.h>
 #include <ddcontact/tasks.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace ddcontact
 {
@@ -22,6 +25,36 @@ namespace ddcontact
   {
   }
 
+  namespace
+  {
+    /** A solver's factory: its checks of the scene, then the solver. */
+    template <typename SolverType>
+    std::unique_ptr<ContactSolver>
+    make_solver(const DDParameters                  &parameters,
+                const std::vector<ElasticBody<2> *> &bodies,
+                const std::vector<ContactPair *>    &pairs,
+                const BodyDistribution              &distribution,
+                ConditionalOStream                  &pcout)
+    {
+      SolverType::check_scene(parameters, bodies);
+      return std::make_unique<SolverType>(
+        parameters, bodies, pairs, distribution, pcout);
+    }
+
+    using SolverFactory =
+      std::unique_ptr<ContactSolver> (*)(const DDParameters &,
+                                         const std::vector<ElasticBody<2> *> &,
+                                         const std::vector<ContactPair *> &,
+                                         const BodyDistribution &,
+                                         ConditionalOStream &);
+
+    /** The registered solvers: one line each. */
+    const std::map<ContactSolverType, SolverFactory> solver_factories = {
+      {ContactSolverType::dd, &make_solver<NeumannDDSolver>},
+      {ContactSolverType::dd_newton, &make_solver<DDNewtonSolver>},
+      {ContactSolverType::monolithic, &make_solver<MonolithicContactSolver>}};
+  } // namespace
+
   std::unique_ptr<ContactSolver>
   ContactSolver::create(const DDParameters                  &parameters,
                         const std::vector<ElasticBody<2> *> &bodies,
@@ -29,22 +62,44 @@ namespace ddcontact
                         const BodyDistribution              &distribution,
                         ConditionalOStream                  &pcout)
   {
+    return solver_factories.at(parameters.solver)(
+      parameters, bodies, pairs, distribution, pcout);
+  }
+
+  void
+  ContactSolver::check_scene(const DDParameters                  &parameters,
+                             const std::vector<ElasticBody<2> *> &bodies)
+  {
     // A floating body's equilibrium is a constraint on the contact
-    // pressure that only dd-newton's coarse problem imposes.
+    // pressure that only dd-newton's coarse problem imposes (DDNewtonSolver
+    // does not call this).
     for (const auto *body : bodies)
-      if (body->is_floating() &&
-          parameters.solver != ContactSolverType::dd_newton)
+      if (body->is_floating())
         throw InputError("Body " + body->name() +
                          "/Dirichlet: the body is floating (its Dirichlet "
                          "conditions leave its " +
                          body->get_rigid_modes().description() +
-                         " free); only Domain decomposition/Solver = "
-                         "dd-newton solves floating bodies");
-    if (parameters.solver == ContactSolverType::dd_newton)
-      return std::make_unique<DDNewtonSolver>(
-        parameters, bodies, pairs, distribution, pcout);
-    return std::make_unique<NeumannDDSolver>(
-      parameters, bodies, pairs, distribution, pcout);
+                         "); only Domain decomposition/Solver = dd-newton "
+                         "solves floating bodies, not " +
+                         selection_name(parameters.solver));
+  }
+
+  void
+  ContactSolver::set_initial_guess()
+  {
+    auto u = problem.zero_iterate();
+    if (parameters.initial_guess == InitialGuess::elastic_layer)
+    {
+      auto guess = elastic_layer_guess(problem);
+      if (!guess.accepted)
+        pcout << "  elastic-layer initial guess is worse than zero here ("
+              << guess.step_ratio
+              << " times the first step); starting from zero" << std::endl;
+      u = std::move(guess.u);
+    }
+    const auto &bodies = problem.get_bodies();
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      bodies[b]->get_solution() = u[b];
   }
 
   void
@@ -211,19 +266,22 @@ namespace ddcontact
     return 2. / (1. + lambda);
   }
 
+  bool
+  ContactSolver::step_within_limit(const std::string &loop)
+  {
+    if (records.size() >= parameters.max_iterations)
+      stop_at_iteration_limit(loop);
+    return step();
+  }
+
   unsigned int
   ContactSolver::run()
   {
+    // The augmented Lagrangian's outer loop around the solver's own.
     do
-    {
-      bool converged = false;
-      while (!converged)
-      {
-        if (records.size() >= parameters.max_iterations)
-          stop_at_iteration_limit("the domain decomposition");
-        converged = step();
-      }
-    } while (start_uzawa_phase());
+      while (!step_within_limit("the domain decomposition"))
+        ;
+    while (start_uzawa_phase());
     return records.size();
   }
 

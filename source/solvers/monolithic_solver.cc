@@ -10,16 +10,59 @@
 namespace ddcontact
 {
   MonolithicContactSolver::MonolithicContactSolver(
-    ContactProblem     &problem,
-    const bool          on_nodes,
-    const unsigned int  max_iterations,
-    ConditionalOStream &pcout)
-    : problem(problem)
-    , on_nodes(on_nodes)
-    , max_iterations(max_iterations)
-    , pcout(pcout)
-    , interface(problem, on_nodes, false)
+    const DDParameters                  &parameters,
+    const std::vector<ElasticBody<2> *> &bodies,
+    const std::vector<ContactPair *>    &pairs,
+    const BodyDistribution              &distribution,
+    ConditionalOStream                  &pcout)
+    : ContactSolver(parameters, bodies, pairs, distribution, pcout)
+    , on_nodes(parameters.pressure_on_nodes)
+    , max_iterations(parameters.n_newton)
+    , interface(this->problem, on_nodes, false)
   {
+  }
+
+  void
+  MonolithicContactSolver::initialize()
+  {
+    ContactSolver::initialize();
+    set_initial_guess();
+  }
+
+  bool
+  MonolithicContactSolver::step()
+  {
+    n_newton_steps += solve_newton();
+    // The converged u solves (20) loaded by its own pressure: that is the
+    // body problem the FEM-BEM estimator compares with the BEM.
+    adopt_current_iterate();
+    IterationRecord record;
+    record.iteration = records.size() + 1;
+    measure_contact(problem.current_iterate(), record);
+    record.time = timer.wall_time();
+    add_record(record);
+    return true;
+  }
+
+  void
+  MonolithicContactSolver::stop_at_iteration_limit(
+    const std::string &what) const
+  {
+    throw NotConvergedError(what +
+                            " (monolithic Newton solves with Uzawa "
+                            "updates) reached Domain "
+                            "decomposition/Max iterations (" +
+                            std::to_string(parameters.max_iterations) +
+                            " solves); raise it, or Domain "
+                            "decomposition/AL tolerance");
+  }
+
+  SolverCounts
+  MonolithicContactSolver::counts() const
+  {
+    SolverCounts c;
+    c.newton_steps = n_newton_steps;
+    return c;
   }
 
   double
@@ -277,7 +320,7 @@ namespace ddcontact
   }
 
   unsigned int
-  MonolithicContactSolver::run()
+  MonolithicContactSolver::solve_newton()
   {
     // On the nodes the pressure is the solver's, and the gap unshifted.
     problem.set_pressure_from_solver(on_nodes);

@@ -1,4 +1,3 @@
-#include <ddcontact/contact/elastic_layer_guess.h>
 #include <ddcontact/solvers/neumann_dd_solver.h>
 #include <ddcontact/tasks.h>
 
@@ -78,20 +77,7 @@ namespace ddcontact
   {
     relaxation->set_gamma(parameters.gamma);
     ContactSolver::initialize();
-
-    auto u = problem.zero_iterate();
-    if (parameters.initial_guess == InitialGuess::elastic_layer)
-    {
-      auto guess = elastic_layer_guess(problem);
-      if (!guess.accepted)
-        pcout << "  elastic-layer initial guess is worse than zero here ("
-              << guess.step_ratio
-              << " times the first step); starting from zero" << std::endl;
-      u = std::move(guess.u);
-    }
-    const auto &bodies = problem.get_bodies();
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      bodies[b]->get_solution() = u[b];
+    set_initial_guess();
 
     if (parameters.relaxation == RelaxationType::automatic)
     {

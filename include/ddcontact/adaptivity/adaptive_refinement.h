@@ -3,13 +3,13 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <ddcontact/adaptivity/adaptation_parameters.h>
 #include <ddcontact/adaptivity/error_estimator.h>
 #include <ddcontact/adaptivity/fem_bem_estimator.h>
 #include <ddcontact/body/boundary_conditions.h>
 #include <ddcontact/body/elastic_body.h>
-#include <ddcontact/io/output_writer.h>
-#include <ddcontact/parameters.h>
 
+#include <map>
 #include <memory>
 #include <string>
 
@@ -56,6 +56,12 @@ namespace ddcontact
 
     const ElasticBody<2> &
     get_body() const
+    {
+      return body;
+    }
+
+    ElasticBody<2> &
+    get_body()
     {
       return body;
     }
@@ -139,7 +145,7 @@ namespace ddcontact
 
     /** eta, D_e, d_e, K_e of the current mesh for the VTU output (eta
      * only if it belongs to this mesh). */
-    OutputWriter::CellData
+    std::map<std::string, Vector<double>>
     cell_data() const;
 
   private:

@@ -8,7 +8,8 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <ddcontact/parameters.h>
+#include <ddcontact/body/body_parameters.h>
+#include <ddcontact/parameter_tools.h>
 
 #include <memory>
 #include <vector>

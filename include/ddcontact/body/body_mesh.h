@@ -8,9 +8,11 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <ddcontact/body/body_parameters.h>
 #include <ddcontact/body/boundary_conditions.h>
 #include <ddcontact/body/circular_boundaries.h>
-#include <ddcontact/parameters.h>
+#include <ddcontact/body/parallel_parameters.h>
+#include <ddcontact/parameter_tools.h>
 
 #include <memory>
 #include <string>

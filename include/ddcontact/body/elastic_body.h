@@ -18,11 +18,13 @@
 
 #include <ddcontact/body/body_linear_solver.h>
 #include <ddcontact/body/body_mesh.h>
+#include <ddcontact/body/body_parameters.h>
 #include <ddcontact/body/body_stresses.h>
 #include <ddcontact/body/boundary_conditions.h>
 #include <ddcontact/body/material.h>
+#include <ddcontact/body/parallel_parameters.h>
 #include <ddcontact/body/rigid_body_modes.h>
-#include <ddcontact/parameters.h>
+#include <ddcontact/parameter_tools.h>
 
 #include <functional>
 #include <memory>

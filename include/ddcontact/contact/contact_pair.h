@@ -8,8 +8,9 @@
 #include <deal.II/lac/vector.h>
 
 #include <ddcontact/body/elastic_body.h>
+#include <ddcontact/contact/contact_pair_parameters.h>
 #include <ddcontact/contact/contact_search.h>
-#include <ddcontact/parameters.h>
+#include <ddcontact/parameter_tools.h>
 
 #include <array>
 #include <memory>

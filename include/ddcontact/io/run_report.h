@@ -49,14 +49,10 @@ namespace ddcontact
       const BodyDistribution                             &distribution;
       const std::vector<std::unique_ptr<ContactPair>>    &contact_pairs;
       /** The contact solver; nullptr in a scene without contact. */
-      const ContactSolver                                    *dd_solver;
+      const ContactSolver                                    *contact_solver;
       const std::vector<std::unique_ptr<AdaptiveRefinement>> &adaptations;
       /** Refinement steps done so far. */
       unsigned int n_adaptation_steps;
-      /** DD iterations of the whole solve. */
-      unsigned int n_contact_iterations;
-      /** Newton iterations of the monolithic solver (Solver = monolithic). */
-      unsigned int n_newton_iterations;
       /** What stopped the refinement above Adaptation/Target error, or "". */
       std::string adaptation_stop = "";
     };

@@ -8,7 +8,8 @@
 
 #include <ddcontact/body/body_distribution.h>
 #include <ddcontact/contact/contact_problem.h>
-#include <ddcontact/parameters.h>
+#include <ddcontact/parameter_tools.h>
+#include <ddcontact/solvers/dd_parameters.h>
 #include <ddcontact/solvers/errors.h>
 #include <ddcontact/solvers/uzawa_loop.h>
 
@@ -55,19 +56,24 @@ namespace ddcontact
   };
 
   /**
-   * A solver of the contact problem (16) of several bodies that works
-   * body by body: every iteration solves each body problem once,
-   * concurrently, loaded on its contact zones. What the solvers share is
-   * here: the ContactProblem, the augmented Lagrangian's UzawaLoop, the
-   * history of the outer iterations, and the last body solutions with
-   * their loads (the FEM side of the FEM-BEM estimator). The derived
-   * classes do the iterating: step() is one outer iteration, which is what
-   * the combined algorithm of Fig. 2 calls between two adaptation steps.
+   * A solver of the contact problem (16) of several bodies: the one
+   * interface through which the adaptive strategies (adaptivity/) and the
+   * report reach every solver, the paper's relaxed DD (NeumannDDSolver),
+   * the semismooth Newton method on the contact pressure (DDNewtonSolver)
+   * and the monolithic reference (MonolithicContactSolver).
    *
-   * Domain decomposition/Solver selects the solver, in create(): the
-   * paper's relaxed DD (NeumannDDSolver, also the host of the monolithic
-   * Newton solver) or the semismooth Newton method on the contact pressure
-   * (DDNewtonSolver).
+   * - initialize() starts on the current meshes, step() is one outer
+   *   iteration (what the combined algorithm of Fig. 2 calls between two
+   *   adaptation steps), reinit_after_refinement() follows a mesh change,
+   *   counts() and history() give the work;
+   * - run() iterates to convergence inside the augmented Lagrangian's
+   *   Uzawa loop (written once, here: start_uzawa_phase());
+   * - what the FEM-BEM estimator and the report need is published:
+   *   last_body_solution(), last_contact_traction(), contact_state().
+   *
+   * Domain decomposition/Solver selects the solver in create(), from the
+   * table in contact_solver.cc: adding a solver is its own files, one line
+   * there, and its test.
    */
   class ContactSolver
   {
@@ -80,14 +86,20 @@ namespace ddcontact
 
     virtual ~ContactSolver() = default;
 
-    /** The solver of Domain decomposition/Solver (NeumannDDSolver for
-     * "dd" and "monolithic"). */
+    /** The solver of Domain decomposition/Solver, after the checks that
+     * solver makes of the scene. */
     static std::unique_ptr<ContactSolver>
     create(const DDParameters                  &parameters,
            const std::vector<ElasticBody<2> *> &bodies,
            const std::vector<ContactPair *>    &pairs,
            const BodyDistribution              &distribution,
            ConditionalOStream                  &pcout);
+
+    /** The checks of the scene that the solvers (not dd-newton) share:
+     * no floating body. Throws InputError. */
+    static void
+    check_scene(const DDParameters                  &parameters,
+                const std::vector<ElasticBody<2> *> &bodies);
 
     /** A new run on the current meshes: resets the history and the
      * multipliers (derived classes then set up their iterate). Call after
@@ -105,6 +117,11 @@ namespace ddcontact
      * NotConvergedError at Max iterations with a falling residual. */
     unsigned int
     run();
+
+    /** step(), unless Domain decomposition/Max iterations is reached, where
+     * stop_at_iteration_limit(@p loop) throws instead. */
+    bool
+    step_within_limit(const std::string &loop);
 
     /** Domain decomposition/Max iterations is reached: throw
      * NotConvergedError or DivergenceError with a message that says what
@@ -130,7 +147,8 @@ namespace ddcontact
     virtual bool
     start_uzawa_phase();
 
-    /** "dd" or "dd-newton", as Domain decomposition/Solver writes it. */
+    /** "dd", "dd-newton" or "monolithic", as Domain decomposition/Solver
+     * writes it. */
     virtual std::string
     name() const = 0;
 
@@ -150,11 +168,9 @@ namespace ddcontact
     ContactState
     contact_state(unsigned int p) const;
 
-    /** The contact problem (bodies, pairs, laws) the solver iterates on;
-     * other solvers of the same problem (the monolithic Newton solver)
-     * share its laws and multipliers. */
-    ContactProblem &
-    get_problem()
+    /** The contact problem (bodies, pairs, laws) the solver iterates on. */
+    const ContactProblem &
+    get_problem() const
     {
       return problem;
     }
@@ -208,6 +224,7 @@ namespace ddcontact
     BoundaryTractionSamples
     last_contact_traction(const ElasticBody<2> &body) const;
 
+  protected:
     /** Take the bodies' current solutions as the last body solutions,
      * loaded by their own contact pressure: after a solver that converged
      * without DD steps (the monolithic one), the converged u solves (20)
@@ -215,7 +232,11 @@ namespace ddcontact
     void
     adopt_current_iterate();
 
-  protected:
+    /** Domain decomposition/Initial guess into the bodies' solutions: zero
+     * or the elastic-layer (Winkler) guess of elastic_layer_guess(). */
+    void
+    set_initial_guess();
+
     /** A new phase of the iteration (first mesh, new mesh, new Uzawa
      * multipliers): derived classes drop what depends on the old one. */
     virtual void

@@ -85,6 +85,13 @@ namespace ddcontact
   public:
     using ContactSolver::ContactSolver;
 
+    /** dd-newton solves floating bodies too (its coarse space): no
+     * check beyond the parameters'. */
+    static void
+    check_scene(const DDParameters &, const std::vector<ElasticBody<2> *> &)
+    {
+    }
+
     /** Zero pressure; resets the history and the multipliers. */
     void
     initialize() override;

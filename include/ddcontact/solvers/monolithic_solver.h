@@ -7,8 +7,8 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
-#include <ddcontact/contact/contact_problem.h>
 #include <ddcontact/solvers/contact_interface.h>
+#include <ddcontact/solvers/contact_solver.h>
 
 #include <vector>
 
@@ -17,7 +17,8 @@ namespace ddcontact
   using namespace dealii;
 
   /**
-   * The reference for the domain decomposition: the penalised problem (16)
+   * Domain decomposition/Solver = monolithic, the reference for the domain
+   * decomposition: the penalised problem (16)
    * for all bodies at once,
    *   A(u, v) + J'_theta(u, v) - L(v) = 0,
    * solved by a semismooth (active-set) Newton method. The penalty is
@@ -57,25 +58,58 @@ namespace ddcontact
    * residual (K u - L + sum_i m_i p_i g_i on the unconstrained dofs, and
    * m_i min(p_i, (theta_i p_i - d_i) / c_i), both forces).
    */
-  class MonolithicContactSolver
+  class MonolithicContactSolver : public ContactSolver
   {
   public:
-    /** With @p on_nodes the nodal penalty, otherwise the points. */
-    MonolithicContactSolver(ContactProblem     &problem,
-                            bool                on_nodes,
-                            unsigned int        max_iterations,
-                            ConditionalOStream &pcout);
+    /** Domain decomposition/Contact pressure = nodes gives the nodal
+     * penalty, otherwise the points; Max Newton iterations limits a
+     * solve. */
+    MonolithicContactSolver(const DDParameters                  &parameters,
+                            const std::vector<ElasticBody<2> *> &bodies,
+                            const std::vector<ContactPair *>    &pairs,
+                            const BodyDistribution              &distribution,
+                            ConditionalOStream                  &pcout);
 
-    /** Solve from the bodies' current solutions (the initial active set);
-     * writes the result into them and returns the Newton iterations. The
-     * law of each pair gives the gap shifted by its multipliers,
-     * f_n + theta lambda (the augmented Lagrangian's pressure
-     * min(0, lambda + g/theta) is the penalty pressure of that gap). On
-     * the nodes the pressure p is handed to the pairs' laws
-     * (PenaltyLaw::set_contact_pressure()) for the output, the force and
-     * the estimator, as dd-newton does. */
+    /** ContactSolver::initialize() and Domain decomposition/Initial guess,
+     * which gives the first active set. */
+    void
+    initialize() override;
+
+    /**
+     * The whole Newton solve on the current multipliers, from the bodies'
+     * current solutions (the initial active set); writes the result into
+     * them and records one row of the history. The law of each pair gives
+     * the gap shifted by its multipliers, f_n + theta lambda (the
+     * augmented Lagrangian's pressure min(0, lambda + g/theta) is the
+     * penalty pressure of that gap). On the nodes the pressure p is handed
+     * to the pairs' laws (PenaltyLaw::set_contact_pressure()) for the
+     * output, the force and the estimator, as dd-newton does. Returns
+     * true (converged) or throws.
+     */
+    bool
+    step() override;
+
+    /** Reached only by Uzawa updates beyond Domain decomposition/Max
+     * iterations (each step is a whole solve). */
+    [[noreturn]] void
+    stop_at_iteration_limit(const std::string &what) const override;
+
+    std::string
+    name() const override
+    {
+      return "monolithic";
+    }
+
+    /** The Newton steps of all solves; no body solves. */
+    SolverCounts
+    counts() const override;
+
+    /** No DD iterations: the bodies are solved together. */
     unsigned int
-    run();
+    n_dd_iterations() const override
+    {
+      return 0;
+    }
 
   private:
     /** One term of J_theta: d = sum_j g[j] u(dofs[j]) - f (global dofs). */
@@ -137,10 +171,13 @@ namespace ddcontact
     void
     store_iterate(const Vector<double> &u, const PointVector &p);
 
-    ContactProblem                      &problem;
+    /** The Newton method to a settled active set; returns its steps. */
+    unsigned int
+    solve_newton();
+
     const bool                           on_nodes;
     const unsigned int                   max_iterations;
-    ConditionalOStream                  &pcout;
+    unsigned int                         n_newton_steps = 0;
     ContactInterface                     interface;
     std::vector<types::global_dof_index> offset;
     AffineConstraints<double>            constraints;

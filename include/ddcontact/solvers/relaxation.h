@@ -3,7 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <ddcontact/parameters.h>
+#include <ddcontact/solvers/dd_parameters.h>
 
 #include <deque>
 #include <memory>

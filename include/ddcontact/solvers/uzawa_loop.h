@@ -4,7 +4,7 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <ddcontact/contact/contact_problem.h>
-#include <ddcontact/parameters.h>
+#include <ddcontact/solvers/dd_parameters.h>
 
 #include <limits>
 #include <string>

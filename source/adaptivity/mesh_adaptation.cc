@@ -1,0 +1,214 @@
+#include <ddcontact/adaptivity/contact_zone_grading.h>
+#include <ddcontact/adaptivity/marking.h>
+#include <ddcontact/adaptivity/mesh_adaptation.h>
+#include <ddcontact/interruption.h>
+#include <ddcontact/tasks.h>
+
+#include <algorithm>
+
+namespace ddcontact
+{
+  MeshAdaptation::MeshAdaptation(const AdaptationParameters &parameters,
+                                 const bool grade_contact_zones,
+                                 const std::vector<ElasticBody<2> *> &bodies,
+                                 const std::vector<ContactPair *>    &pairs,
+                                 BodyDistribution   &distribution,
+                                 TimerOutput        &timer,
+                                 ConditionalOStream &pcout)
+    : parameters(parameters)
+    , grade_contact_zones(grade_contact_zones)
+    , pairs(pairs)
+    , distribution(distribution)
+    , timer(timer)
+    , pcout(pcout)
+  {
+    for (const auto &name : parameters.bodies)
+      for (auto *body : bodies)
+        if (body->name() == name)
+          adaptations.push_back(
+            std::make_unique<AdaptiveRefinement>(*body, parameters));
+  }
+
+  unsigned int
+  MeshAdaptation::estimate_and_mark(const ContactSolver *solver)
+  {
+    TimerOutput::Scope t(timer, "adaptation: estimate and mark");
+    unsigned int       marked = 0;
+    if (parameters.mode == AdaptationMode::uniform)
+    {
+      for (auto &a : adaptations)
+        marked += a->mark_all();
+      return marked;
+    }
+    for (auto &a : adaptations)
+    {
+      const auto &body = a->get_body();
+      if (solver == nullptr)
+        a->estimate(body.get_solution(), BoundaryTractionSamples());
+      else
+        // The FEM solution of (20) and its load, not the relaxed iterate
+        // (21): the BEM must solve the same boundary value problem.
+        a->estimate(solver->last_body_solution(body),
+                    solver->last_contact_traction(body));
+    }
+
+    // Fraction and Doerfler marking rank the cells of all adapted bodies
+    // together, so that the body with the larger error gets more of the
+    // refinement (on one process; a distributed mesh marks its own).
+    bool joint =
+      parameters.marking != MarkingType::threshold && adaptations.size() > 1;
+    std::vector<const Vector<double> *> contributions;
+    for (const auto &a : adaptations)
+    {
+      joint = joint && !a->get_body().is_mesh_distributed();
+      contributions.push_back(&a->error_contributions());
+    }
+    const double threshold =
+      joint ? joint_marking_threshold(contributions, parameters) : 0.;
+    for (auto &a : adaptations)
+      marked += joint ? a->mark_above(threshold) : a->mark();
+
+    // Multipliers on the nodes of S_1 need an S_2 at least as fine
+    // (grade_contact_zone()); the paper's penalty on the points is left as
+    // the paper has it.
+    if (marked > 0 && grade_contact_zones)
+      for (const auto *pair : pairs)
+        for (auto &a : adaptations)
+        {
+          auto &body = a->get_body();
+          if (&body == &pair->get_body_2() && !body.is_mesh_distributed())
+            marked += grade_contact_zone(
+              *pair, body.get_triangulation(), parameters.max_level);
+        }
+    return marked;
+  }
+
+  unsigned int
+  MeshAdaptation::mark(const ContactSolver *solver, const bool may_refine)
+  {
+    interruption::check("adaptation cycle " + std::to_string(n_refinements));
+    doing = "adaptation step " + std::to_string(n_refinements + 1) +
+            " (estimate and marking)";
+    unsigned int marked = estimate_and_mark(solver);
+    // Adaptation/Target error: the estimate of the relative energy-norm
+    // error decides, whatever the marking rule flagged.
+    const double target   = parameters.target_error;
+    const double estimate = relative_energy_error_estimate(adaptations);
+    stop.clear();
+    if (target > 0 && estimate >= 0 && estimate <= target)
+    {
+      if (marked > 0)
+        pcout << "  Adaptation/Target error reached: estimated relative "
+                 "energy-norm error "
+              << estimate << " <= " << target << std::endl;
+      return 0;
+    }
+    if (target > 0 && estimate >= 0)
+    {
+      pcout << "  estimated relative energy-norm error " << estimate
+            << " (target " << target << ")" << std::endl;
+      // Above the target, every cycle refines at least a set share of the
+      // estimated error, so that neither a threshold that flags nothing
+      // nor one that flags a few cells per cycle stalls the run.
+      marked = ensure_error_share(marked);
+    }
+    if (!may_refine && marked > 0)
+    {
+      pcout << "  Adaptation/Max cycles reached: " << marked
+            << " marked cells stay unrefined" << std::endl;
+      stop = "Adaptation/Max cycles (" + std::to_string(parameters.max_cycles) +
+             ") was reached";
+      return 0;
+    }
+    if (marked == 0 && target > 0 && estimate > target)
+      stop = reason_for_no_marking();
+    return marked;
+  }
+
+  std::string
+  MeshAdaptation::reason_for_no_marking() const
+  {
+    unsigned int capped = 0;
+    bool         full   = false;
+    for (const auto &a : adaptations)
+    {
+      capped += a->n_capped();
+      full = full || a->get_body().n_active_cells() + 3 > parameters.max_cells;
+    }
+    if (full)
+      return "Adaptation/Max cells (" + std::to_string(parameters.max_cells) +
+             ") leaves no room for another refinement";
+    if (capped > 0)
+      return std::to_string(capped) +
+             " flagged cells are at Adaptation/Max level (" +
+             std::to_string(parameters.max_level) + ")";
+    return "the marking flagged no cell";
+  }
+
+  unsigned int
+  MeshAdaptation::ensure_error_share(const unsigned int marked)
+  {
+    // The error the flagged cells carry, relative to the whole estimate
+    // (sums of squared contributions, all adapted bodies).
+    double                              flagged = 0, total = 0;
+    bool                                serial = true;
+    std::vector<const Vector<double> *> contributions;
+    for (const auto &a : adaptations)
+    {
+      const auto &body = a->get_body();
+      serial           = serial && !body.is_mesh_distributed();
+      const auto &c    = a->error_contributions();
+      contributions.push_back(&c);
+      for (const auto &cell : body.get_triangulation().active_cell_iterators())
+      {
+        const double c2 =
+          c(cell->active_cell_index()) * c(cell->active_cell_index());
+        total += c2;
+        if (cell->refine_flag_set())
+          flagged += c2;
+      }
+    }
+    // (Distributed meshes mark their own cells: left as the rule marked.)
+    if (!serial || !(total > 0) ||
+        flagged >= AdaptationParameters::min_refined_error_share * total)
+      return marked;
+    AdaptationParameters doerfler = parameters;
+    doerfler.marking              = MarkingType::doerfler;
+    doerfler.fraction      = AdaptationParameters::min_refined_error_share;
+    const double threshold = joint_marking_threshold(contributions, doerfler);
+    unsigned int now       = 0;
+    for (auto &a : adaptations)
+      now += a->mark_above(threshold);
+    pcout << "  the marking flagged " << marked << " cells carrying "
+          << 100. * flagged / total << " % of the estimated error: marking "
+          << now << " cells (Doerfler, "
+          << 100. * AdaptationParameters::min_refined_error_share
+          << " %) instead" << std::endl;
+    return now;
+  }
+
+  void
+  MeshAdaptation::refine(ContactSolver *solver)
+  {
+    TimerOutput::Scope t(timer, "adaptation: refine and transfer");
+    doing = "adaptation step " + std::to_string(n_refinements + 1) +
+            " (refinement and transfer)";
+    // The adapted bodies' meshes are independent: refine them at once
+    // (one after the other on partitioned meshes, whose refinement is
+    // collective).
+    run_tasks(
+      adaptations.size(),
+      [&](const unsigned int i) { adaptations[i]->refine(); },
+      distribution.uses_process_groups());
+    ++n_refinements;
+    doing = "the solve after adaptation step " + std::to_string(n_refinements);
+    // Refinement changed the bodies' sizes: balance them again.
+    if (distribution.distribute())
+      pcout << "  bodies now solved on processes " << distribution.describe()
+            << std::endl;
+    for (auto *pair : pairs)
+      pair->setup();
+    if (solver != nullptr)
+      solver->reinit_after_refinement();
+  }
+} // namespace ddcontact
