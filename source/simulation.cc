@@ -1,4 +1,5 @@
 #include <ddcontact/interruption.h>
+#include <ddcontact/io/scene_summary.h>
 #include <ddcontact/simulation.h>
 #include <ddcontact/tasks.h>
 #include <ddcontact/version.h>
@@ -34,7 +35,7 @@ namespace ddcontact
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     // The member copy of the parameters, which outlives the argument.
     , report(this->parameters, timer, wall_clock, pcout)
-    , writes_files(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    , solution_output(this->parameters)
   {
   }
 
@@ -108,44 +109,20 @@ namespace ddcontact
             << distribution->describe() << std::endl;
 
     for (const auto &body : bodies)
-      pcout << "  body " << std::setw(10) << std::left << body->name()
-            << std::right << std::setw(9) << body->n_active_cells() << " cells "
-            << std::setw(9) << body->n_dofs() << " dofs  ("
-            << (body->is_simplex() ? "triangles" : "quadrilaterals")
-            << (body->is_mesh_distributed() ? ", p4est" : "") << ", "
-            << body->get_fe().get_name() << ")" << std::endl;
-    for (const auto &body : bodies)
-      for (const auto &circle : body->get_mesh().circular_boundaries())
-        pcout << "    " << body->name() << ", curved boundary " << circle
-              << std::endl;
-    for (const auto &body : bodies)
-      if (body->get_mesh().n_merged_vertices() > 0)
-        pcout << "    " << body->name() << ", merged "
-              << body->get_mesh().n_merged_vertices()
-              << " coincident vertices of its mesh file (Mesh/Merge "
-                 "coincident vertices)"
-              << std::endl;
-  }
-
-  void
-  Simulation::solve_bodies()
-  {
-    TimerOutput::Scope          t(timer, "solve");
-    std::vector<Vector<double>> u(bodies.size());
-    distribution->solve_and_share(
-      [&](const unsigned int b)
-      {
-        bodies[b]->solve();
-        u[b] = bodies[b]->get_solution();
-      },
-      u);
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      bodies[b]->get_solution() = u[b];
+      pcout << describe_body(*body);
+    // An Output/Points entry outside its body is refused now, not after
+    // the solve (the evaluation names the entry and the point).
+    for (const auto &point : parameters.points)
+      for (const auto &body : bodies)
+        if (body->name() == point.body)
+          body->stresses().at_point(point.x);
   }
 
   void
   Simulation::setup_contact()
   {
+    if (parameters.contact_pairs.empty())
+      return;
     TimerOutput::Scope t(timer, "contact setup");
     const auto         find = [&](const std::string &name) -> ElasticBody<2> &
     {
@@ -159,20 +136,9 @@ namespace ddcontact
     {
       contact_pairs.push_back(std::make_unique<ContactPair>(
         p, find(p.body_1), find(p.body_2), parameters.constants));
-      const ContactPair &pair = *contact_pairs.back();
       contact_pairs.back()->setup();
-      const auto &found = pair.search_report();
-      pcout << "  contact pair " << p.name << ": " << p.body_1 << " -> "
-            << p.body_2 << ", " << found.n_points << " of " << found.n_examined
-            << " points of S_1 face S_2 within the search distance "
-            << found.search_distance;
-      if (found.n_points > 0)
-        pcout << ", initial gap " << found.min_gap << " to " << found.max_gap;
-      if (!parameters.dd.exact_contact())
-        pcout << ", theta = " << pair.penalty();
-      pcout << std::endl;
-      for (const auto &warning : pair.setup_warnings())
-        pcout << "warning: " << warning << std::endl;
+      pcout << describe_contact_pair(*contact_pairs.back(),
+                                     parameters.dd.exact_contact());
     }
     contact_solver = ContactSolver::create(parameters.dd,
                                            raw_pointers(bodies),
@@ -207,7 +173,11 @@ namespace ddcontact
     strategy = AdaptiveStrategy::create(
       parameters.adaptation,
       {contact_solver.get(),
-       [this]() { solve_bodies(); },
+       [this]()
+       {
+         TimerOutput::Scope t(timer, "solve");
+         distribution->solve_bodies();
+       },
        adaptation.get(),
        [this](const unsigned int marked, const bool write_mesh)
        { adaptation_step(marked, write_mesh); },
@@ -229,46 +199,8 @@ namespace ddcontact
   void
   Simulation::output_results(const unsigned int step)
   {
-    // Partitioned meshes are written in pieces by all processes.
-    if (!writes_files && !distribution->uses_process_groups())
-      return;
-    if (!parameters.write_vtu)
-      return;
     TimerOutput::Scope t(timer, "output");
-    if (!output_writer)
-      output_writer = std::make_unique<OutputWriter>(
-        parameters.output_directory,
-        distribution->uses_process_groups() ? MPI_COMM_WORLD : MPI_COMM_SELF,
-        parameters.smoothed_stresses);
-    std::vector<const ElasticBody<2> *> body_pointers;
-    std::vector<const Vector<double> *> solutions;
-    std::vector<OutputWriter::CellData> cell_data(bodies.size());
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-    {
-      body_pointers.push_back(bodies[b].get());
-      solutions.push_back(&bodies[b]->get_solution());
-      for (const auto &a : get_adaptations())
-        if (&a->get_body() == bodies[b].get())
-          cell_data[b] = a->cell_data();
-    }
-    output_writer->write_step(step, step, body_pointers, solutions, cell_data);
-
-    // Every contact zone in the same step, with its multipliers if the
-    // augmented Lagrangian is on.
-    if (!writes_files || contact_pairs.empty())
-      return;
-    if (!contact_zone_writer)
-      contact_zone_writer =
-        std::make_unique<ContactZoneWriter>(parameters.output_directory);
-    for (unsigned int p = 0; p < contact_pairs.size(); ++p)
-      contact_zone_writer->write_step(
-        step,
-        step,
-        *contact_pairs[p],
-        contact_solver->contact_state(p),
-        parameters.dd.augmented_lagrangian
-          ? contact_solver->get_problem().law(p).multipliers()
-          : std::vector<double>());
+    solution_output.write_step(results(), step);
   }
 
   void
@@ -324,20 +256,23 @@ namespace ddcontact
           << parameters.output_directory << std::endl;
 
     setup_bodies();
-    // An Output/Points entry outside its body is refused now, not after
-    // the solve (the evaluation names the entry and the point).
-    for (const auto &point : parameters.points)
-      for (const auto &body : bodies)
-        if (body->name() == point.body)
-          body->stresses().at_point(point.x);
     step = "the contact setup";
-    if (!parameters.contact_pairs.empty())
-      setup_contact();
+    setup_contact();
     setup_strategy();
+    step = "the first solve";
+    solve();
+    write_results();
 
+    timer.print_summary();
+    pcout << "wall time " << std::fixed << std::setprecision(2)
+          << wall_clock.wall_time() << " s" << std::defaultfloat << std::endl;
+  }
+
+  void
+  Simulation::solve()
+  {
     try
     {
-      step = "the first solve";
       strategy->solve();
     }
     catch (const DivergenceError &error)
@@ -357,11 +292,6 @@ namespace ddcontact
         report.write_summary(results(), "interrupted");
       throw;
     }
-    write_results();
-
-    timer.print_summary();
-    pcout << "wall time " << std::fixed << std::setprecision(2)
-          << wall_clock.wall_time() << " s" << std::defaultfloat << std::endl;
   }
 
   void

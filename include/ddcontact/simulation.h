@@ -9,9 +9,8 @@
 #include <ddcontact/body/body_distribution.h>
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/contact/contact_pair.h>
-#include <ddcontact/io/contact_zone_writer.h>
-#include <ddcontact/io/output_writer.h>
 #include <ddcontact/io/run_report.h>
+#include <ddcontact/io/solution_output.h>
 #include <ddcontact/parameters.h>
 #include <ddcontact/solvers/contact_solver.h>
 
@@ -98,7 +97,8 @@ namespace ddcontact
     void
     setup_bodies();
 
-    /** The contact pairs and their solver (Domain decomposition/Solver). */
+    /** The contact pairs and their solver (Domain decomposition/Solver),
+     * if the scene has contact pairs. */
     void
     setup_contact();
 
@@ -106,10 +106,6 @@ namespace ddcontact
      * Adaptation/Mode. */
     void
     setup_strategy();
-
-    /** Solve every body problem at once (a scene without contact). */
-    void
-    solve_bodies();
 
     /** After each adaptation step: a row of statistics.csv and, if
      * @p write_mesh, the VTU and cells_<body>-NNNN.csv of the mesh. */
@@ -120,6 +116,11 @@ namespace ddcontact
      * contact zone (ContactZoneWriter), if Output/Write vtu. */
     void
     output_results(unsigned int step);
+
+    /** Run the strategy; on a failure (divergence, interruption) write
+     * what was reached before passing the error on. */
+    void
+    solve();
 
     /** The files of a finished solve, and its status: summary.json,
      * history.csv, the contact profiles; throws on a shortfall (the
@@ -139,17 +140,14 @@ namespace ddcontact
     TimerOutput           timer;
     Timer                 wall_clock;
     RunReport             report;
+    SolutionOutput        solution_output;
 
     std::vector<std::unique_ptr<ElasticBody<2>>> bodies;
     std::unique_ptr<BodyDistribution>            distribution;
-    /** Process 0 writes the files (every process holds all results). */
-    const bool                                writes_files;
-    std::vector<std::unique_ptr<ContactPair>> contact_pairs;
-    std::unique_ptr<ContactSolver>            contact_solver;
-    std::unique_ptr<MeshAdaptation>           adaptation;
-    std::unique_ptr<AdaptiveStrategy>         strategy;
-    std::unique_ptr<OutputWriter>             output_writer;
-    std::unique_ptr<ContactZoneWriter>        contact_zone_writer;
+    std::vector<std::unique_ptr<ContactPair>>    contact_pairs;
+    std::unique_ptr<ContactSolver>               contact_solver;
+    std::unique_ptr<MeshAdaptation>              adaptation;
+    std::unique_ptr<AdaptiveStrategy>            strategy;
     // The step the run is in, for an out-of-memory message.
     std::string  step           = "the setup of the bodies";
     unsigned int n_output_steps = 0;

@@ -247,4 +247,18 @@ namespace ddcontact
     }
     return s.str();
   }
+  void
+  BodyDistribution::solve_bodies()
+  {
+    std::vector<Vector<double>> u(bodies.size());
+    solve_and_share(
+      [&](const unsigned int b)
+      {
+        bodies[b]->solve();
+        u[b] = bodies[b]->get_solution();
+      },
+      u);
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      bodies[b]->get_solution() = u[b];
+  }
 } // namespace ddcontact

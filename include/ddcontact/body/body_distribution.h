@@ -93,6 +93,11 @@ namespace ddcontact
     solve_and_share(const std::function<void(unsigned int)> &solve,
                     std::vector<Vector<double>>             &per_body) const;
 
+    /** Solve every body problem on its owner (a scene without contact)
+     * and hand the solutions to all processes. */
+    void
+    solve_bodies();
+
     /** Send every body's vector from its owner to all processes. */
     void
     share(std::vector<Vector<double>> &per_body) const;
