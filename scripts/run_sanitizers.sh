@@ -15,7 +15,7 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Release \
 
 # The fast tests: seconds each, together covering parsing, the bad-input
 # checks, the contact pair and DD, the relaxations and the BEM kernels.
-tests=(relaxation penalty_law boundary_conditions json patch_test flat_punch contact_dd bem_kernels bem_patch bem_hanging_nodes bad_input)
+tests=(relaxation contact_law boundary_conditions json patch_test flat_punch contact_dd bem_kernels bem_patch bem_hanging_nodes bad_input)
 targets=(ddcontact)
 for t in "${tests[@]}"; do
   [ "$t" = bad_input ] || targets+=("test_$t")

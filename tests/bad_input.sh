@@ -94,6 +94,7 @@ case_ "Corner 1 = -inf, 0" "Mesh/Corner 1: '-inf'" "$base" --set "Body lower/Mes
 case_ "empty Output directory" "Output directory: empty" "$base" --output ""
 case_ "contact zone not among the Contact ids" "Boundary id 2: 2 is not among" "$paper" --set "Contact pair S/Boundary id 2=2"
 case_ "retired Augmented Lagrangian" "Contact pair <name>/Formulation" "$paper" --set "Domain decomposition/Augmented Lagrangian=true"
+case_ "old Initial guess name" "'winkler' is now called 'elastic-layer'" "$paper" --set "Domain decomposition/Initial guess=winkler"
 case_ "pairs with different formulations" "Contact pair plate_on_base/Formulation: exact, but pair punch_on_plate is penalty" "$src/prm/three_bodies.prm" --set "Contact pair plate_on_base/Formulation=exact"
 printf 'set Bodies = a\n' >"$work/nosub.prm"
 case_ "body listed without its subsection" "Bodies: 'a' is listed, but the file has no subsection 'Body a'" "$work/nosub.prm"

@@ -1,4 +1,4 @@
-#include <ddcontact/contact/penalty_law.h>
+#include <ddcontact/contact/contact_law.h>
 #include <ddcontact/solvers/dd_newton_solver.h>
 
 #include <algorithm>

@@ -19,7 +19,7 @@ namespace ddcontact
                       {"both", StoppingTest::both})
   DDCONTACT_SELECTION(InitialGuess,
                       {"zero", InitialGuess::zero},
-                      {"winkler", InitialGuess::elastic_layer})
+                      {"elastic-layer", InitialGuess::elastic_layer})
 
   std::string
   to_string(const RelaxationType value)
@@ -78,9 +78,14 @@ namespace ddcontact
                       "5000",
                       Patterns::Integer(1),
                       "Maximum number of DD iterations.");
+    // "winkler", the old name of elastic-layer, is refused in parse() with
+    // the new one.
+    std::string guesses = "winkler";
+    for (const auto &entry : selection_names<InitialGuess>())
+      guesses += "|" + entry.first;
     prm.declare_entry("Initial guess",
-                      "winkler",
-                      selection_pattern<InitialGuess>(),
+                      "elastic-layer",
+                      Patterns::Selection(guesses),
                       "zero, or the elastic-layer (Winkler) model: contact "
                       "pressure from the contact-free solution with springs "
                       "E'/H in series with the penalty (replaced by zero "
@@ -148,7 +153,10 @@ namespace ddcontact
     eps_u          = prm.get_double("eps_u");
     eps_residual   = prm.get_double("eps_residual");
     max_iterations = prm.get_integer("Max iterations");
-    initial_guess  = parse_selection<InitialGuess>(prm.get("Initial guess"));
+    if (prm.get("Initial guess") == "winkler")
+      throw InputError("Domain decomposition/Initial guess: 'winkler' is now "
+                       "called 'elastic-layer'");
+    initial_guess = parse_selection<InitialGuess>(prm.get("Initial guess"));
     if (!Utilities::trim(prm.get("Augmented Lagrangian")).empty())
       throw InputError(
         "Domain decomposition/Augmented Lagrangian is retired: set Contact "

@@ -138,7 +138,7 @@ namespace ddcontact
         for (unsigned int j = 0; j < p.b.size(); ++j)
           add(p.dofs_2[j] + offset[b2], s * p.b[j]);
         // lambda + g/theta = (f_n + theta lambda - u_1n - u_2n)/theta: the
-        // multipliers shift the gap (not on the nodes, PenaltyLaw).
+        // multipliers shift the gap (not on the nodes, ContactLaw).
         d.f += s * problem.law(share.pair).shifted_gap(share.point);
       }
     }

@@ -7,8 +7,8 @@
 
 #include <ddcontact/body/body_distribution.h>
 #include <ddcontact/body/elastic_body.h>
+#include <ddcontact/contact/contact_law.h>
 #include <ddcontact/contact/contact_pair.h>
-#include <ddcontact/contact/penalty_law.h>
 
 #include <utility>
 #include <vector>
@@ -72,13 +72,13 @@ namespace ddcontact
     }
 
     /** The law of pair @p p (its multipliers can be updated). */
-    PenaltyLaw &
+    ContactLaw &
     law(const unsigned int p)
     {
       return laws[p];
     }
 
-    const PenaltyLaw &
+    const ContactLaw &
     law(const unsigned int p) const
     {
       return laws[p];
@@ -89,7 +89,7 @@ namespace ddcontact
     reset_laws();
 
     /** The pressure is the solver's nodal multiplier
-     * (PenaltyLaw::set_solver_pressure()), for the laws of reset_laws()
+     * (ContactLaw::set_solver_pressure()), for the laws of reset_laws()
      * on. */
     void
     set_pressure_from_solver(bool from_solver);
@@ -144,7 +144,7 @@ namespace ddcontact
     std::vector<ElasticBody<2> *> bodies;
     std::vector<ContactPair *>    pairs;
     const BodyDistribution       &distribution;
-    std::vector<PenaltyLaw>       laws;
+    std::vector<ContactLaw>       laws;
     bool                          solver_pressure = false;
   };
 } // namespace ddcontact

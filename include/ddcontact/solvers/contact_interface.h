@@ -46,7 +46,7 @@ namespace ddcontact
    * the pressure p (W the weights of the contact integral), K =
    * blockdiag(K_a), M = diag(m_i) (M = W for points). f~_n = f_n + theta
    * lambda is the gap shifted by the augmented Lagrangian's multipliers
-   * (PenaltyLaw::shifted_gap()).
+   * (ContactLaw::shifted_gap()).
    *
    * M S is symmetric positive semidefinite: S is self-adjoint in the inner
    * product (x, y)_M = sum_i m_i x_i y_i. Every application of S is one set

@@ -52,7 +52,7 @@ namespace ddcontact
    * M), so that S_AA is positive definite and the same Newton steps
    * converge; no Uzawa loop runs. The pressure is then the piecewise
    * linear multiplier field, handed to the pairs' laws
-   * (PenaltyLaw::set_contact_pressure()) for the output and the
+   * (ContactLaw::set_contact_pressure()) for the output and the
    * estimator.
    *
    * Penalty continuation (Penalty continuation = true, from zero pressure

@@ -44,7 +44,7 @@ namespace ddcontact
   enum class InitialGuess
   {
     zero,
-    elastic_layer // "winkler"
+    elastic_layer // "elastic-layer" (the Winkler model)
   };
 
   DDCONTACT_DECLARE_SELECTION(ContactSolverType)

@@ -82,7 +82,7 @@ namespace ddcontact
      * the gap shifted by its multipliers, f_n + theta lambda (the
      * augmented Lagrangian's pressure min(0, lambda + g/theta) is the
      * penalty pressure of that gap). On the nodes the pressure p is handed
-     * to the pairs' laws (PenaltyLaw::set_contact_pressure()) for the
+     * to the pairs' laws (ContactLaw::set_contact_pressure()) for the
      * output, the force and the estimator, as dd-newton does. Returns
      * true (converged) or throws.
      */

@@ -1,15 +1,15 @@
-#include <ddcontact/contact/penalty_law.h>
+#include <ddcontact/contact/contact_law.h>
 
 namespace ddcontact
 {
-  PenaltyLaw::PenaltyLaw(const ContactPair &pair)
+  ContactLaw::ContactLaw(const ContactPair &pair)
     : pair(pair)
   {
     reset();
   }
 
   void
-  PenaltyLaw::reset()
+  ContactLaw::reset()
   {
     lambda.assign(pair.points().size(), 0.);
     peak = 0;
@@ -38,7 +38,7 @@ namespace ddcontact
   }
 
   void
-  PenaltyLaw::transfer_to_new_points()
+  ContactLaw::transfer_to_new_points()
   {
     std::vector<Point<2>> points;
     for (const auto &p : pair.points())
@@ -48,7 +48,7 @@ namespace ddcontact
   }
 
   std::vector<double>
-  PenaltyLaw::pressure(const std::vector<double> &g) const
+  ContactLaw::pressure(const std::vector<double> &g) const
   {
     AssertDimension(g.size(), lambda.size());
     std::vector<double> sigma(g.size());
@@ -58,14 +58,14 @@ namespace ddcontact
   }
 
   void
-  PenaltyLaw::set_multipliers(const std::vector<double> &sigma_n)
+  ContactLaw::set_multipliers(const std::vector<double> &sigma_n)
   {
     AssertDimension(sigma_n.size(), lambda.size());
     lambda = sigma_n;
   }
 
   void
-  PenaltyLaw::set_contact_pressure(const std::vector<double> &sigma_n,
+  ContactLaw::set_contact_pressure(const std::vector<double> &sigma_n,
                                    const double               peak_pressure)
   {
     Assert(from_solver, ExcMessage("only with set_solver_pressure()"));

@@ -1,5 +1,5 @@
-#ifndef ddcontact_penalty_law_h
-#define ddcontact_penalty_law_h
+#ifndef ddcontact_contact_law_h
+#define ddcontact_contact_law_h
 
 #include <deal.II/base/point.h>
 
@@ -36,10 +36,10 @@ namespace ddcontact
    * from g: lambda is then the pressure itself, set by the solver
    * (set_contact_pressure()), and the gap is not shifted.
    */
-  class PenaltyLaw
+  class ContactLaw
   {
   public:
-    explicit PenaltyLaw(const ContactPair &pair);
+    explicit ContactLaw(const ContactPair &pair);
 
     /** lambda = 0 at the pair's current points. */
     void

@@ -1,12 +1,12 @@
 // DESCRIPTION: the contact law (20), sigma_n = min(0, lambda + g/theta), of
-// PenaltyLaw against values worked out by hand: no pressure where the gap
+// ContactLaw against values worked out by hand: no pressure where the gap
 // is open, slope 1/theta where it is closed, continuity at the kink, the
 // multiplier's shift of the kink and the shifted gap (augmented
 // Lagrangian), the Uzawa update, reset, and the piecewise constant
 // transfer of the multipliers to the points of a refined zone
 #include <ddcontact/body/elastic_body.h>
+#include <ddcontact/contact/contact_law.h>
 #include <ddcontact/contact/contact_pair.h>
-#include <ddcontact/contact/penalty_law.h>
 
 #include "test_tools.h"
 
@@ -62,7 +62,7 @@ namespace
   /** Whether every multiplier of @p law is @p left at x < 2 and @p right
    * at x > 2 (no contact point lies at x = 2: Gauss points only). */
   bool
-  is_step(const PenaltyLaw  &law,
+  is_step(const ContactLaw  &law,
           const ContactPair &pair,
           const double       left,
           const double       right)
@@ -103,7 +103,7 @@ main(int argc, char **argv)
   ContactPair pair(
     pair_parameters(PenaltyType::absolute, 0.5), upper, lower, Constants());
   pair.setup();
-  PenaltyLaw  law(pair);
+  ContactLaw  law(pair);
   const auto &points = pair.points();
 
   std::cout << "Setup:" << std::endl;
@@ -118,7 +118,7 @@ main(int argc, char **argv)
       pair_parameters(PenaltyType::relative, 0.05), upper, lower, Constants());
     relative_pair.setup();
     check("relative penalty: theta = 0.05 H / E_1 = 2.381e-7",
-          relative(PenaltyLaw(relative_pair).theta(), 0.05 / 2.1e5),
+          relative(ContactLaw(relative_pair).theta(), 0.05 / 2.1e5),
           1e-14);
   }
   check(std::all_of(law.multipliers().begin(),
@@ -245,7 +245,7 @@ main(int argc, char **argv)
   std::vector<double> smooth;
   for (const auto &p : points)
     smooth.push_back(-0.01 * p.x[0]);
-  PenaltyLaw smooth_law(pair);
+  ContactLaw smooth_law(pair);
   smooth_law.set_multipliers(smooth);
 
   upper.get_triangulation().refine_global(1);
