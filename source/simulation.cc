@@ -87,13 +87,7 @@ namespace ddcontact
     // A floating body (ElasticBody::is_floating()) is held by contact
     // alone; without a contact pair nothing holds it.
     for (const auto &body : bodies)
-      if (body->is_floating() && std::none_of(parameters.contact_pairs.begin(),
-                                              parameters.contact_pairs.end(),
-                                              [&](const auto &p) {
-                                                return p.body_1 ==
-                                                         body->name() ||
-                                                       p.body_2 == body->name();
-                                              }))
+      if (body->is_floating() && !parameters.in_contact_pair(body->name()))
         throw InputError("Body " + body->name() +
                          "/Dirichlet: the body is in no contact pair, so "
                          "nothing holds its free " +
@@ -261,7 +255,9 @@ namespace ddcontact
     setup_strategy();
     step = "the first solve";
     solve();
-    write_results();
+    if (!adaptation)
+      output_results(0);
+    report.write_final(results());
 
     timer.print_summary();
     pcout << "wall time " << std::fixed << std::setprecision(2)
@@ -294,37 +290,4 @@ namespace ddcontact
     }
   }
 
-  void
-  Simulation::write_results()
-  {
-    std::string status = "completed", shortfall;
-    if (contact_solver)
-    {
-      report.write_history(contact_solver->history());
-      report.write_contact_profiles(results(), "");
-      report.print_contact_states(results());
-      // "converged" only if the augmented Lagrangian met its tolerance too.
-      shortfall = contact_solver->augmented_lagrangian_shortfall();
-      status    = shortfall.empty() ? "converged" : "stalled";
-    }
-    if (!adaptation)
-      output_results(0);
-    // A Target error that the adaptation stopped above is a shortfall of
-    // the run, named in summary.json and by the exit code 5.
-    const double target   = parameters.adaptation.target_error;
-    const double estimate = relative_energy_error_estimate(get_adaptations());
-    const bool   missed =
-      adaptation && target > 0 && estimate > target && shortfall.empty();
-    if (missed)
-      status = "target_not_reached";
-    report.write_summary(results(), status);
-    report.print_reactions();
-    report.print_warnings();
-    if (!shortfall.empty())
-      throw DivergenceError(shortfall);
-    if (missed)
-      for (const auto &warning : report.summary().at("warnings"))
-        if (warning.get<std::string>().rfind("Adaptation/Target error", 0) == 0)
-          throw TargetNotReachedError(warning.get<std::string>());
-  }
 } // namespace ddcontact

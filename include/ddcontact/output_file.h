@@ -41,6 +41,26 @@ namespace ddcontact
       return out;
     }
 
+    /** Call @p writer with the stream. A writer that gives up on a failed
+     * stream (deal.II's DataOut throws ExcIO on a full disk) is reported
+     * as commit() reports a failed write: a WriteError naming the file. */
+    template <typename Writer>
+    void
+    write(const Writer &writer)
+    {
+      try
+      {
+        writer(out);
+      }
+      catch (...)
+      {
+        if (!out.fail())
+          throw;
+        commit(); // throws the WriteError
+        throw WriteError("cannot write '" + filename + "'");
+      }
+    }
+
     /** Flush, check every write, close and rename to the file's name;
      * throws WriteError naming the file if anything failed. */
     void

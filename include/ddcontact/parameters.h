@@ -57,6 +57,16 @@ namespace ddcontact
 
     void
     parse(ParameterHandler &prm);
+
+    /** Whether body @p name is in a contact pair. */
+    bool
+    in_contact_pair(const std::string &name) const
+    {
+      for (const auto &pair : contact_pairs)
+        if (pair.body_1 == name || pair.body_2 == name)
+          return true;
+      return false;
+    }
   };
 
   /**

@@ -122,12 +122,6 @@ namespace ddcontact
     void
     solve();
 
-    /** The files of a finished solve, and its status: summary.json,
-     * history.csv, the contact profiles; throws on a shortfall (the
-     * augmented Lagrangian's tolerance, Adaptation/Target error). */
-    void
-    write_results();
-
     /** After a DivergenceError or an interruption: history.csv, the
      * contact profiles, the VTU/PVD of the last iterate (if Output/Write
      * vtu) and summary.json with @p status ("diverged", "not_converged",

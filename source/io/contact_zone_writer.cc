@@ -148,17 +148,22 @@ namespace ddcontact
     name << "contact_" << pair.name() << '-' << std::setw(4)
          << std::setfill('0') << step << ".vtu";
     OutputFile out(directory + "/" + name.str());
-    DataOutBase::write_vtu(build_patches(pair, state, multipliers),
-                           names,
-                           vectors,
-                           vtk_flags(),
-                           out.stream());
+    out.write(
+      [&](std::ostream &s)
+      {
+        DataOutBase::write_vtu(build_patches(pair, state, multipliers),
+                               names,
+                               vectors,
+                               vtk_flags(),
+                               s);
+      });
     out.commit();
 
     auto &pair_records = records[pair.name()];
     pair_records.emplace_back(time, name.str());
     OutputFile pvd(directory + "/contact_" + pair.name() + ".pvd");
-    DataOutBase::write_pvd_record(pvd.stream(), pair_records);
+    pvd.write([&](std::ostream &s)
+              { DataOutBase::write_pvd_record(s, pair_records); });
     pvd.commit();
   }
 } // namespace ddcontact

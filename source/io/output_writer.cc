@@ -196,7 +196,7 @@ namespace ddcontact
         {
           OutputFile out(directory + "/" + name + "." +
                          std::to_string(this_process) + ".vtu");
-          data_out.write_vtu(out.stream());
+          out.write([&](std::ostream &s) { data_out.write_vtu(s); });
           out.commit();
         }
       }
@@ -204,14 +204,15 @@ namespace ddcontact
       {
         pieces.push_back(name + ".vtu");
         OutputFile out(directory + "/" + pieces.back());
-        data_out.write_vtu(out.stream());
+        out.write([&](std::ostream &s) { data_out.write_vtu(s); });
         out.commit();
       }
       // Group the bodies of this step; every piece has the same fields.
       if (root && b + 1 == bodies.size())
       {
         OutputFile out(directory + "/" + group);
-        data_out.write_pvtu_record(out.stream(), pieces);
+        out.write([&](std::ostream &s)
+                  { data_out.write_pvtu_record(s, pieces); });
         out.commit();
       }
     }
@@ -220,7 +221,8 @@ namespace ddcontact
 
     records.emplace_back(time, group);
     OutputFile pvd(directory + "/solution.pvd");
-    DataOutBase::write_pvd_record(pvd.stream(), records);
+    pvd.write([&](std::ostream &s)
+              { DataOutBase::write_pvd_record(s, records); });
     pvd.commit();
   }
 } // namespace ddcontact

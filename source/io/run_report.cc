@@ -659,6 +659,38 @@ namespace ddcontact
   }
 
   void
+  RunReport::write_final(const Results &results)
+  {
+    std::string status = "completed", shortfall;
+    if (const auto *solver = results.contact_solver)
+    {
+      write_history(solver->history());
+      write_contact_profiles(results, "");
+      print_contact_states(results);
+      // "converged" only if the augmented Lagrangian met its tolerance too.
+      shortfall = solver->augmented_lagrangian_shortfall();
+      status    = shortfall.empty() ? "converged" : "stalled";
+    }
+    // A Target error that the adaptation stopped above is a shortfall of
+    // the run, named in summary.json and by the exit code 5.
+    const double target   = parameters.adaptation.target_error;
+    const double estimate = relative_energy_error_estimate(results.adaptations);
+    const bool   missed   = !results.adaptations.empty() && target > 0 &&
+                        estimate > target && shortfall.empty();
+    if (missed)
+      status = "target_not_reached";
+    write_summary(results, status);
+    print_reactions();
+    print_warnings();
+    if (!shortfall.empty())
+      throw DivergenceError(shortfall);
+    if (missed)
+      for (const auto &warning : summary().at("warnings"))
+        if (warning.get<std::string>().rfind("Adaptation/Target error", 0) == 0)
+          throw TargetNotReachedError(warning.get<std::string>());
+  }
+
+  void
   RunReport::print_warnings() const
   {
     for (const auto &warning : summary_json.at("warnings"))

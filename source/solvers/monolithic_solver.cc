@@ -38,6 +38,7 @@ namespace ddcontact
     adopt_current_iterate();
     IterationRecord record;
     record.iteration = records.size() + 1;
+    record.residual  = final_residual;
     measure_contact(problem.current_iterate(), record);
     record.time = timer.wall_time();
     add_record(record);
@@ -379,6 +380,12 @@ namespace ddcontact
     // The bodies get the last iterate also when the active set did not
     // settle, so that the output of the failed run shows it (not zero).
     store_iterate(u, p);
+    // The Newton residual relative to that of the zero iterate, for the
+    // history (round-off once the active set has settled).
+    const double zero_residual =
+      residual_norm(Vector<double>(u.size()), PointVector(p.size(), 0.));
+    final_residual =
+      residual_norm(u, p) / (zero_residual > 0 ? zero_residual : 1.);
     const std::string unsettled =
       "the monolithic Newton solver did not settle its active set in " +
       std::to_string(max_iterations) + " iterations";

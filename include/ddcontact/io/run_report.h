@@ -101,6 +101,17 @@ namespace ddcontact
     void
     write_summary(const Results &results, const std::string &status);
 
+    /**
+     * The end of a solve that returned: history.csv, the contact profiles
+     * and states, and summary.json with the status it earned: "completed"
+     * (no contact), "converged", "stalled" (the augmented Lagrangian's
+     * tolerance missed: DivergenceError thrown after writing) or
+     * "target_not_reached" (above Adaptation/Target error:
+     * TargetNotReachedError thrown after writing). Collective.
+     */
+    void
+    write_final(const Results &results);
+
     /** The reaction of every Dirichlet id of every body in the summary
      * last written, one line each. */
     void

@@ -178,6 +178,7 @@ namespace ddcontact
     const bool                           on_nodes;
     const unsigned int                   max_iterations;
     unsigned int                         n_newton_steps = 0;
+    double                               final_residual = 0;
     ContactInterface                     interface;
     std::vector<types::global_dof_index> offset;
     AffineConstraints<double>            constraints;
