@@ -46,13 +46,11 @@ namespace ddcontact
   }
 
   void
-  MonolithicContactSolver::stop_at_iteration_limit(
-    const std::string &what) const
+  MonolithicContactSolver::stop_at_iteration_limit(const std::string &) const
   {
-    throw NotConvergedError(what +
-                            " (monolithic Newton solves with Uzawa "
-                            "updates) reached Domain "
-                            "decomposition/Max iterations (" +
+    // The caller's label names a DD loop; here each step is a whole solve.
+    throw NotConvergedError("the Uzawa loop of the monolithic solver "
+                            "reached Domain decomposition/Max iterations (" +
                             std::to_string(parameters.max_iterations) +
                             " solves); raise it, or Domain "
                             "decomposition/AL tolerance");

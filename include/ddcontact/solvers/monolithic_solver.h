@@ -90,7 +90,8 @@ namespace ddcontact
     step() override;
 
     /** Reached only by Uzawa updates beyond Domain decomposition/Max
-     * iterations (each step is a whole solve). */
+     * iterations (each step is a whole solve), whatever loop the caller
+     * names. */
     [[noreturn]] void
     stop_at_iteration_limit(const std::string &what) const override;
 
