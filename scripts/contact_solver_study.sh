@@ -6,7 +6,7 @@
 #   dd-newton   the semismooth Newton method on the contact pressure,
 #   dd          the paper's DD with Anderson acceleration,
 #   monolithic  the semismooth Newton method on (16) (reference force),
-# all to eps_residual = 1e-8, and writes doc/contact-solvers.csv:
+# all to Tolerance = 1e-8, and writes doc/contact-solvers.csv:
 # body-solve sets (one solve of every body: a "DD iteration"), the
 # preconditioner's solve sets, Newton steps, CG iterations, the contact
 # force (summed over the pairs), the contact-solve wall time and the exit
@@ -44,17 +44,17 @@ run() { # scene c r solver
   local scene=$1 c=$2 r=$3 solver=$4 args=() p
   for p in $(pairs "$scene"); do args+=(--set "Contact pair $p/Penalty=$c"); done
   case $solver in
-    dd) args+=(--set "Domain decomposition/Solver=dd" --set "Domain decomposition/Relaxation=anderson") ;;
-    *) args+=(--set "Domain decomposition/Solver=$solver") ;;
+    dd) args+=(--set "Contact solver/Solver=dd" --set "Contact solver/Domain decomposition/Relaxation=anderson") ;;
+    *) args+=(--set "Contact solver/Solver=$solver") ;;
   esac
   rm -rf "$out/r"
   mesh "$scene" "$r"
   timeout 120 "$exe" "$(prm "$scene")" --output "$out/r" \
     --set "Adaptation/Mode=none" --set "Output/Write vtu=false" \
-    --set "Domain decomposition/eps_residual=1e-8" \
+    --set "Contact solver/Tolerance=1e-8" \
     --set "Contact pair S/Formulation=penalty" \
-    --set "Domain decomposition/Max Newton iterations=40" \
-    --set "Domain decomposition/Max iterations=2000" \
+    --set "Contact solver/DD-Newton/Max Newton iterations=40" \
+    --set "Contact solver/Max iterations=2000" \
     "${mesh_args[@]}" "${args[@]}" > "$out/log" 2>&1
   local code=$?
   python3 - "$out/r/summary.json" "$scene,$c,$r,$solver,$code" >> "$csv" <<'EOF'

@@ -16,7 +16,7 @@ value() { python3 -c "import json,sys; d=json.load(open('$1')); print($2)"; }
 run() { # refinement relaxation threads
   "$exe" prm/paper_two_bodies.prm --output "$out/r" \
     --set "Body omega1/Mesh/Initial refinement=$1" --set "Body omega2/Mesh/Initial refinement=$1" \
-    --set "Domain decomposition/Relaxation=$2" --set "Threads=$3" \
+    --set "Contact solver/Domain decomposition/Relaxation=$2" --set "Threads=$3" \
     --set "Adaptation/Mode=none" --set "Output/Write vtu=false" > "$out/log"
   s="$out/r/summary.json"
   echo "$1,$2,$3,$(value $s "d['dd_iterations']"),$(value $s "d['timings']['contact solve']"),$(value $s "d['points'][0]['u'][0]"),$(value $s "d['points'][0]['u'][1]"),$(value $s "d['contact'][0]['max_pressure']")" | tee -a "$csv"

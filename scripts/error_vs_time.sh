@@ -74,8 +74,8 @@ mkdir -p "$out"
 common=(--set "Output/Write vtu=false" --set "Adaptation/Write every mesh=false")
 # Exact contact: dd-newton with nodal multipliers (the Uzawa loop of the DD
 # stops at about 1e-3 of the approach on these non-matching meshes).
-AL=(--set "Contact pair S/Formulation=exact" --set "Domain decomposition/Solver=dd-newton")
-relax() { echo "Domain decomposition/Relaxation=$1"; }
+AL=(--set "Contact pair S/Formulation=exact" --set "Contact solver/Solver=dd-newton")
+relax() { echo "Contact solver/Domain decomposition/Relaxation=$1"; }
 
 # ------------------------------------------------------------ reference
 # The energy reference: monolithic Newton on the meshes of nested FEM-BEM
@@ -92,7 +92,7 @@ energy_reference_runs() {
       --set "Adaptation/Mode=nested" --set "Adaptation/Estimator=fem-bem-scaled" \
       --set "Adaptation/Marking=doerfler" --set "Adaptation/Fraction=0.5" \
       --set "Adaptation/Bodies=omega1, omega2" --set "Adaptation/Max level=12" \
-      --set "Adaptation/Max cycles=$n" --set "Domain decomposition/Solver=monolithic" \
+      --set "Adaptation/Max cycles=$n" --set "Contact solver/Solver=monolithic" \
       --set "Body omega1/Element/Degree=2" --set "Body omega2/Element/Degree=2" \
       > "$refruns/$name.log" 2>&1 || { echo "reference run $name failed" >&2; exit 1; }
   done
@@ -114,7 +114,7 @@ if [ "$reference" = 1 ] || [ "$energy_reference" = 1 ]; then
     [ -f "$refruns/$name/summary.json" ] && continue
     echo "== $name"
     "$exe" "$scene" --output "$refruns/$name" "${common[@]}" \
-      --set "Adaptation/Mode=none" --set "Domain decomposition/Solver=monolithic" \
+      --set "Adaptation/Mode=none" --set "Contact solver/Solver=monolithic" \
       --set "Contact pair S/Penalty=$c" \
       --set "Body omega1/Element/Degree=2" --set "Body omega2/Element/Degree=2" \
       --set "Body omega1/Mesh/Initial refinement=$r" --set "Body omega2/Mesh/Initial refinement=$r" \
@@ -177,7 +177,7 @@ fi
 # Uniform refinement of both bodies (Omega_1 triangles and Omega_2
 # quadrilaterals on the same 16 x 4 x 4^r squares), fixed meshes.
 none=(--set "Adaptation/Mode=none")
-mono=(--set "Domain decomposition/Solver=monolithic")
+mono=(--set "Contact solver/Solver=monolithic")
 for r in $U_MONO; do lv $r; run "uni-mono-p1-r$r" uniform-monolithic-P1 penalty 1 1 "r=$r" "${none[@]}" "${LV[@]}" "${mono[@]}"; done
 dg 2
 for r in $U_P2; do lv $r; run "uni-mono-p2-r$r" uniform-monolithic-P2 penalty 2 2 "r=$r" "${none[@]}" "${LV[@]}" "${mono[@]}" "${DG[@]}"; done
@@ -247,7 +247,7 @@ for m in $P_CAP; do run "fembem-printed-m$m" fembem-printed-combined-P1 penalty 
 if [ "$quick" = 1 ]; then H_BOX="3"; else H_BOX="3 4 5 6 7 8"; fi
 run_scene="$root/prm/hertz.prm"
 for b in $H_BOX; do run "hertz-exact-b$b" hertz-DD-newton-exact hertz 1 1 "box refinement=$b" --set "Body upper/Mesh/Box refinement=$b" --set "Body lower/Mesh/Box refinement=$b"; done
-for b in $H_BOX; do run "hertz-penalty-b$b" hertz-DD-anderson-penalty hertz 1 1 "box refinement=$b" --set "Domain decomposition/Solver=dd" --set "Domain decomposition/Relaxation=anderson" --set "Body upper/Mesh/Box refinement=$b" --set "Body lower/Mesh/Box refinement=$b" --set "Contact pair S/Formulation=penalty"; done
+for b in $H_BOX; do run "hertz-penalty-b$b" hertz-DD-anderson-penalty hertz 1 1 "box refinement=$b" --set "Contact solver/Solver=dd" --set "Contact solver/Domain decomposition/Relaxation=anderson" --set "Body upper/Mesh/Box refinement=$b" --set "Body lower/Mesh/Box refinement=$b" --set "Contact pair S/Formulation=penalty"; done
 unset run_scene
 
 echo "machine load after: $(uptime)" | tee -a "$out/load.txt"

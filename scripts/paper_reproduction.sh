@@ -46,27 +46,27 @@ run() { # name, then --set overrides
 # residual test; its pressure is the reference line of Fig. 9 and its
 # u(0.5, 0.75) the converged value of Fig. 8.
 run reference --set "Adaptation/Mode=none" --set "Body omega2/Mesh/Initial refinement=5" \
-  --set "Domain decomposition/Relaxation=anderson" --set "Domain decomposition/eps_residual=1e-9" \
+  --set "Contact solver/Domain decomposition/Relaxation=anderson" --set "Contact solver/Tolerance=1e-9" \
   --set "Output/Write vtu=false"
 
 # Fig. 8 and 10: the combined algorithm for a range of thresholds delta.
 for delta in 0.2 0.14 0.1 0.07 0.05 0.035 0.025; do
   run "delta_$delta" --set "Adaptation/Delta=$delta" --set "Adaptation/Write every mesh=false" \
-    --set "Domain decomposition/Relaxation=anderson" --set "Output/Write vtu=false"
+    --set "Contact solver/Domain decomposition/Relaxation=anderson" --set "Output/Write vtu=false"
 done
 
 # Fig. 4, 7 and 9: the paper's settings at delta = 0.1 -- fixed gamma = 0.02,
 # the paper's increment test eps_u = 0.0015 -- with the contact profiles of
 # every iteration and the mesh of every adaptation step.
-run paper_delta_0.1 --set "Adaptation/Delta=0.1" --set "Domain decomposition/Stopping test=paper" \
-  --set "Domain decomposition/Write every iteration=true"
+run paper_delta_0.1 --set "Adaptation/Delta=0.1" --set "Contact solver/Domain decomposition/Stopping test=paper" \
+  --set "Contact solver/Write every iteration=true"
 # The same to the residual test (the converged answer on the same meshes).
 run paper_delta_0.1_residual --set "Adaptation/Delta=0.1" --set "Output/Write vtu=false"
 
 # The estimator exactly as printed, (27), at the paper's delta = 0.1: it
 # marks (nearly) every cell; the cell cap stops it.
 run printed_delta_0.1 --set "Adaptation/Estimator=fem-bem" --set "Adaptation/Delta=0.1" \
-  --set "Adaptation/Max cells=20000" --set "Domain decomposition/Relaxation=anderson" \
+  --set "Adaptation/Max cells=20000" --set "Contact solver/Domain decomposition/Relaxation=anderson" \
   --set "Output/Write vtu=false" --set "Adaptation/Write every mesh=false"
 
 $PY scripts/plot_paper_figures.py "$runs" doc/paper-reproduction

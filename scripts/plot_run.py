@@ -588,10 +588,10 @@ class Plotter:
                          label="residual $||\\tilde u^{k+1} - u^k|| / ||\\tilde u^{k+1}||$")
         axes[0].semilogy(k, positive([r["increment"] for r in rows]), "--",
                          label="increment $||u^{k+1} - u^k|| / ||u^{k+1}||$")
-        eps = number(self.run.parameters.get("Domain decomposition/eps_residual"))
+        eps = number(self.run.parameters.get("Contact solver/Tolerance"))
         if eps:
             axes[0].axhline(eps, color="k", linewidth=0.8, linestyle=":",
-                            label=f"eps_residual = {eps:g}")
+                            label=f"Tolerance = {eps:g}")
         axes[0].set_ylabel("relative change on S (dimensionless)")
         axes[0].legend(fontsize=7)
         summary = self.run.summary

@@ -33,7 +33,7 @@ common=(prm/paper_two_bodies.prm
         --set "Adaptation/Mode=none" --set "Output/Write vtu=false"
         --set "Body omega1/Mesh/Initial refinement=$r"
         --set "Body omega2/Mesh/Initial refinement=$r"
-        --set "Domain decomposition/Relaxation=anderson")
+        --set "Contact solver/Domain decomposition/Relaxation=anderson")
 run() { # name, processes, threads, further --set options
   echo "== $1"
   # --bind-to none: Open MPI binds each of up to two processes to one core,

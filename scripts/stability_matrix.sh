@@ -34,9 +34,9 @@ uni=prm/stability/uniaxial.prm
 # The paper's scene on fixed meshes (16 x 4 quads below, 64 x 16 x 2
 # triangles above), converged far below the discretisation error.
 P=(--set "Adaptation/Mode=none" --set "Output/Write vtu=false"
-  --set "Domain decomposition/Relaxation=anderson"
-  --set "Domain decomposition/eps_residual=1e-10")
-MONO=(--set "Domain decomposition/Solver=monolithic")
+  --set "Contact solver/Domain decomposition/Relaxation=anderson"
+  --set "Contact solver/Tolerance=1e-10")
+MONO=(--set "Contact solver/Solver=monolithic")
 
 # run NAME GROUP REFERENCE TOLERANCE "DESCRIPTION" SCENE [--set ...]
 run() {
@@ -64,8 +64,8 @@ for c in 1e-8 1e-6 1e-4 1e-2 0.05 1 10; do
 done
 for c in 1e-4 0.05 10; do
   run "pen_c${c}_fixed0.02" penalty closed 1e-6 "uniaxial, c=$c, fixed gamma=0.02" $uni \
-    --set "Contact pair S/Penalty=$c" --set "Domain decomposition/Relaxation=fixed" \
-    --set "Domain decomposition/Gamma=0.02" --set "Domain decomposition/Max iterations=20000"
+    --set "Contact pair S/Penalty=$c" --set "Contact solver/Domain decomposition/Relaxation=fixed" \
+    --set "Contact solver/Domain decomposition/Gamma=0.02" --set "Contact solver/Max iterations=20000"
 done
 for c in 1e-8 1e-6 1e-4 0.05 10; do
   run "paper_c${c}_mono" penalty - - "paper scene, c=$c, monolithic" $paper "${P[@]}" \
@@ -75,23 +75,23 @@ for c in 1e-8 1e-6 1e-4 0.05 10; do
 done
 
 # --- relaxation on the paper's scene (gamma* ~ 0.056 estimated), against
-#     the monolithic solver; eps_residual 1e-8 for the slow fixed runs.
+#     the monolithic solver; Tolerance 1e-8 for the slow fixed runs.
 run paper_mono relaxation - - "paper scene, monolithic reference" $paper "${P[@]}" "${MONO[@]}"
 for g in 1e-3 1e-2 0.03 0.05 0.06 0.1 0.5 1; do
   ref=paper_mono; tol=1e-5
   case $g in 0.1|0.5|1) ref=report; tol=- ;; esac
   run "relax_fixed${g}" relaxation "$ref" "$tol" "paper scene, fixed gamma=$g" $paper "${P[@]}" \
-    --set "Domain decomposition/Relaxation=fixed" --set "Domain decomposition/Gamma=$g" \
-    --set "Domain decomposition/eps_residual=1e-8" --set "Domain decomposition/Max iterations=50000"
+    --set "Contact solver/Domain decomposition/Relaxation=fixed" --set "Contact solver/Domain decomposition/Gamma=$g" \
+    --set "Contact solver/Tolerance=1e-8" --set "Contact solver/Max iterations=50000"
 done
 for r in auto aitken anderson; do
   run "relax_${r}" relaxation paper_mono 1e-6 "paper scene, $r" $paper "${P[@]}" \
-    --set "Domain decomposition/Relaxation=$r"
+    --set "Contact solver/Domain decomposition/Relaxation=$r"
 done
 run relax_anderson_c1e-8 relaxation paper_c1e-8_mono 1e-5 "paper scene, c=1e-8, anderson depth 30" $paper "${P[@]}" \
-  --set "Contact pair S/Penalty=1e-8" --set "Domain decomposition/Anderson depth=30"
-run relax_eps1e-16 relaxation report - "paper scene, eps_residual=1e-16 (below round-off)" $paper "${P[@]}" \
-  --set "Domain decomposition/eps_residual=1e-16"
+  --set "Contact pair S/Penalty=1e-8" --set "Contact solver/Domain decomposition/Anderson depth=30"
+run relax_eps1e-16 relaxation report - "paper scene, Tolerance=1e-16 (below round-off)" $paper "${P[@]}" \
+  --set "Contact solver/Tolerance=1e-16"
 
 # --- near-incompressible: the paper's scene with both bodies of
 #     quadrilaterals (Q1, Q1 with selective reduced integration of the
@@ -159,9 +159,9 @@ done
 # The divergence message of slender_plate_c1e5 proposes fixed gamma = 0.084.
 run slender_plate_c1e5_fixed contrast slender_plate_c1e5_mono 1e-5 "plate H/L=0.01, c=1e5, fixed gamma=0.084 (as the message proposes)" \
   $paper "${P[@]}" "${S[@]}" --set "Contact pair S/Penalty=1e5" \
-  --set "Domain decomposition/Relaxation=fixed" --set "Domain decomposition/Gamma=0.084"
+  --set "Contact solver/Domain decomposition/Relaxation=fixed" --set "Contact solver/Domain decomposition/Gamma=0.084"
 run slender_plate_fixed contrast report - "plate H/L=0.01, fixed gamma=0.02" $paper "${P[@]}" "${S[@]}" \
-  --set "Domain decomposition/Relaxation=fixed"
+  --set "Contact solver/Domain decomposition/Relaxation=fixed"
 
 # --- contact extremes.
 run uni_no_contact contact closed 1e-12 "uniaxial, g0=2e-3 > Delta: no contact" $uni --set "Constants=Delta=1.366e-3, g0=2e-3"
@@ -202,7 +202,7 @@ if [ "${STABILITY_HUGE:-0}" = 1 ]; then
     --set "Body omega1/Element/Cell type=quadrilateral" \
     --set "Body omega1/Mesh/Subdivisions=1440, 360" --set "Body omega2/Mesh/Subdivisions=1440, 360" \
     --set "Body omega1/Solver/Type=cg-amg" --set "Body omega2/Solver/Type=cg-amg" \
-    --set "Domain decomposition/eps_residual=1e-8"
+    --set "Contact solver/Tolerance=1e-8"
 fi
 
 # --- units: the same scenes in m and Pa; u scales by 1e-2, the force per
@@ -219,7 +219,7 @@ run units_paper_cm units paper_mono 1e-6 "paper scene in cm, MPa, anderson" $pap
 run units_paper_si units units_paper_cm:1e-2:1e4 1e-6 "paper scene in m, Pa, anderson" $paper "${P[@]}" "${SIP[@]}"
 run units_paper_si_mono units units_paper_cm:1e-2:1e4 1e-6 "paper scene in m, Pa, monolithic" $paper "${P[@]}" "${SIP[@]}" "${MONO[@]}"
 run units_paper_si_fixed units units_paper_cm:1e-2:1e4 1e-5 "paper scene in m, Pa, fixed gamma=0.02" $paper "${P[@]}" "${SIP[@]}" \
-  --set "Domain decomposition/Relaxation=fixed" --set "Domain decomposition/eps_residual=1e-8"
+  --set "Contact solver/Domain decomposition/Relaxation=fixed" --set "Contact solver/Tolerance=1e-8"
 run units_paper_cm_al units - - "paper scene in cm, MPa, augmented Lagrangian" $paper "${P[@]}" \
   --set "Contact pair S/Formulation=exact"
 run units_paper_si_al units units_paper_cm_al:1e-2:1e4 1e-5 "paper scene in m, Pa, augmented Lagrangian" $paper "${P[@]}" "${SIP[@]}" \

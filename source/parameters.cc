@@ -20,6 +20,20 @@ namespace ddcontact
 
   namespace
   {
+    /** The keyword of a parameter-file line (lower case: "subsection",
+     * "set", "end", ...) and the rest of the line, comments removed. */
+    std::pair<std::string, std::string>
+    split_keyword(const std::string &line)
+    {
+      const std::string text = Utilities::trim(line.substr(0, line.find('#')));
+      std::string       keyword = text.substr(0, text.find(' '));
+      std::transform(keyword.begin(),
+                     keyword.end(),
+                     keyword.begin(),
+                     [](const unsigned char c) { return std::tolower(c); });
+      return {keyword, Utilities::trim(text.substr(keyword.size()))};
+    }
+
     /** The subsections open before line @p n of @p text ("Body a/Mesh"):
      * deal.II names only the entry whose value does not match its pattern,
      * and our own checks name the section too. */
@@ -31,21 +45,44 @@ namespace ddcontact
       std::vector<std::string> path;
       for (unsigned int i = 1; i < n && std::getline(lines, line); ++i)
       {
-        line                = Utilities::trim(line.substr(0, line.find('#')));
-        std::string keyword = line.substr(0, line.find(' '));
-        std::transform(keyword.begin(),
-                       keyword.end(),
-                       keyword.begin(),
-                       [](const unsigned char c) { return std::tolower(c); });
+        const auto [keyword, rest] = split_keyword(line);
         if (keyword == "subsection")
-          path.push_back(Utilities::trim(line.substr(keyword.size())));
-        else if (keyword == "end" && line.size() == 3 && !path.empty())
+          path.push_back(rest);
+        else if (keyword == "end" && rest.empty() && !path.empty())
           path.pop_back();
       }
       std::string section;
       for (const auto &p : path)
         section += (section.empty() ? "" : "/") + p;
       return section;
+    }
+
+    /** The top-level subsection "Domain decomposition" held every solver's
+     * entries; they moved into "Contact solver". Its first entry is refused
+     * with its new place, so that an old file fails in one line that says
+     * what to write. */
+    void
+    refuse_retired_sections(const std::string &text)
+    {
+      std::istringstream       lines(text);
+      std::string              line;
+      std::vector<std::string> path;
+      for (unsigned int n = 1; std::getline(lines, line); ++n)
+      {
+        const auto [keyword, rest] = split_keyword(line);
+        const bool retired =
+          path.size() == 1 && path[0] == "Domain decomposition";
+        if (retired && (keyword == "set" || keyword == "end"))
+          throw InputError("line " + std::to_string(n) + ": " +
+                           moved_solver_entry(
+                             keyword == "set"
+                               ? Utilities::trim(rest.substr(0, rest.find('=')))
+                               : ""));
+        if (keyword == "subsection")
+          path.push_back(rest);
+        else if (keyword == "end" && rest.empty() && !path.empty())
+          path.pop_back();
+      }
     }
 
     /** deal.II names the parsed text "<input string>"; the message names
@@ -196,8 +233,8 @@ namespace ddcontact
                       "Names of the contact pairs (comma separated); each "
                       "needs a subsection 'Contact pair <name>'.");
 
-    prm.enter_subsection("Domain decomposition");
-    DDParameters::declare(prm);
+    prm.enter_subsection("Contact solver");
+    ContactSolverParameters::declare(prm);
     prm.leave_subsection();
 
     prm.enter_subsection("Adaptation");
@@ -298,8 +335,8 @@ namespace ddcontact
                            { return b.name == name; });
     };
 
-    prm.enter_subsection("Domain decomposition");
-    dd.parse(prm);
+    prm.enter_subsection("Contact solver");
+    contact_solver.parse(prm);
     prm.leave_subsection();
 
     prm.enter_subsection("Adaptation");
@@ -308,14 +345,14 @@ namespace ddcontact
     // The combined algorithm (Fig. 2) interleaves single DD steps with the
     // refinement; the monolithic solver has no such steps.
     if (adaptation.mode == AdaptationMode::combined &&
-        dd.solver == ContactSolverType::monolithic)
+        contact_solver.solver == ContactSolverType::monolithic)
       throw InputError("Adaptation/Mode: combined needs Domain "
                        "decomposition/Solver = dd-newton or dd; use Mode = "
                        "nested with the monolithic solver");
     prm.enter_subsection("Parallel");
     parallel.parse(prm, body_names);
     prm.leave_subsection();
-    parallel.groups_for_auto = (dd.solver == ContactSolverType::dd);
+    parallel.groups_for_auto = (contact_solver.solver == ContactSolverType::dd);
     // An explicit request for p4est meshes that a quadrilateral body cannot
     // have is an error, not a silent fallback (triangles are always shared).
     if (parallel.mesh == MeshPartition::distributed && n_world_processes() > 1)
@@ -327,8 +364,9 @@ namespace ddcontact
             "' is not solved by every process (distributed meshes need "
             "Body owners = all, or a list that gives the body every "
             "process); use Mesh = auto or shared");
-    if (dd.solver == ContactSolverType::monolithic && n_world_processes() > 1)
-      throw InputError("Domain decomposition/Solver: monolithic runs on one "
+    if (contact_solver.solver == ContactSolverType::monolithic &&
+        n_world_processes() > 1)
+      throw InputError("Contact solver/Solver: monolithic runs on one "
                        "process; use Solver = dd-newton or dd under mpirun");
 
     for (const auto &b : adaptation.bodies)
@@ -389,15 +427,15 @@ namespace ddcontact
                          ", but pair " + contact_pairs.front().name + " is " +
                          selection_name(contact_pairs.front().formulation) +
                          "; all pairs of a scene take the same formulation");
-    dd.set_formulation(contact_pairs.empty() ||
-                       contact_pairs.front().formulation ==
-                         ContactFormulation::exact);
+    contact_solver.set_formulation(contact_pairs.empty() ||
+                                   contact_pairs.front().formulation ==
+                                     ContactFormulation::exact);
 
     prm.enter_subsection("Output");
     {
-      write_vtu                = prm.get_bool("Write vtu");
-      smoothed_stresses        = prm.get_bool("Smoothed stresses");
-      dd.print_every_iteration = (prm.get("Verbosity") == "full");
+      write_vtu                            = prm.get_bool("Write vtu");
+      smoothed_stresses                    = prm.get_bool("Smoothed stresses");
+      contact_solver.print_every_iteration = (prm.get("Verbosity") == "full");
       points.clear();
       for (const auto &item : split(prm.get("Points"), ';'))
       {
@@ -438,6 +476,9 @@ namespace ddcontact
         throw InputError("--set '" + assignment +
                          "': the entry path has an empty part; expected "
                          "\"Section/Entry=value\"");
+      if (path.size() == 2 && path[0] == "Domain decomposition")
+        throw InputError("--set '" + assignment +
+                         "': " + moved_solver_entry(path[1]));
       const auto value = Utilities::trim(assignment.substr(eq + 1));
       for (unsigned int i = 0; i + 1 < path.size(); ++i)
         prm.enter_subsection(path[i]);
@@ -492,6 +533,7 @@ namespace ddcontact
     SceneParameters::declare(prm, body_names, pair_names);
     try
     {
+      refuse_retired_sections(text);
       prm.parse_input_from_string(text, "", false);
     }
     catch (const std::exception &e)

@@ -132,14 +132,14 @@ namespace ddcontact
         p, find(p.body_1), find(p.body_2), parameters.constants));
       contact_pairs.back()->setup();
       pcout << describe_contact_pair(*contact_pairs.back(),
-                                     parameters.dd.exact_contact());
+                                     parameters.contact_solver.exact_contact());
     }
-    contact_solver = ContactSolver::create(parameters.dd,
+    contact_solver = ContactSolver::create(parameters.contact_solver,
                                            raw_pointers(bodies),
                                            raw_pointers(contact_pairs),
                                            *distribution,
                                            pcout);
-    if (parameters.dd.write_every_iteration)
+    if (parameters.contact_solver.write_every_iteration)
       contact_solver->set_iteration_callback(
         [this](const unsigned int k)
         {
@@ -154,14 +154,14 @@ namespace ddcontact
   {
     if (parameters.adaptation.enabled())
     {
-      adaptation =
-        std::make_unique<MeshAdaptation>(parameters.adaptation,
-                                         parameters.dd.multipliers_on_nodes(),
-                                         raw_pointers(bodies),
-                                         raw_pointers(contact_pairs),
-                                         *distribution,
-                                         timer,
-                                         pcout);
+      adaptation = std::make_unique<MeshAdaptation>(
+        parameters.adaptation,
+        parameters.contact_solver.multipliers_on_nodes(),
+        raw_pointers(bodies),
+        raw_pointers(contact_pairs),
+        *distribution,
+        timer,
+        pcout);
       report.open_statistics(bodies);
     }
     strategy = AdaptiveStrategy::create(

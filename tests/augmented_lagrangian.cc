@@ -23,7 +23,7 @@ namespace
    * by lambda <- -p (the error contracts by theta/(theta + C) = 0.027 per
    * update); the reported pressure must be the one of the reported
    * overlap, p = (Delta - overlap)/C, to the DD tolerance, and the overlap
-   * must be within the AL tolerance of the approach. Returning the
+   * must be within the Uzawa tolerance of the approach. Returning the
    * pressure of a multiplier that the iterate never saw (the error this
    * test was written for) is off by (C/theta) overlap/Delta, ~36 times the
    * tolerance.
@@ -36,7 +36,7 @@ namespace
   {
     const double Delta = 1.366e-3, E = 2.1e5, nu = 0.3, H = 1, L = 4;
     const double C            = (1 - nu * nu) * (H / E + H / E);
-    const double al_tolerance = 1e-3; // the default "AL tolerance"
+    const double al_tolerance = 1e-3; // the default "Uzawa tolerance"
 
     const auto sim =
       run_scene(scene_file,
@@ -60,7 +60,7 @@ namespace
     check(sim->get_contact_solver().n_uzawa_updates() >= 1,
           label + ": the Uzawa loop ran");
     check(overlap <= al_tolerance * Delta,
-          label + ": overlap within the AL tolerance of the approach");
+          label + ": overlap within the Uzawa tolerance of the approach");
     // The DD stops at a relative residual of 1e-10 with a condition of
     // about 40: the pressure is right to ~1e-8; 1e-7 leaves room.
     check(relative(p, (Delta - overlap) / C) < 1e-7,
@@ -77,16 +77,15 @@ main(int argc, char **argv)
 
   // 1. Fixed meshes: the DD and the monolithic Newton solver.
   check_uniaxial(uniaxial, {}, "DD, fixed mesh");
-  check_uniaxial(uniaxial,
-                 {"Domain decomposition/Solver=monolithic"},
-                 "monolithic, fixed mesh");
+  check_uniaxial(
+    uniaxial, {"Contact solver/Solver=monolithic"}, "monolithic, fixed mesh");
 
   // 2. Uniform refinement of Omega_2 (nested): the contact points of the
   //    common refinement of S move, the multipliers follow them, and the
   //    Uzawa loop starts afresh on the new mesh.
   for (const std::string solver : {"dd", "monolithic"})
     check_uniaxial(uniaxial,
-                   {"Domain decomposition/Solver=" + solver,
+                   {"Contact solver/Solver=" + solver,
                     "Adaptation/Mode=uniform",
                     "Adaptation/Bodies=omega2",
                     "Adaptation/Max cycles=2"},
@@ -121,7 +120,7 @@ main(int argc, char **argv)
                                      "Adaptation/Estimator=fem-bem-scaled",
                                      "Adaptation/Delta=0.1",
                                      "Adaptation/Max level=4"},
-                                    {"Domain decomposition/Solver=" + solver});
+                                    {"Contact solver/Solver=" + solver});
     };
     const auto dd       = run("dd");
     const auto newton   = run("monolithic");

@@ -65,8 +65,8 @@ case_ "unknown variable" "Body upper/Body force" "$base" --set "Body upper/Bound
 case_ "--set of an undeclared entry" "No such entry" "$base" --set "Body lower/No such entry=1"
 case_ "report point outside its body" "Output/Points" "$base" --set "Output/Points=lower: 9, 9"
 case_ "contact pair with unknown body" "Contact pair S" "$src/prm/paper_two_bodies.prm" --set "Contact pair S/Body 2=nobody"
-case_ "gamma outside (0, 1]" "Gamma" "$src/prm/paper_two_bodies.prm" --set "Domain decomposition/Gamma=0"
-case_ "combined with the monolithic solver" "Adaptation/Mode" "$src/prm/paper_two_bodies.prm" --set "Domain decomposition/Solver=monolithic"
+case_ "gamma outside (0, 1]" "Gamma" "$src/prm/paper_two_bodies.prm" --set "Contact solver/Domain decomposition/Gamma=0"
+case_ "combined with the monolithic solver" "Adaptation/Mode" "$src/prm/paper_two_bodies.prm" --set "Contact solver/Solver=monolithic"
 case_ "body owner names no body" "Parallel/Body owners" "$base" --set "Parallel/Body owners=lower: 0, nobody: 0"
 case_ "body owner on a missing process" "does not exist" "$base" --set "Parallel/Body owners=lower: 0, upper: 3"
 case_ "body without owner" "'upper' is not listed" "$base" --set "Parallel/Body owners=lower: 0"
@@ -94,8 +94,13 @@ case_ "Corner 1 = -inf, 0" "Mesh/Corner 1: '-inf'" "$base" --set "Body lower/Mes
 case_ "empty Output directory" "Output directory: empty" "$base" --output ""
 case_ "contact zone not among the Contact ids" "Boundary id 2: 2 is not among" "$paper" --set "Contact pair S/Boundary id 2=2"
 case_ "retired Augmented Lagrangian" "Contact pair <name>/Formulation" "$paper" --set "Domain decomposition/Augmented Lagrangian=true"
-case_ "old Initial guess name" "'winkler' is now called 'elastic-layer'" "$paper" --set "Domain decomposition/Initial guess=winkler"
+case_ "old Initial guess name" "'winkler' is now called 'elastic-layer'" "$paper" --set "Contact solver/Initial guess=winkler"
 case_ "pairs with different formulations" "Contact pair plate_on_base/Formulation: exact, but pair punch_on_plate is penalty" "$src/prm/three_bodies.prm" --set "Contact pair plate_on_base/Formulation=exact"
+# The solver entries moved from the top-level "Domain decomposition" into
+# "Contact solver" (issue 32): an old file or override names the new place
+printf 'include %s\nsubsection Domain decomposition\n  set eps_residual = 1e-8\nend\n' "$paper" >"$work/old_solver_section.prm"
+case_ "old solver subsection" "Domain decomposition/eps_residual is now Contact solver/Tolerance" "$work/old_solver_section.prm"
+case_ "old solver entry in --set" "Domain decomposition/Gamma is now Contact solver/Domain decomposition/Gamma" "$paper" --set "Domain decomposition/Gamma=0.1"
 printf 'set Bodies = a\n' >"$work/nosub.prm"
 case_ "body listed without its subsection" "Bodies: 'a' is listed, but the file has no subsection 'Body a'" "$work/nosub.prm"
 case_ "pair listed without its subsection" "Contact pairs: 'T' is listed, but the file has no subsection 'Contact pair T'" "$paper" --set "Contact pairs=S, T"
@@ -208,7 +213,7 @@ exe="$work/limited_1g.sh"
 expect_code=8 case_ "out of memory in uniform refinement" "out of memory" "$paper" \
   --set "Adaptation/Mode=uniform" --set "Adaptation/Max cells=100000000" \
   --set "Adaptation/Max level=20" --set "Adaptation/Bodies=omega1,omega2" \
-  --set "Domain decomposition/Solver=dd-newton"
+  --set "Contact solver/Solver=dd-newton"
 exe="$exe_unlimited"; rm -f "$work/huge.msh"
 fi
 
@@ -223,8 +228,8 @@ case_ "Target error = 1" "Adaptation/Target error" "$paper" --set "Adaptation/Ta
 case_ "Target error not a number" "Adaptation/Target error" "$paper" --set "Adaptation/Target error=small"
 case_ "Target error with Kelly" "Adaptation/Target error" "$paper" --set "Adaptation/Target error=0.01" --set "Adaptation/Estimator=kelly" --set "Adaptation/Marking=fraction"
 case_ "degree 3" "Degree" "$paper" --set "Body omega2/Element/Degree=3"
-case_ "Contact pressure = nodes with the DD" "Domain decomposition/Contact pressure = nodes needs Solver = dd-newton or monolithic" "$paper" --set "Domain decomposition/Contact pressure=nodes"
-case_ "Contact pressure = nodes, monolithic, augmented Lagrangian" "Domain decomposition/Contact pressure = nodes with Solver = monolithic" "$paper" --set "Domain decomposition/Contact pressure=nodes" --set "Domain decomposition/Solver=monolithic" --set "Adaptation/Mode=nested" --set "Contact pair S/Formulation=exact"
+case_ "Contact pressure = nodes with the DD" "Contact solver/Contact pressure = nodes needs Solver = dd-newton or monolithic" "$paper" --set "Contact solver/Contact pressure=nodes"
+case_ "Contact pressure = nodes, monolithic, augmented Lagrangian" "Contact solver/Contact pressure = nodes with Solver = monolithic" "$paper" --set "Contact solver/Contact pressure=nodes" --set "Contact solver/Solver=monolithic" --set "Adaptation/Mode=nested" --set "Contact pair S/Formulation=exact"
 case_ "gap NaN on part of S" "Contact pair S/Gap" "$paper" $flat --set "Contact pair S/Gap=sqrt(x)"
 case_ "gap overlap deeper than the bodies" "Contact pair S/Gap" "$paper" $flat --set "Contact pair S/Gap=-1e308"
 case_ "Neumann load NaN on part of the boundary" "Body lower/Boundary conditions/Neumann" "$base" --set "Body lower/Boundary conditions/Neumann=3: 0; sqrt(x)"
@@ -233,7 +238,7 @@ case_ "Dirichlet value infinite" "Body lower/Boundary conditions/Dirichlet" "$ba
 case_ "tiny Thickness" "Contact pair S/Thickness" "$paper" $flat --set "Contact pair S/Thickness=1e-300"
 case_ "tiny absolute penalty" "Contact pair S/Penalty" "$paper" $flat --set "Contact pair S/Penalty type=absolute" --set "Contact pair S/Penalty=1e-290"
 case_ "stiff penalty with fixed gamma (c = 1e-7)" "raise Contact pair S/Penalty" "$paper" $flat --set "Contact pair S/Penalty=1e-7"
-case_ "augmented Lagrangian that stops short (c = 100)" "augmented Lagrangian stopped" "$paper" $flat --set "Contact pair S/Penalty=100" --set "Contact pair S/Formulation=exact" --set "Domain decomposition/AL max updates=3"
+case_ "augmented Lagrangian that stops short (c = 100)" "augmented Lagrangian stopped" "$paper" $flat --set "Contact pair S/Penalty=100" --set "Contact pair S/Formulation=exact" --set "Contact solver/Uzawa/Max updates=3"
 mkdir -p "$work/inj"
 cp "$src/meshes/half_cylinder.geo" "$work/inj/x'; echo INJECTED; echo '.geo"
 "$exe" --output "$work/out" "$src/prm/hertz_cylinder.prm" --set "Output/Write vtu=false" \

@@ -51,12 +51,10 @@ main(int argc, char **argv)
   //     with a residual tolerance of 1e-13 (error ~ tolerance x condition of
   //     the iteration, ~40 here) their contact displacements agree to 1e-8.
   {
-    const auto dd =
-      run(source_dir, {"Domain decomposition/eps_residual=1e-13"});
-    const auto newton =
-      run(source_dir, {"Domain decomposition/Solver=monolithic"});
-    const auto s_dd = dd->get_contact_solver().contact_state(0);
-    const auto s_nt = newton->get_contact_solver().contact_state(0);
+    const auto dd     = run(source_dir, {"Contact solver/Tolerance=1e-13"});
+    const auto newton = run(source_dir, {"Contact solver/Solver=monolithic"});
+    const auto s_dd   = dd->get_contact_solver().contact_state(0);
+    const auto s_nt   = newton->get_contact_solver().contact_state(0);
     double     diff = 0, scale = 0;
     for (unsigned int q = 0; q < s_dd.u_1n.size(); ++q)
     {
@@ -213,7 +211,7 @@ main(int argc, char **argv)
   {
     const auto   sim = run(source_dir,
                          {"Contact pair S/Formulation=exact",
-                            "Domain decomposition/AL tolerance=1e-3"});
+                            "Contact solver/Uzawa/Tolerance=1e-3"});
     const double p = sim->get_contact_solver().contact_state(0).max_penetration;
     std::cout << "augmented Lagrangian: penetration " << p << " = "
               << p / 1.366e-3 << " of the approach, after "

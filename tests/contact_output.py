@@ -239,11 +239,11 @@ def check_paper_scene(args):
     run(args, "prm/paper_two_bodies.prm", out,
         ["Output/Write vtu=true", "Adaptation/Mode=none",
          "Body omega1/Mesh/Initial refinement=1",
-         "Domain decomposition/Relaxation=anderson",
-         "Domain decomposition/eps_residual=1e-10",
+         "Contact solver/Domain decomposition/Relaxation=anderson",
+         "Contact solver/Tolerance=1e-10",
          "Contact pair S/Formulation=exact",
          # the Uzawa loop's floor on these non-matching meshes is 1.02e-3
-         "Domain decomposition/AL tolerance=2e-3"])
+         "Contact solver/Uzawa/Tolerance=2e-3"])
     summary = json.load(open(os.path.join(out, "summary.json")))
     theta = summary["theta"][0]
     zone = contact_points(os.path.join(out, "contact_S-0000.vtu"))
@@ -301,7 +301,7 @@ def check_failed_run(args):
     out = os.path.join(args.out, "failed")
     result = run(args, "prm/stability/uniaxial.prm", out,
                  ["Output/Write vtu=true",
-                  "Domain decomposition/Max iterations=2"],
+                  "Contact solver/Max iterations=2"],
                  must_succeed=False)
     check(result.returncode != 0, "the run stops at Max iterations")
     check(os.path.exists(os.path.join(out, "contact_S-0000.vtu")) and

@@ -128,8 +128,8 @@ namespace
   const std::string blocks =
     "set Scene name = blocks\nset Bodies = block, base\n"
     "set Contact pairs = S\n"
-    "subsection Domain decomposition\n  set Solver = dd-newton\n"
-    "  set eps_residual = 1e-12\nend\n"
+    "subsection Contact solver\n  set Solver = dd-newton\n"
+    "  set Tolerance = 1e-12\nend\n"
     "subsection Contact pair S\n  set Body 1 = block\n"
     "  set Boundary id 1 = 2\n  set Body 2 = base\n  set Boundary id 2 = 3\n"
     "  set Gap type = geometric\nend\n"

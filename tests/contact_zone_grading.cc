@@ -27,7 +27,7 @@ main(int argc, char **argv)
   const auto   sim   = run_scene(source_dir + "/prm/paper_two_bodies.prm",
                              {"Output directory=contact_zone_grading_output"},
                              {"Contact pair S/Formulation=exact",
-                                  "Domain decomposition/Solver=dd-newton",
+                                  "Contact solver/Solver=dd-newton",
                                   "Body omega1/Mesh/Initial refinement=0",
                                   "Body omega2/Mesh/Initial refinement=0",
                                   "Adaptation/Bodies=omega1, omega2",

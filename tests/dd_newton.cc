@@ -18,7 +18,7 @@ using namespace ddcontact::testing;
 
 namespace
 {
-  const std::string newton = "Domain decomposition/Solver=dd-newton";
+  const std::string newton = "Contact solver/Solver=dd-newton";
 
   unsigned int
   body_solve_sets(const Simulation &s)
@@ -47,9 +47,9 @@ main(int argc, char **argv)
     const std::vector<std::string> common = {
       "Output directory=dd_newton_output",
       "Contact pair S/Penalty=" + c,
-      "Domain decomposition/eps_residual=1e-10"};
+      "Contact solver/Tolerance=1e-10"};
     const auto reference =
-      run_scene(uniaxial, common, {"Domain decomposition/Solver=monolithic"});
+      run_scene(uniaxial, common, {"Contact solver/Solver=monolithic"});
     const auto solution = run_scene(uniaxial, common, {newton});
     const auto counts   = solution->get_contact_solver().counts();
     std::cout << "c = " << c << ": force " << std::setprecision(12)
@@ -73,10 +73,8 @@ main(int argc, char **argv)
     // pointwise one, so the penalised closed form
     // p = Delta / ((1 - nu^2) (H1 / E1 + H2 / E2) + theta) holds exactly,
     // theta = c H1 / E1.
-    const auto nodal =
-      run_scene(uniaxial,
-                common,
-                {newton, "Domain decomposition/Contact pressure=nodes"});
+    const auto nodal = run_scene(
+      uniaxial, common, {newton, "Contact solver/Contact pressure=nodes"});
     const double L       = 4;
     const double p_exact = uniaxial_pressure(std::stod(c));
     std::cout << "c = " << c << ", pressure on the nodes: force "
@@ -98,7 +96,7 @@ main(int argc, char **argv)
         source_dir + "/prm/paper_two_bodies.prm",
         {"Output directory=dd_newton_output",
          "Adaptation/Mode=none",
-         "Domain decomposition/eps_residual=1e-8",
+         "Contact solver/Tolerance=1e-8",
          newton},
         {"Body omega1/Mesh/Initial refinement=" + std::to_string(1 + r),
          "Body omega2/Mesh/Initial refinement=" + std::to_string(r)});
@@ -158,7 +156,7 @@ main(int argc, char **argv)
       {
         run_scene(uniaxial,
                   {"Output directory=dd_newton_output"},
-                  {"Domain decomposition/Solver=" + solver,
+                  {"Contact solver/Solver=" + solver,
                    "Contact pair S/Penalty=100",
                    "Contact pair S/Formulation=exact"});
       });
@@ -180,28 +178,27 @@ main(int argc, char **argv)
                                1,
                                {"Adaptation/Mode=none"},
                                {"Contact pair S/Formulation=exact",
-                                "Domain decomposition/AL tolerance=2e-4"});
+                                "Contact solver/Uzawa/Tolerance=2e-4"});
       });
-    std::cout << "dd, paper scene, AL tolerance 2e-4: "
+    std::cout << "dd, paper scene, Uzawa tolerance 2e-4: "
               << message.substr(0, 160) << "..." << std::endl;
     check(
       message_names(message, {"no longer decreases", "stalled", "dd-newton"}),
-      "the floor of pointwise contact above the AL tolerance is reported");
+      "the floor of pointwise contact above the Uzawa tolerance is reported");
   }
   // 6. Nested iteration (Mode = uniform from a coarse mesh): the nodal
   //    multipliers move to the refined zone by linear interpolation, so
   //    the Newton method on the refined mesh needs about as many steps as a
   //    phase that is already settled (2 here; the piecewise constant
   //    transfer needed 5 at r = 5) and ends at the direct solve's answer on
-  //    the same mesh (both to eps_residual = 1e-10).
+  //    the same mesh (both to Tolerance = 1e-10).
   {
-    const std::vector<std::string> exact = {
-      "Output directory=dd_newton_output",
-      "Contact pair S/Formulation=exact",
-      "Domain decomposition/eps_residual=1e-10",
-      newton,
-      "Adaptation/Bodies=omega1, omega2",
-      "Adaptation/Max level=12"};
+    const std::vector<std::string> exact = {"Output directory=dd_newton_output",
+                                            "Contact pair S/Formulation=exact",
+                                            "Contact solver/Tolerance=1e-10",
+                                            newton,
+                                            "Adaptation/Bodies=omega1, omega2",
+                                            "Adaptation/Max level=12"};
     const auto direct = run_scene(source_dir + "/prm/paper_two_bodies.prm",
                                   exact,
                                   {"Adaptation/Mode=none",
@@ -243,16 +240,15 @@ main(int argc, char **argv)
   //    zone).
   for (const std::string mode : {"exact", "c = 1e-8"})
   {
-    std::vector<std::string> overrides = {
-      "Output directory=dd_newton_output",
-      "Domain decomposition/eps_residual=1e-8"};
+    std::vector<std::string> overrides = {"Output directory=dd_newton_output",
+                                          "Contact solver/Tolerance=1e-8"};
     if (mode == "exact")
       overrides.insert(overrides.end(),
                        {"Contact pair punch_on_plate/Formulation=exact",
                         "Contact pair plate_on_base/Formulation=exact"});
     else
       overrides.insert(overrides.end(),
-                       {"Domain decomposition/Contact pressure=nodes",
+                       {"Contact solver/Contact pressure=nodes",
                         "Contact pair punch_on_plate/Penalty=1e-8",
                         "Contact pair plate_on_base/Penalty=1e-8"});
     const auto sim =

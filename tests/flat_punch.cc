@@ -79,14 +79,13 @@ main(int argc, char **argv)
   // punch's ends must have dropped out (they have no orthogonal
   // projection on the punch).
   std::cout << "Both orders of the pair (DD, theta = 1e-7):" << std::endl;
-  const std::vector<std::string> dd = {
-    "Output directory=flat_punch_output",
-    "Domain decomposition/Solver=dd",
-    "Domain decomposition/eps_residual=1e-10",
-    "Contact pair S/Penalty=1e-7",
-    "Body block/Mesh/Box refinement=5"};
-  const auto punch_first_run = run_scene(scene, dd, {});
-  auto       overrides       = block_first;
+  const std::vector<std::string> dd = {"Output directory=flat_punch_output",
+                                       "Contact solver/Solver=dd",
+                                       "Contact solver/Tolerance=1e-10",
+                                       "Contact pair S/Penalty=1e-7",
+                                       "Body block/Mesh/Box refinement=5"};
+  const auto                     punch_first_run = run_scene(scene, dd, {});
+  auto                           overrides       = block_first;
   const auto block_first_run = run_scene(scene, dd, overrides);
 
   overrides.push_back("Contact pair S/Gap type=geometric");
@@ -147,7 +146,7 @@ main(int argc, char **argv)
     const auto         run =
       run_scene(scene,
                 {"Output directory=flat_punch_output",
-                 "Domain decomposition/Solver=monolithic",
+                 "Contact solver/Solver=monolithic",
                  "Contact pair S/Penalty=" +
                    Utilities::to_string(2e-8 / (1u << (level - 5))),
                  "Body block/Mesh/Box refinement=" + std::to_string(level),

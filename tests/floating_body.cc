@@ -17,7 +17,7 @@ using namespace ddcontact::testing;
 
 namespace
 {
-  const std::string newton = "Domain decomposition/Solver=dd-newton";
+  const std::string newton = "Contact solver/Solver=dd-newton";
 
   /** The vertical contact force on body 1 of the first pair. */
   double
@@ -60,7 +60,7 @@ main(int argc, char **argv)
   //    pressed by u_2 = -Delta on its top, and then by the traction
   //    q = F / L of that run's force F instead, held only by contact (its
   //    vertical translation is free). Both are the same discrete problem,
-  //    so they agree to the solvers' tolerance (eps_residual = 1e-10 times
+  //    so they agree to the solvers' tolerance (Tolerance = 1e-10 times
   //    the condition of S, about 10 here), for exact contact and for the
   //    penalty on the contact points.
   for (const std::string exact : {"true", "false"})
@@ -70,7 +70,7 @@ main(int argc, char **argv)
       newton,
       std::string("Contact pair S/Formulation=") +
         (exact == "true" ? "exact" : "penalty"),
-      "Domain decomposition/eps_residual=1e-10"};
+      "Contact solver/Tolerance=1e-10"};
     const auto         pressed = run_scene(uniaxial, common, {});
     const double       F       = vertical_force(*pressed);
     std::ostringstream traction;
@@ -120,7 +120,7 @@ main(int argc, char **argv)
                 {"Output directory=floating_body_output",
                  newton,
                  "Contact pair S/Formulation=exact",
-                 "Domain decomposition/eps_residual=1e-10"},
+                 "Contact solver/Tolerance=1e-10"},
                 {"Body omega1/Boundary conditions/Dirichlet=3: x: 0; 0",
                  "Body omega1/Boundary conditions/Neumann=3: 0; -150 * (1 + (x "
                  "- 2) / 4)"});
@@ -196,9 +196,8 @@ main(int argc, char **argv)
     std::string message = error_message<InputError>(
       [&]
       {
-        run_scene(uniaxial,
-                  common,
-                  {"Domain decomposition/Solver=dd", floating_upper, load});
+        run_scene(
+          uniaxial, common, {"Contact solver/Solver=dd", floating_upper, load});
       });
     std::cout << message << std::endl;
     check(message_names(message, {"Body omega1/Dirichlet", "dd-newton"}),

@@ -49,7 +49,7 @@ SCENES = {
         "Box refinement": "3", "Subdivisions": "12, 6",
         "Penalty": "1e-7"},
     "hertz.prm": {"Box refinement": "3", "Max iterations": "400",
-                  "AL max updates": "3"},
+                  "Max updates": "3"},
     "three_bodies.prm": {"Max iterations": "400"},
 }
 

@@ -37,7 +37,7 @@ main(int argc, char **argv)
   {
     const auto sim   = run_scene(source_dir + "/prm/stability/uniaxial.prm",
                                {"Output directory=gap_evaluation_output",
-                                  "Domain decomposition/Solver=dd-newton",
+                                  "Contact solver/Solver=dd-newton",
                                   "Contact pair S/Formulation=exact"},
                                {"Body omega2/Mesh/Subdivisions=16, 4",
                                   "Constants=Delta=1.366e-3, k=2e-5",
@@ -74,7 +74,7 @@ main(int argc, char **argv)
     const auto        sim = run_scene(source_dir + "/prm/paper_two_bodies.prm",
                                {"Output directory=gap_evaluation_output",
                                        "Adaptation/Mode=none",
-                                       "Domain decomposition/Solver=monolithic"},
+                                       "Contact solver/Solver=monolithic"},
                                {"Body omega1/Mesh/Initial refinement=1",
                                        "Body omega2/Mesh/Initial refinement=1",
                                        "Contact pair S/Gap evaluation=" + evaluation});

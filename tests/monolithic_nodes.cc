@@ -16,9 +16,9 @@ using namespace ddcontact::testing;
 
 namespace
 {
-  const std::string monolithic = "Domain decomposition/Solver=monolithic";
-  const std::string dd_newton  = "Domain decomposition/Solver=dd-newton";
-  const std::string nodes      = "Domain decomposition/Contact pressure=nodes";
+  const std::string monolithic = "Contact solver/Solver=monolithic";
+  const std::string dd_newton  = "Contact solver/Solver=dd-newton";
+  const std::string nodes      = "Contact solver/Contact pressure=nodes";
 
   ContactState
   state(const Simulation &s)
@@ -75,12 +75,11 @@ main(int argc, char **argv)
   //    S (~1e2 here) and the monolithic round-off, far below 1e-8.
   for (const std::string c : {"1e-7", "1e-4", "0.05"})
   {
-    const std::vector<std::string> common = {
-      "Adaptation/Mode=none",
-      nodes,
-      "Contact pair S/Penalty=" + c,
-      "Domain decomposition/eps_residual=1e-12"};
-    const auto reference = run_coarse_paper_scene(
+    const std::vector<std::string> common    = {"Adaptation/Mode=none",
+                                                nodes,
+                                                "Contact pair S/Penalty=" + c,
+                                                "Contact solver/Tolerance=1e-12"};
+    const auto                     reference = run_coarse_paper_scene(
       source_dir, "monolithic_nodes_output", 1, common, {dd_newton});
     const auto sim = run_coarse_paper_scene(
       source_dir, "monolithic_nodes_output", 1, common, {monolithic});
@@ -116,7 +115,7 @@ main(int argc, char **argv)
       "Adaptation/Mode=none",
       monolithic,
       "Contact pair S/Penalty=1e-7",
-      "Domain decomposition/Max Newton iterations=200"};
+      "Contact solver/Monolithic/Max Newton iterations=200"};
     const std::string paper  = source_dir + "/prm/paper_two_bodies.prm";
     const auto        points = run_scene(paper, common, {});
     const auto        nodal  = run_scene(paper, common, {nodes});

@@ -1,5 +1,5 @@
-// DESCRIPTION: dd-newton's penalty continuation (Domain decomposition/Penalty
-// continuation) reaches the same exact-contact solution as the plain
+// DESCRIPTION: dd-newton's penalty continuation (Contact solver/DD-Newton/
+// Penalty continuation) reaches the same exact-contact solution as the plain
 // active-set method and the monolithic solver: on the slender plate of
 // doc/stability.md in a fraction of the plain method's Newton steps and with
 // counts that do not grow under refinement, on the paper scene with as many
@@ -39,7 +39,7 @@ namespace
   std::string
   continuation(const bool on)
   {
-    return std::string("Domain decomposition/Penalty continuation=") +
+    return std::string("Contact solver/DD-Newton/Penalty continuation=") +
            (on ? "true" : "false");
   }
 } // namespace
@@ -53,10 +53,10 @@ main(int argc, char **argv)
   const std::vector<std::string> exact = {
     "Output directory=penalty_continuation_output",
     "Adaptation/Mode=none",
-    "Domain decomposition/Solver=dd-newton",
+    "Contact solver/Solver=dd-newton",
     "Contact pair S/Formulation=exact",
-    "Domain decomposition/eps_residual=1e-10",
-    "Domain decomposition/Max Newton iterations=300"};
+    "Contact solver/Tolerance=1e-10",
+    "Contact solver/DD-Newton/Max Newton iterations=300"};
 
   // 1. A plate of H/L = 0.01 clamped at its ends, pressed by a pressure onto
   //    the block across the gap r0 x^2 (scripts/stability_matrix.sh): its
@@ -105,9 +105,9 @@ main(int argc, char **argv)
                       "Body omega2/Mesh/Initial refinement=0"});
     std::vector<std::string> monolithic = exact;
     monolithic.insert(monolithic.end(),
-                      {"Domain decomposition/Solver=monolithic",
+                      {"Contact solver/Solver=monolithic",
                        "Contact pair S/Formulation=penalty",
-                       "Domain decomposition/Contact pressure=nodes",
+                       "Contact solver/Contact pressure=nodes",
                        "Contact pair S/Penalty=1e-8"});
     const auto s = run_scene(paper, monolithic, overrides);
     check(s->summary().at("status") == "converged",

@@ -142,7 +142,7 @@ def main():
     paper = os.path.join(work, "paper")
     run_scene(exe, os.path.join(source, "prm", "paper_two_bodies.prm"), paper,
               ["Adaptation/Max cycles=2", "Output/Write vtu=false",
-               "Domain decomposition/Relaxation=anderson"])
+               "Contact solver/Domain decomposition/Relaxation=anderson"])
     result = subprocess.run(plot + [paper, "--units", "cm,MPa"],
                             capture_output=True, text=True)
     print(result.stdout + result.stderr)

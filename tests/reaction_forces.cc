@@ -214,8 +214,8 @@ main(int argc, char **argv)
     const auto   sim = run_scene(source_dir + "/prm/stability/uniaxial.prm",
                                {"Output directory=reaction_uniaxial"},
                                {"Contact pair S/Formulation=exact",
-                                  "Domain decomposition/Solver=dd-newton",
-                                  "Domain decomposition/Contact pressure=auto"});
+                                  "Contact solver/Solver=dd-newton",
+                                  "Contact solver/Contact pressure=auto"});
     const double PL  = uniaxial_pressure(0.) * 4.;
     const auto   r   = reactions(*sim);
     const double error =
@@ -246,7 +246,7 @@ main(int argc, char **argv)
               << r.at("omega2").at(2) << ", "
               << sim->get_bodies()[1]->n_active_cells() << " cells"
               << std::endl;
-    // The DD converged to eps_residual 1e-10.
+    // The DD converged to Tolerance 1e-10.
     check(
       "paper scene, adapted: reactions against the contact force", error, 1e-6);
     check("paper scene: imbalance", largest_imbalance(*sim), 1e-6);

@@ -86,15 +86,15 @@ main(int argc, char **argv)
   // (a) The fixed relaxation (21) at gamma = 0.04, below gamma* = 0.0535 of
   //     this scene (tests/stability.cc), contracts by about 1 - gamma per
   //     iteration: after 30 iterations the residual still falls, far above
-  //     eps_residual = 1e-10. The run is not converged, not diverged, and
+  //     Tolerance = 1e-10. The run is not converged, not diverged, and
   //     writes its last iterate for ParaView.
   {
     const std::string directory = "run_status_not_converged";
     run_uniaxial(source_dir,
                  directory,
-                 {"Domain decomposition/Relaxation=fixed",
-                  "Domain decomposition/Gamma=0.04",
-                  "Domain decomposition/Max iterations=30",
+                 {"Contact solver/Domain decomposition/Relaxation=fixed",
+                  "Contact solver/Domain decomposition/Gamma=0.04",
+                  "Contact solver/Max iterations=30",
                   "Output/Write vtu=true"},
                  message);
     const Json summary = read_summary(directory);
@@ -130,9 +130,9 @@ main(int argc, char **argv)
     const std::string directory = "run_status_diverged_" + max_iterations;
     run_uniaxial(source_dir,
                  directory,
-                 {"Domain decomposition/Relaxation=fixed",
-                  "Domain decomposition/Gamma=0.2",
-                  "Domain decomposition/Max iterations=" + max_iterations},
+                 {"Contact solver/Domain decomposition/Relaxation=fixed",
+                  "Contact solver/Domain decomposition/Gamma=0.2",
+                  "Contact solver/Max iterations=" + max_iterations},
                  message);
     check(message_names(message, {"diverged", "Gamma"}) ||
             message_names(message, {"made no progress", "Gamma"}),
@@ -151,9 +151,8 @@ main(int argc, char **argv)
   //     augmented Lagrangian at c = 1 to 1e-3 of the approach: not warned.
   //     Neither reaches 10 % of the cells (0.25): theta p <= 5e-4.
   {
-    const std::vector<std::string> converge = {
-      "Domain decomposition/eps_residual=1e-9"};
-    auto with = [&](std::vector<std::string> extra)
+    const std::vector<std::string> converge = {"Contact solver/Tolerance=1e-9"};
+    auto                           with = [&](std::vector<std::string> extra)
     {
       extra.insert(extra.begin(), converge.begin(), converge.end());
       return extra;
@@ -207,8 +206,8 @@ main(int argc, char **argv)
     const std::string directory = "run_status_monolithic";
     run_uniaxial(source_dir,
                  directory,
-                 {"Domain decomposition/Solver=monolithic",
-                  "Domain decomposition/Max Newton iterations=2"},
+                 {"Contact solver/Solver=monolithic",
+                  "Contact solver/Monolithic/Max Newton iterations=2"},
                  message);
     check(
       message_names(
@@ -232,11 +231,11 @@ main(int argc, char **argv)
           1e-8);
 
     // dd-newton stopped after one step, whose CG solves the all-active set
-    // to eps_residual: too few steps to call the active set cycling.
+    // to Tolerance: too few steps to call the active set cycling.
     run_uniaxial(source_dir,
                  directory,
-                 {"Domain decomposition/Solver=dd-newton",
-                  "Domain decomposition/Max Newton iterations=1"},
+                 {"Contact solver/Solver=dd-newton",
+                  "Contact solver/DD-Newton/Max Newton iterations=1"},
                  message);
     check(message_names(message,
                         {"too few steps to tell", "Max Newton iterations"}) &&

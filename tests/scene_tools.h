@@ -118,8 +118,8 @@ namespace ddcontact
         "Body omega1/Mesh/Initial refinement=1",
         "Body omega2/Mesh/Initial refinement=" +
           std::to_string(omega2_refinement),
-        "Domain decomposition/Relaxation=anderson",
-        "Domain decomposition/eps_residual=1e-10"};
+        "Contact solver/Domain decomposition/Relaxation=anderson",
+        "Contact solver/Tolerance=1e-10"};
       all.insert(all.end(), defaults.begin(), defaults.end());
       return run_scene(
         source_dir + "/prm/paper_two_bodies.prm", all, overrides);
@@ -137,8 +137,9 @@ namespace ddcontact
       const std::string message = error_message<DivergenceError>(
         [&]
         {
-          run(std::vector<std::string>{"Domain decomposition/Relaxation=fixed",
-                                       "Domain decomposition/Gamma=" + gamma});
+          run(std::vector<std::string>{
+            "Contact solver/Domain decomposition/Relaxation=fixed",
+            "Contact solver/Domain decomposition/Gamma=" + gamma});
         });
       std::cout << "gamma = " << gamma << ": " << message << std::endl;
       check(message_names(message, {"Gamma"}), what);

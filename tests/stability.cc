@@ -107,8 +107,8 @@ main(int argc, char **argv)
     // 1e6 x 1e-2 = 1e4.
     const std::vector<std::string> common = {
       "Adaptation/Mode=none",
-      "Domain decomposition/Relaxation=anderson",
-      "Domain decomposition/eps_residual=1e-10",
+      "Contact solver/Domain decomposition/Relaxation=anderson",
+      "Contact solver/Tolerance=1e-10",
       "Body omega1/Mesh/Initial refinement=1"};
     auto with = [&](std::vector<std::string> extra)
     {
@@ -199,7 +199,7 @@ main(int argc, char **argv)
       return extra;
     };
     const auto newton =
-      run(uniaxial, with({"Domain decomposition/Solver=monolithic"}));
+      run(uniaxial, with({"Contact solver/Solver=monolithic"}));
     const double p = pressure(*newton, L);
     std::cout << "c = 1e-6, monolithic: p = " << p << ", closed form " << exact
               << " (" << relative(p, exact) << ")" << std::endl;
@@ -226,10 +226,11 @@ main(int argc, char **argv)
                               { return run(uniaxial, overrides); },
                               "0.2",
                               "gamma above gamma* reported, naming Gamma");
-    const auto   sim   = run(uniaxial,
-                         {"Domain decomposition/Relaxation=fixed",
-                              "Domain decomposition/Gamma=0.04",
-                              "Domain decomposition/eps_residual=1e-9"});
+    const auto sim =
+      run(uniaxial,
+          {"Contact solver/Domain decomposition/Relaxation=fixed",
+           "Contact solver/Domain decomposition/Gamma=0.04",
+           "Contact solver/Tolerance=1e-9"});
     const double exact = closed_form(1.366e-3, E, E, nu, H, theta);
     const double limit = sim->get_contact_solver().estimate_gamma_limit();
     std::cout << "gamma = 0.04: p = " << pressure(*sim, L) << " after "
@@ -254,8 +255,8 @@ main(int argc, char **argv)
   {
     const std::vector<std::string> common = {
       "Adaptation/Mode=none",
-      "Domain decomposition/Relaxation=anderson",
-      "Domain decomposition/eps_residual=1e-10",
+      "Contact solver/Domain decomposition/Relaxation=anderson",
+      "Contact solver/Tolerance=1e-10",
       "Body omega1/Element/Cell type=quadrilateral",
       "Body omega1/Mesh/Initial refinement=1",
       "Body omega2/Mesh/Initial refinement=1",

@@ -95,14 +95,14 @@ main(int argc, char **argv)
   // Anderson on the three-body scene: 40 iterations are far beyond where
   // the two thread counts parted before (iteration 6). (The scene itself
   // solves with dd-newton.)
-  check_identical("three bodies, anderson",
-                  source_dir + "/prm/three_bodies.prm",
-                  {"Domain decomposition/Solver=dd",
-                   "Domain decomposition/Max iterations=40"});
+  check_identical(
+    "three bodies, anderson",
+    source_dir + "/prm/three_bodies.prm",
+    {"Contact solver/Solver=dd", "Contact solver/Max iterations=40"});
   // The Newton solver on the same scene (its CG sums are its own, in index
   // order).
   check_identical("three bodies, dd-newton",
                   source_dir + "/prm/three_bodies.prm",
-                  {"Domain decomposition/Solver=dd-newton"});
+                  {"Contact solver/Solver=dd-newton"});
   return report();
 }

@@ -9,7 +9,7 @@
 #include <ddcontact/body/parallel_parameters.h>
 #include <ddcontact/contact/contact_pair_parameters.h>
 #include <ddcontact/parameter_tools.h>
-#include <ddcontact/solvers/dd_parameters.h>
+#include <ddcontact/solvers/contact_solver_parameters.h>
 
 #include <ostream>
 #include <string>
@@ -44,7 +44,7 @@ namespace ddcontact
 
     std::vector<BodyParameters>        bodies;
     std::vector<ContactPairParameters> contact_pairs;
-    DDParameters                       dd;
+    ContactSolverParameters            contact_solver;
     AdaptationParameters               adaptation;
     ParallelParameters                 parallel;
 

@@ -97,7 +97,7 @@ namespace ddcontact
     void
     setup_bodies();
 
-    /** The contact pairs and their solver (Domain decomposition/Solver),
+    /** The contact pairs and their solver (Contact solver/Solver),
      * if the scene has contact pairs. */
     void
     setup_contact();

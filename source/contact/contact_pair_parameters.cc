@@ -43,7 +43,8 @@ namespace ddcontact
       "exact (the default): exact contact, no penetration -- with Solver = "
       "dd-newton solved directly with one pressure multiplier per node of "
       "S_1, with dd and monolithic by Uzawa updates of the penalty (an "
-      "augmented Lagrangian, AL tolerance). penalty: the penalty (15) with "
+      "augmented Lagrangian, Contact solver/Uzawa). penalty: the penalty (15) "
+      "with "
       "theta from Penalty type and Penalty, as in the paper (a soft penalty "
       "leaves a penetration and underestimates the peak pressure). All "
       "pairs of a scene take the same formulation.");

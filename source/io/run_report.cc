@@ -60,7 +60,7 @@ namespace ddcontact
       if ((!of_approach && !of_cell) || round_off)
         return "";
       std::ostringstream s;
-      const bool         exact = parameters.dd.exact_contact();
+      const bool         exact = parameters.contact_solver.exact_contact();
       s << std::setprecision(2) << "contact pair " << pair
         << (exact ? ": exact contact leaves a penetration of "
                   : ": the penalty leaves a penetration of ")
@@ -76,15 +76,15 @@ namespace ddcontact
       {
         // No penalty is involved: exact contact holds at the nodes of S_1
         // (on the weighted gaps); between them the traces of non-matching
-        // meshes differ, and the solver stops at eps_residual.
+        // meshes differ, and the solver stops at Tolerance.
         s << "between the nodes of S_1, where exact contact holds only at "
              "the nodes; it falls with refinement of the contact zone (and "
-             "with Domain decomposition/eps_residual if that is loose)";
+             "with Contact solver/Tolerance if that is loose)";
         return s.str();
       }
       s << "an error of the penalty that mesh refinement does not remove; ";
-      if (parameters.dd.augmented_lagrangian)
-        s << "lower Domain decomposition/AL tolerance or raise AL max updates";
+      if (parameters.contact_solver.augmented_lagrangian)
+        s << "lower Contact solver/Uzawa/Tolerance or raise its Max updates";
       else
         s << "for exact contact set Contact pair " << pair
           << "/Formulation = exact, or lower Contact pair " << pair
@@ -409,9 +409,9 @@ namespace ddcontact
   {
     const ContactSolver &contact_solver = *results.contact_solver;
     json["dd_iterations"]               = contact_solver.n_dd_iterations();
-    json["gamma"]                       = parameters.dd.gamma;
-    json["relaxation"]                  = to_string(parameters.dd.relaxation);
-    json["uzawa_updates"]               = contact_solver.n_uzawa_updates();
+    json["gamma"]                       = parameters.contact_solver.dd.gamma;
+    json["relaxation"]    = to_string(parameters.contact_solver.dd.relaxation);
+    json["uzawa_updates"] = contact_solver.n_uzawa_updates();
     // The work in sets of body solves (one solve of every body), and the
     // Newton and Krylov steps of dd-newton (zero for the relaxed DD).
     const SolverCounts counts         = contact_solver.counts();

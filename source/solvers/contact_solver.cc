@@ -13,7 +13,7 @@
 
 namespace ddcontact
 {
-  ContactSolver::ContactSolver(const DDParameters                  &parameters,
+  ContactSolver::ContactSolver(const ContactSolverParameters       &parameters,
                                const std::vector<ElasticBody<2> *> &bodies,
                                const std::vector<ContactPair *>    &pairs,
                                const BodyDistribution &distribution,
@@ -30,7 +30,7 @@ namespace ddcontact
     /** A solver's factory: its checks of the scene, then the solver. */
     template <typename SolverType>
     std::unique_ptr<ContactSolver>
-    make_solver(const DDParameters                  &parameters,
+    make_solver(const ContactSolverParameters       &parameters,
                 const std::vector<ElasticBody<2> *> &bodies,
                 const std::vector<ContactPair *>    &pairs,
                 const BodyDistribution              &distribution,
@@ -42,7 +42,7 @@ namespace ddcontact
     }
 
     using SolverFactory =
-      std::unique_ptr<ContactSolver> (*)(const DDParameters &,
+      std::unique_ptr<ContactSolver> (*)(const ContactSolverParameters &,
                                          const std::vector<ElasticBody<2> *> &,
                                          const std::vector<ContactPair *> &,
                                          const BodyDistribution &,
@@ -56,7 +56,7 @@ namespace ddcontact
   } // namespace
 
   std::unique_ptr<ContactSolver>
-  ContactSolver::create(const DDParameters                  &parameters,
+  ContactSolver::create(const ContactSolverParameters       &parameters,
                         const std::vector<ElasticBody<2> *> &bodies,
                         const std::vector<ContactPair *>    &pairs,
                         const BodyDistribution              &distribution,
@@ -67,7 +67,7 @@ namespace ddcontact
   }
 
   void
-  ContactSolver::check_scene(const DDParameters                  &parameters,
+  ContactSolver::check_scene(const ContactSolverParameters       &parameters,
                              const std::vector<ElasticBody<2> *> &bodies)
   {
     // A floating body's equilibrium is a constraint on the contact
@@ -79,7 +79,7 @@ namespace ddcontact
                          "/Dirichlet: the body is floating (its Dirichlet "
                          "conditions leave its " +
                          body->get_rigid_modes().description() +
-                         "); only Domain decomposition/Solver = dd-newton "
+                         "); only Contact solver/Solver = dd-newton "
                          "solves floating bodies, not " +
                          selection_name(parameters.solver));
   }

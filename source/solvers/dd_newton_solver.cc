@@ -129,7 +129,7 @@ namespace ddcontact
     interface.set_continuation(0.);
     interface.reinit();
     interface.set_reference_lengths({});
-    continuation_pending = parameters.penalty_continuation;
+    continuation_pending = parameters.dd_newton.penalty_continuation;
     p.assign(interface.size(), 0.);
     mesh_ready = false;
     setup_mesh();
@@ -184,8 +184,8 @@ namespace ddcontact
     // theta: a residual r leaves the pressure uncertain by up to
     // ||r||_W / theta. Asking ||r||_W <= 1e-3 ||theta p||_W bounds that by
     // 0.1 % of the pressure. (Slender plate of doc/stability.md at c = 1:
-    // eps_residual = 1e-6 of the overlap alone passed a force 5 % off.)
-    double tolerance = parameters.eps_residual * scale;
+    // Tolerance = 1e-6 of the overlap alone passed a force 5 % off.)
+    double tolerance = parameters.tolerance * scale;
     if (!interface.on_nodes())
     {
       PointVector theta_x(x.size());
@@ -487,7 +487,8 @@ namespace ddcontact
       estimate_amplitudes();
       alpha_stale = false;
     }
-    if (records.size() - phase_start >= parameters.n_newton)
+    if (records.size() - phase_start >=
+        parameters.dd_newton.max_newton_iterations)
       stop_at_iteration_limit("the Newton method of dd-newton");
 
     unsigned int      n_changed = 0;
@@ -614,7 +615,7 @@ namespace ddcontact
     // p < 0 by the surface's compliance c, far below the compliance of a
     // bending plate, so that damped steps on a zone still too wide passed
     // the residual test alone (slender plate of doc/stability.md: 3 % off
-    // in force at eps_residual = 1e-6, 10 % at c = 0.05).
+    // in force at Tolerance = 1e-6, 10 % at c = 0.05).
     unsigned int n_next = 0;
     active_set(n_next);
     const bool converged = interface.get_continuation() == 0 &&
@@ -660,8 +661,8 @@ namespace ddcontact
     std::ostringstream s;
     s << std::setprecision(3) << what << " has not converged in "
       << n - phase_start << " Newton steps (" << n_dd_iterations()
-      << " sets of body solves; residual " << r << ", eps_residual "
-      << parameters.eps_residual << ")";
+      << " sets of body solves; residual " << r << ", Tolerance "
+      << parameters.tolerance << ")";
     // Under six steps there is nothing to judge a cycle by: the limit
     // itself is what stopped the run.
     const bool too_few = n < phase_start + 6;
@@ -669,15 +670,15 @@ namespace ddcontact
     if (too_few || falling)
     {
       s << (too_few ? ", too few steps to tell" : ", falling")
-        << "; raise Domain decomposition/Max Newton iterations or Max "
-           "iterations";
+        << "; raise Contact solver/DD-Newton/Max Newton iterations or "
+           "Contact solver/Max iterations";
       throw NotConvergedError(s.str());
     }
     s << ": the active set does not settle; raise " << penalty_entries();
     if (!interface.on_nodes())
-      s << ", or set Domain decomposition/Contact pressure = nodes (one "
+      s << ", or set Contact solver/Contact pressure = nodes (one "
            "pressure per node of S_1, for stiff penalties)";
-    s << ", or use Domain decomposition/Solver = monolithic";
+    s << ", or use Contact solver/Solver = monolithic";
     throw DivergenceError(s.str());
   }
 } // namespace ddcontact

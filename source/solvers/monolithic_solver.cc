@@ -10,14 +10,14 @@
 namespace ddcontact
 {
   MonolithicContactSolver::MonolithicContactSolver(
-    const DDParameters                  &parameters,
+    const ContactSolverParameters       &parameters,
     const std::vector<ElasticBody<2> *> &bodies,
     const std::vector<ContactPair *>    &pairs,
     const BodyDistribution              &distribution,
     ConditionalOStream                  &pcout)
     : ContactSolver(parameters, bodies, pairs, distribution, pcout)
     , on_nodes(parameters.pressure_on_nodes)
-    , max_iterations(parameters.n_newton)
+    , max_iterations(parameters.monolithic.max_newton_iterations)
     , interface(this->problem, on_nodes, false)
   {
   }
@@ -50,10 +50,10 @@ namespace ddcontact
   {
     // The caller's label names a DD loop; here each step is a whole solve.
     throw NotConvergedError("the Uzawa loop of the monolithic solver "
-                            "reached Domain decomposition/Max iterations (" +
+                            "reached Contact solver/Max iterations (" +
                             std::to_string(parameters.max_iterations) +
-                            " solves); raise it, or Domain "
-                            "decomposition/AL tolerance");
+                            " solves); raise it, or Contact "
+                            "solver/Uzawa/Tolerance");
   }
 
   SolverCounts
@@ -390,16 +390,16 @@ namespace ddcontact
     // No active set met twice: still moving, stopped by the limit alone.
     if (iteration == max_iterations && !damped)
       throw NotConvergedError(unsettled +
-                              " (no active set repeated); raise Domain "
-                              "decomposition/Max Newton iterations");
+                              " (no active set repeated); raise Contact "
+                              "solver/Monolithic/Max Newton iterations");
     if (iteration == max_iterations)
       throw DivergenceError(
         unsettled +
         " (the active set cycles when theta is small against the compliance "
         "of the contact zone, e.g. a slender body); raise the contact pairs' "
-        "Penalty (c) or Domain decomposition/Max Newton iterations" +
+        "Penalty (c) or Contact solver/Monolithic/Max Newton iterations" +
         (on_nodes ? std::string()
-                  : ", or set Domain decomposition/Contact pressure = nodes"));
+                  : ", or set Contact solver/Contact pressure = nodes"));
     return iteration;
   }
 

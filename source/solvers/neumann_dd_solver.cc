@@ -75,11 +75,11 @@ namespace ddcontact
   void
   NeumannDDSolver::initialize()
   {
-    relaxation->set_gamma(parameters.gamma);
+    relaxation->set_gamma(parameters.dd.gamma);
     ContactSolver::initialize();
     set_initial_guess();
 
-    if (parameters.relaxation == RelaxationType::automatic)
+    if (parameters.dd.relaxation == RelaxationType::automatic)
     {
       // The optimal fixed gamma for a spectrum in [1, 1 + lambda_max] is
       // 2 / (2 + lambda_max); gamma* = 2 / (1 + lambda_max).
@@ -208,14 +208,15 @@ namespace ddcontact
     record.time = timer.wall_time();
     add_record(record);
 
-    // The stopping test of Domain decomposition/Stopping test.
-    const bool residual_test = record.residual <= parameters.eps_residual;
-    const bool paper_test    = record.increment <= parameters.eps_u;
-    const bool converged     = (parameters.stopping == StoppingTest::residual)
-                                 ? residual_test
-                               : (parameters.stopping == StoppingTest::paper)
-                                 ? paper_test
-                                 : residual_test || paper_test;
+    // The stopping test of Contact solver/Domain decomposition/Stopping test.
+    const bool residual_test = record.residual <= parameters.tolerance;
+    const bool paper_test =
+      record.increment <= parameters.dd.increment_tolerance;
+    const bool converged = (parameters.dd.stopping == StoppingTest::residual)
+                             ? residual_test
+                           : (parameters.dd.stopping == StoppingTest::paper)
+                             ? paper_test
+                             : residual_test || paper_test;
 
     // Divergence: a non-finite residual, growth far above the best residual
     // so far, or no progress at all for many iterations (a 2-cycle between
@@ -276,7 +277,7 @@ namespace ddcontact
     if (best <= round_off)
       s << ": the residual stagnates at the round-off level of this problem "
         << "(about " << round_off << " = 1000 eps (1 + lambda_max)); raise "
-        << "Domain decomposition/eps_residual above " << 10 * best;
+        << "Contact solver/Tolerance above " << 10 * best;
     else if (limit < 1e-3)
       s << ": the penalty is too stiff for the domain decomposition (the "
         << "contact-zone compliance is " << lambda_max << " times theta, so "
@@ -286,20 +287,22 @@ namespace ddcontact
         << " (for gamma* ~ 0.05; with contrasting "
         << "materials, making the softer body Body 1 does the same) and set "
         << "Contact pair <name>/Formulation = exact for an exact "
-        << "contact, or use Domain decomposition/Solver = monolithic";
-    else if (parameters.relaxation == RelaxationType::fixed &&
-             parameters.gamma > limit)
-      s << ": Domain decomposition/Gamma = " << parameters.gamma
+        << "contact, or use Contact solver/Solver = monolithic";
+    else if (parameters.dd.relaxation == RelaxationType::fixed &&
+             parameters.dd.gamma > limit)
+      s << ": Contact solver/Domain decomposition/Gamma = "
+        << parameters.dd.gamma
         << " is above the estimated stable limit gamma*; use Gamma below "
         << limit << " (about " << 2 * limit / (2 + limit)
         << " is fastest) or Relaxation = anderson";
-    else if (parameters.relaxation == RelaxationType::fixed)
-      s << ": Domain decomposition/Gamma = " << parameters.gamma
+    else if (parameters.dd.relaxation == RelaxationType::fixed)
+      s << ": Contact solver/Domain decomposition/Gamma = "
+        << parameters.dd.gamma
         << " is below the estimated gamma* of the linearised iteration, but "
         << "the active set oscillates; use a smaller Gamma or Relaxation = "
         << "anderson";
     else
-      s << " with Relaxation = " << to_string(parameters.relaxation)
+      s << " with Relaxation = " << to_string(parameters.dd.relaxation)
         << "; use Relaxation = fixed with Gamma = " << 2 * limit / (2 + limit)
         << " (below gamma*), or a larger " << penalty_entries;
     return s.str();
@@ -312,8 +315,8 @@ namespace ddcontact
       return false;
     // A new phase of the DD with the new multipliers; Aitken's dynamic
     // gamma starts again from the given one.
-    if (parameters.relaxation != RelaxationType::automatic)
-      relaxation->set_gamma(parameters.gamma);
+    if (parameters.dd.relaxation != RelaxationType::automatic)
+      relaxation->set_gamma(parameters.dd.gamma);
     return true;
   }
 
@@ -338,9 +341,8 @@ namespace ddcontact
     if (n < first + 2)
     {
       // One iteration: no trend to judge, only a limit set too low.
-      s << (n > 0 ? records.back().residual : 0.) << ", eps_residual "
-        << parameters.eps_residual
-        << "); raise Domain decomposition/Max iterations";
+      s << (n > 0 ? records.back().residual : 0.) << ", Tolerance "
+        << parameters.tolerance << "); raise Contact solver/Max iterations";
       throw NotConvergedError(s.str());
     }
     // Falling: the last (at most 10) iterations reached a new best of the
@@ -368,21 +370,21 @@ namespace ddcontact
         best_k));
     }
     s << r << ", falling: " << r_start / r << " times lower than " << window
-      << " iterations before; eps_residual " << parameters.eps_residual
-      << "); raise Domain decomposition/Max iterations";
+      << " iterations before; Tolerance " << parameters.tolerance
+      << "); raise Contact solver/Max iterations";
     // At the rate of the window, log(eps/r)/log(rate) more iterations
     // reach the residual test (not the paper's increment test).
-    if (parameters.stopping != StoppingTest::paper &&
-        parameters.eps_residual < r)
+    if (parameters.dd.stopping != StoppingTest::paper &&
+        parameters.tolerance < r)
     {
       const double rate = std::pow(r / r_start, 1. / window);
       s << " (about "
         << static_cast<long long>(
-             std::ceil(std::log(parameters.eps_residual / r) / std::log(rate)))
+             std::ceil(std::log(parameters.tolerance / r) / std::log(rate)))
         << " more at this rate)";
     }
-    if (parameters.relaxation == RelaxationType::anderson)
-      s << " or Domain decomposition/Anderson depth";
+    if (parameters.dd.relaxation == RelaxationType::anderson)
+      s << " or Contact solver/Domain decomposition/Anderson depth";
     else
       s << " or use Relaxation = anderson";
     throw NotConvergedError(s.str());

@@ -143,7 +143,7 @@ namespace ddcontact
   }
 
   std::unique_ptr<Relaxation>
-  make_relaxation(const DDParameters &parameters)
+  make_relaxation(const DomainDecompositionParameters &parameters)
   {
     if (parameters.relaxation == RelaxationType::aitken)
       return std::make_unique<AitkenRelaxation>(parameters.gamma);

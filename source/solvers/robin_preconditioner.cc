@@ -134,7 +134,7 @@ namespace ddcontact
     const auto &pairs  = problem.get_pairs();
     for (const auto *body : bodies)
       if (body->is_solved_distributed())
-        throw InputError("Domain decomposition/Solver = dd-newton: body '" +
+        throw InputError("Contact solver/Solver = dd-newton: body '" +
                          body->name() +
                          "' is solved by a group of processes, whose "
                          "distributed matrix the preconditioner cannot "

@@ -5,8 +5,8 @@
 
 namespace ddcontact
 {
-  UzawaLoop::UzawaLoop(const DDParameters &parameters,
-                       ConditionalOStream &pcout)
+  UzawaLoop::UzawaLoop(const ContactSolverParameters &parameters,
+                       ConditionalOStream            &pcout)
     : parameters(parameters)
     , pcout(pcout)
   {
@@ -25,7 +25,7 @@ namespace ddcontact
   {
     // Exact contact solved directly (dd-newton) needs no updates.
     if (!parameters.augmented_lagrangian || parameters.exact_contact() ||
-        n_mesh >= parameters.al_max_updates)
+        n_mesh >= parameters.uzawa.max_updates)
       return false;
 
     const auto u                        = problem.current_iterate();
@@ -34,7 +34,7 @@ namespace ddcontact
           << max_penetration << " (" << ratio << " of the approach)"
           << std::endl;
     mesh_limited = false;
-    if (ratio <= parameters.al_tolerance)
+    if (ratio <= parameters.uzawa.tolerance)
       return false;
     if (n_mesh == 0)
       first_penetration = max_penetration;
@@ -50,7 +50,8 @@ namespace ddcontact
     {
       mesh_limited = true;
       pcout << "  Uzawa: the penetration no longer decreases (" << ratio
-            << " of the approach, AL tolerance " << parameters.al_tolerance
+            << " of the approach, Uzawa/Tolerance "
+            << parameters.uzawa.tolerance
             << "): the limit of the non-matching zone meshes; stopping"
             << std::endl;
       return false;
@@ -71,7 +72,7 @@ namespace ddcontact
     if (!parameters.augmented_lagrangian || parameters.exact_contact())
       return "";
     const double ratio = problem.penetration(problem.current_iterate()).second;
-    if (ratio <= parameters.al_tolerance)
+    if (ratio <= parameters.uzawa.tolerance)
       return "";
     std::ostringstream s;
     if (mesh_limited)
@@ -80,25 +81,26 @@ namespace ddcontact
       // cannot all hold: the tolerance is out of reach on this mesh.
       s << std::setprecision(3)
         << "the augmented Lagrangian stopped with a penetration of " << ratio
-        << " of the approach, above Domain decomposition/AL tolerance = "
-        << parameters.al_tolerance
+        << " of the approach, above Contact solver/Uzawa/Tolerance = "
+        << parameters.uzawa.tolerance
         << ": the penetration no longer decreases (the limit of pointwise "
            "contact on non-matching zone meshes); results are written with "
-           "status \"stalled\". For exact contact use Domain "
-           "decomposition/Solver = dd-newton (multipliers on the nodes of "
-           "S_1), or raise AL tolerance above "
+           "status \"stalled\". For exact contact use Contact "
+           "solver/Solver = dd-newton (multipliers on the nodes of "
+           "S_1), or raise Contact solver/Uzawa/Tolerance above "
         << ratio;
       return s.str();
     }
     s << std::setprecision(3)
       << "the augmented Lagrangian stopped with a penetration of " << ratio
-      << " of the approach, above Domain decomposition/AL tolerance = "
-      << parameters.al_tolerance << ", after " << n_mesh
-      << " Uzawa updates on the last mesh (AL max updates = "
-      << parameters.al_max_updates
+      << " of the approach, above Contact solver/Uzawa/Tolerance = "
+      << parameters.uzawa.tolerance << ", after " << n_mesh
+      << " Uzawa updates on the last mesh (Uzawa/Max updates = "
+      << parameters.uzawa.max_updates
       << "); results are written with status \"stalled\". Make the "
          "penalty stiffer (smaller Contact pair/Penalty) so that each "
-         "update removes more of the penetration, or raise AL max updates";
+         "update removes more of the penetration, or raise Contact "
+         "solver/Uzawa/Max updates";
     return s.str();
   }
 } // namespace ddcontact

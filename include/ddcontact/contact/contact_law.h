@@ -30,9 +30,9 @@ namespace ddcontact
    * solver for the gap that lambda shifts.
    *
    * When dd-newton takes the pressure on the nodes of S_1
-   * (DDParameters::multipliers_on_nodes(): exact contact, or the penalty
-   * for the averaged gap) the law holds node by node for the gap averaged
-   * with the hat functions, which does not give the pressure pointwise
+   * (ContactSolverParameters::multipliers_on_nodes(): exact contact, or the
+   * penalty for the averaged gap) the law holds node by node for the gap
+   * averaged with the hat functions, which does not give the pressure pointwise
    * from g: lambda is then the pressure itself, set by the solver
    * (set_contact_pressure()), and the gap is not shifted.
    */

@@ -24,7 +24,7 @@ namespace ddcontact
    * - **points** (the penalty (20), as the paper and the other solvers):
    *   one value at every contact point of ContactPair;
    * - **nodes** (exact contact, or Contact pressure = nodes,
-   *   DDParameters::multipliers_on_nodes()): one
+   *   ContactSolverParameters::multipliers_on_nodes()): one
    *   multiplier per vertex of the faces of S_1, the pressure
    *   p(x) = sum_i p_i psi_i(x) piecewise linear (psi_i the hat functions
    *   of the zone mesh of body 1), and the contact condition tested with

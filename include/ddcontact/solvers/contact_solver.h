@@ -9,7 +9,7 @@
 #include <ddcontact/body/body_distribution.h>
 #include <ddcontact/contact/contact_problem.h>
 #include <ddcontact/parameter_tools.h>
-#include <ddcontact/solvers/dd_parameters.h>
+#include <ddcontact/solvers/contact_solver_parameters.h>
 #include <ddcontact/solvers/errors.h>
 #include <ddcontact/solvers/uzawa_loop.h>
 
@@ -71,14 +71,14 @@ namespace ddcontact
    * - what the FEM-BEM estimator and the report need is published:
    *   last_body_solution(), last_contact_traction(), contact_state().
    *
-   * Domain decomposition/Solver selects the solver in create(), from the
+   * Contact solver/Solver selects the solver in create(), from the
    * table in contact_solver.cc: adding a solver is its own files, one line
    * there, and its test.
    */
   class ContactSolver
   {
   public:
-    ContactSolver(const DDParameters                  &parameters,
+    ContactSolver(const ContactSolverParameters       &parameters,
                   const std::vector<ElasticBody<2> *> &bodies,
                   const std::vector<ContactPair *>    &pairs,
                   const BodyDistribution              &distribution,
@@ -86,10 +86,10 @@ namespace ddcontact
 
     virtual ~ContactSolver() = default;
 
-    /** The solver of Domain decomposition/Solver, after the checks that
+    /** The solver of Contact solver/Solver, after the checks that
      * solver makes of the scene. */
     static std::unique_ptr<ContactSolver>
-    create(const DDParameters                  &parameters,
+    create(const ContactSolverParameters       &parameters,
            const std::vector<ElasticBody<2> *> &bodies,
            const std::vector<ContactPair *>    &pairs,
            const BodyDistribution              &distribution,
@@ -98,7 +98,7 @@ namespace ddcontact
     /** The checks of the scene that the solvers (not dd-newton) share:
      * no floating body. Throws InputError. */
     static void
-    check_scene(const DDParameters                  &parameters,
+    check_scene(const ContactSolverParameters       &parameters,
                 const std::vector<ElasticBody<2> *> &bodies);
 
     /** A new run on the current meshes: resets the history and the
@@ -118,12 +118,12 @@ namespace ddcontact
     unsigned int
     run();
 
-    /** step(), unless Domain decomposition/Max iterations is reached, where
+    /** step(), unless Contact solver/Max iterations is reached, where
      * stop_at_iteration_limit(@p loop) throws instead. */
     bool
     step_within_limit(const std::string &loop);
 
-    /** Domain decomposition/Max iterations is reached: throw
+    /** Contact solver/Max iterations is reached: throw
      * NotConvergedError or DivergenceError with a message that says what
      * to change. @p what names the loop ("the domain decomposition", "the
      * combined algorithm"). */
@@ -147,7 +147,7 @@ namespace ddcontact
     virtual bool
     start_uzawa_phase();
 
-    /** "dd", "dd-newton" or "monolithic", as Domain decomposition/Solver
+    /** "dd", "dd-newton" or "monolithic", as Contact solver/Solver
      * writes it. */
     virtual std::string
     name() const = 0;
@@ -232,7 +232,7 @@ namespace ddcontact
     void
     adopt_current_iterate();
 
-    /** Domain decomposition/Initial guess into the bodies' solutions: zero
+    /** Contact solver/Initial guess into the bodies' solutions: zero
      * or the elastic-layer (Winkler) guess of elastic_layer_guess(). */
     void
     set_initial_guess();
@@ -257,11 +257,11 @@ namespace ddcontact
     std::string
     penalty_entries() const;
 
-    const DDParameters           parameters;
-    ContactProblem               problem;
-    UzawaLoop                    uzawa;
-    ConditionalOStream          &pcout;
-    std::vector<IterationRecord> records;
+    const ContactSolverParameters parameters;
+    ContactProblem                problem;
+    UzawaLoop                     uzawa;
+    ConditionalOStream           &pcout;
+    std::vector<IterationRecord>  records;
     // The last step's loads sigma_n (per pair) and body solutions u~.
     std::vector<std::vector<double>> last_sigma_n;
     ContactProblem::Iterate          last_u_tilde;

@@ -14,7 +14,7 @@ namespace ddcontact
   using namespace dealii;
 
   /**
-   * Domain decomposition/Solver = dd-newton: the penalty contact (20)
+   * Contact solver/Solver = dd-newton: the penalty contact (20)
    * solved body by body by a semismooth Newton method on the contact
    * pressure p = -sigma_n at the contact points (ContactInterface).
    *
@@ -43,7 +43,7 @@ namespace ddcontact
    *
    * step() is one Newton step, what the combined algorithm of Fig. 2 calls
    * between two adaptation steps; the stopping test is ||Phi(p)||_W <=
-   * eps_residual ||max(0, d_0)||_W (the overlap of the bodies without
+   * Tolerance ||max(0, d_0)||_W (the overlap of the bodies without
    * contact pressure).
    *
    * With Contact pair/Formulation = exact the solver takes exact contact
@@ -88,7 +88,8 @@ namespace ddcontact
     /** dd-newton solves floating bodies too (its coarse space): no
      * check beyond the parameters'. */
     static void
-    check_scene(const DDParameters &, const std::vector<ElasticBody<2> *> &)
+    check_scene(const ContactSolverParameters &,
+                const std::vector<ElasticBody<2> *> &)
     {
     }
 
@@ -165,7 +166,7 @@ namespace ddcontact
     void
     enter_stage(double t);
 
-    /** The tolerance of ||Phi||_W at the iterate @p x: eps_residual of the
+    /** The tolerance of ||Phi||_W at the iterate @p x: Tolerance of the
      * overlap, and on the points at most 1e-3 of ||Theta x||_W (the
      * pressure to 0.1 %). */
     double

@@ -14,7 +14,7 @@ namespace ddcontact
     using std::runtime_error::runtime_error;
   };
 
-  /** The iteration reached Domain decomposition/Max iterations while its
+  /** The iteration reached Contact solver/Max iterations while its
    * residual still fell: not diverged, only stopped too early (summary.json
    * `status` "not_converged"). Also exit code 4, so it is a
    * DivergenceError to every handler that does not tell the two apart. */

@@ -17,7 +17,7 @@ namespace ddcontact
   using namespace dealii;
 
   /**
-   * Domain decomposition/Solver = monolithic, the reference for the domain
+   * Contact solver/Solver = monolithic, the reference for the domain
    * decomposition: the penalised problem (16)
    * for all bodies at once,
    *   A(u, v) + J'_theta(u, v) - L(v) = 0,
@@ -29,7 +29,7 @@ namespace ddcontact
    * - **points** (the paper's (20)): one term per contact point, m_i its
    *   weight w_q, g_i the normal shape values of both bodies there, f_i
    *   the gap shifted by the augmented Lagrangian's multiplier;
-   * - **nodes** (Domain decomposition/Contact pressure = nodes, the
+   * - **nodes** (Contact solver/Contact pressure = nodes, the
    *   nodal penalty of dd-newton, doc/contact-solvers.md section 6): one
    *   term per node of S_1 for the averaged gap d_i = (1/m_i) int_S1 psi_i d,
    *   i.e. g_i = sum_q (w_q psi_i(x_q) / m_i) g_q over all dofs of both
@@ -61,16 +61,16 @@ namespace ddcontact
   class MonolithicContactSolver : public ContactSolver
   {
   public:
-    /** Domain decomposition/Contact pressure = nodes gives the nodal
+    /** Contact solver/Contact pressure = nodes gives the nodal
      * penalty, otherwise the points; Max Newton iterations limits a
      * solve. */
-    MonolithicContactSolver(const DDParameters                  &parameters,
+    MonolithicContactSolver(const ContactSolverParameters       &parameters,
                             const std::vector<ElasticBody<2> *> &bodies,
                             const std::vector<ContactPair *>    &pairs,
                             const BodyDistribution              &distribution,
                             ConditionalOStream                  &pcout);
 
-    /** ContactSolver::initialize() and Domain decomposition/Initial guess,
+    /** ContactSolver::initialize() and Contact solver/Initial guess,
      * which gives the first active set. */
     void
     initialize() override;
@@ -89,7 +89,7 @@ namespace ddcontact
     bool
     step() override;
 
-    /** Reached only by Uzawa updates beyond Domain decomposition/Max
+    /** Reached only by Uzawa updates beyond Contact solver/Max
      * iterations (each step is a whole solve), whatever loop the caller
      * names. */
     [[noreturn]] void

@@ -45,10 +45,10 @@ namespace ddcontact
     step() override;
 
     /**
-     * Domain decomposition/Max iterations is reached: throw
+     * Contact solver/Max iterations is reached: throw
      * NotConvergedError if the residual still falls (a new best within the
      * last iterations, and below where it stood then), saying by how much
-     * and roughly how many more iterations would reach eps_residual;
+     * and roughly how many more iterations would reach Tolerance;
      * otherwise (grown or stagnated) a DivergenceError with the advice of
      * divergence_message().
      */
@@ -95,14 +95,14 @@ namespace ddcontact
 
     /** The message of a DivergenceError: what diverged (@p event, e.g.
      * "diverged at iteration 12"), and which parameter to change (Gamma,
-     * the penalty c, or eps_residual), judged from the estimated gamma*. */
+     * the penalty c, or Tolerance), judged from the estimated gamma*. */
     std::string
     divergence_message(const std::string     &event,
                        const IterationRecord &record,
                        double                 best,
                        unsigned int           best_k) const;
 
-    std::unique_ptr<Relaxation> relaxation = make_relaxation(parameters);
+    std::unique_ptr<Relaxation> relaxation = make_relaxation(parameters.dd);
   };
 } // namespace ddcontact
 

@@ -3,7 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <ddcontact/solvers/dd_parameters.h>
+#include <ddcontact/solvers/contact_solver_parameters.h>
 
 #include <deque>
 #include <memory>
@@ -102,10 +102,10 @@ namespace ddcontact
     std::deque<Vector<double>> delta_f, delta_g;
   };
 
-  /** The strategy of Domain decomposition/Relaxation ("auto" is the fixed
-   * relaxation, its gamma set by the solver from an estimate). */
+  /** The strategy of Contact solver/Domain decomposition/Relaxation ("auto" is
+   * the fixed relaxation, its gamma set by the solver from an estimate). */
   std::unique_ptr<Relaxation>
-  make_relaxation(const DDParameters &parameters);
+  make_relaxation(const DomainDecompositionParameters &parameters);
 } // namespace ddcontact
 
 #endif

@@ -4,7 +4,7 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <ddcontact/contact/contact_problem.h>
-#include <ddcontact/solvers/dd_parameters.h>
+#include <ddcontact/solvers/contact_solver_parameters.h>
 
 #include <limits>
 #include <string>
@@ -24,7 +24,8 @@ namespace ddcontact
   class UzawaLoop
   {
   public:
-    UzawaLoop(const DDParameters &parameters, ConditionalOStream &pcout);
+    UzawaLoop(const ContactSolverParameters &parameters,
+              ConditionalOStream            &pcout);
 
     /** A new run: no updates yet. */
     void
@@ -65,12 +66,12 @@ namespace ddcontact
     }
 
   private:
-    const DDParameters &parameters;
-    ConditionalOStream &pcout;
-    unsigned int        n_total = 0, n_mesh = 0;
-    double              first_penetration = 0; // first check of this mesh
-    double              last_penetration  = std::numeric_limits<double>::max();
-    bool                mesh_limited = false; // the last check stopped there
+    const ContactSolverParameters &parameters;
+    ConditionalOStream            &pcout;
+    unsigned int                   n_total = 0, n_mesh = 0;
+    double first_penetration = 0; // first check of this mesh
+    double last_penetration  = std::numeric_limits<double>::max();
+    bool   mesh_limited      = false; // the last check stopped there
   };
 } // namespace ddcontact
 

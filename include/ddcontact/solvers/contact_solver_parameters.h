@@ -1,0 +1,179 @@
+#ifndef ddcontact_contact_solver_parameters_h
+#define ddcontact_contact_solver_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <ddcontact/parameter_tools.h>
+
+#include <string>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /** Contact solver/Solver: the DD (20)-(21), the monolithic
+   * semismooth Newton method on (16), or the body-by-body semismooth
+   * Newton method on the contact pressure (DDNewtonSolver). */
+  enum class ContactSolverType
+  {
+    dd,
+    monolithic,
+    dd_newton
+  };
+
+  /** Contact solver/Domain decomposition/Relaxation: the paper's fixed gamma of
+   * (21), the optimal fixed gamma estimated at the start ("auto"), Aitken or
+   * Anderson. */
+  enum class RelaxationType
+  {
+    fixed,
+    automatic,
+    aitken,
+    anderson
+  };
+
+  /** Contact solver/Domain decomposition/Stopping test. */
+  enum class StoppingTest
+  {
+    residual, // u~^{k+1} - u^k on S
+    paper,    // the paper's increment test with eps_u
+    both      // either
+  };
+
+  /** Contact solver/Initial guess. */
+  enum class InitialGuess
+  {
+    zero,
+    elastic_layer // "elastic-layer" (the Winkler model)
+  };
+
+  DDCONTACT_DECLARE_SELECTION(ContactSolverType)
+  DDCONTACT_DECLARE_SELECTION(RelaxationType)
+  DDCONTACT_DECLARE_SELECTION(StoppingTest)
+  DDCONTACT_DECLARE_SELECTION(InitialGuess)
+
+  /** The entry value of a relaxation ("fixed", "auto", ...), as
+   * summary.json and the messages write it. */
+  std::string
+  to_string(RelaxationType value);
+
+  /** Contact solver/Uzawa: the outer loop of exact contact for the
+   * solvers that reach it through penalties (dd, monolithic; UzawaLoop). */
+  struct UzawaParameters
+  {
+    double       tolerance   = 1e-3; // penetration / approach
+    unsigned int max_updates = 30;
+
+    static void
+    declare(ParameterHandler &prm);
+
+    void
+    parse(ParameterHandler &prm);
+  };
+
+  /** Contact solver/Domain decomposition: the paper's DD (20)-(21),
+   * Solver = dd (NeumannDDSolver). */
+  struct DomainDecompositionParameters
+  {
+    RelaxationType relaxation          = RelaxationType::fixed;
+    double         gamma               = 0.02; // gamma of (21)
+    unsigned int   anderson_depth      = 8;
+    StoppingTest   stopping            = StoppingTest::residual;
+    double         increment_tolerance = 1.5e-3; // the paper's eps_u (Sec. 3)
+
+    static void
+    declare(ParameterHandler &prm);
+
+    void
+    parse(ParameterHandler &prm);
+  };
+
+  /** Contact solver/DD-Newton: Solver = dd-newton (DDNewtonSolver). */
+  struct DDNewtonParameters
+  {
+    unsigned int max_newton_iterations = 50;
+    bool         penalty_continuation  = true;
+
+    static void
+    declare(ParameterHandler &prm);
+
+    void
+    parse(ParameterHandler &prm);
+  };
+
+  /** Contact solver/Monolithic: Solver = monolithic
+   * (MonolithicContactSolver). */
+  struct MonolithicParameters
+  {
+    unsigned int max_newton_iterations = 50;
+
+    static void
+    declare(ParameterHandler &prm);
+
+    void
+    parse(ParameterHandler &prm);
+  };
+
+  /**
+   * The subsection "Contact solver": which solver, the entries every solver
+   * reads (iteration limit, tolerance, initial guess, the discrete
+   * pressure), and one subsection per solver with its own entries.
+   */
+  struct ContactSolverParameters
+  {
+    ContactSolverType solver         = ContactSolverType::dd_newton;
+    unsigned int      max_iterations = 5000;
+    double            tolerance      = 1e-8; // relative residual on S
+    InitialGuess      initial_guess  = InitialGuess::elastic_layer;
+    /** Exact contact (Contact pair/Formulation = exact): set by the scene
+     * from its pairs, not read here. */
+    bool        augmented_lagrangian  = false;
+    bool        write_every_iteration = false;
+    bool        print_every_iteration = false;  // Output/Verbosity = full
+    bool        pressure_on_nodes     = false;  // Contact pressure
+    std::string contact_pressure      = "auto"; // the entry
+
+    UzawaParameters               uzawa;
+    DomainDecompositionParameters dd;
+    DDNewtonParameters            dd_newton;
+    MonolithicParameters          monolithic;
+
+    /** Exact contact (theta = 0) solved directly by dd-newton with one
+     * multiplier per node of S_1 (ContactInterface); the other solvers
+     * reach exact contact through the Uzawa loop. */
+    bool
+    exact_contact() const
+    {
+      return augmented_lagrangian && solver == ContactSolverType::dd_newton;
+    }
+
+    /** dd-newton's unknowns are one pressure per node of S_1: for exact
+     * contact, and for the penalty with Contact pressure = nodes. */
+    bool
+    multipliers_on_nodes() const
+    {
+      return exact_contact() ||
+             (pressure_on_nodes && solver == ContactSolverType::dd_newton);
+    }
+
+    static void
+    declare(ParameterHandler &prm);
+
+    void
+    parse(ParameterHandler &prm);
+
+    /** Set the formulation of the scene's pairs (exact or the penalty) and
+     * with it the Contact pressure of auto: nodes wherever the solver
+     * takes them (dd-newton; monolithic with the penalty), else points.
+     * Refuses an explicit nodes that the solver cannot take. */
+    void
+    set_formulation(bool exact);
+  };
+
+  /** The one-line error for an entry (@p entry as written there) of the
+   * retired top-level subsection "Domain decomposition": where it is now. */
+  std::string
+  moved_solver_entry(const std::string &entry);
+} // namespace ddcontact
+
+#endif
