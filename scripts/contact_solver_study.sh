@@ -54,6 +54,7 @@ run() { # scene c r solver
     --set "Contact solver/Tolerance=1e-8" \
     --set "Contact pair S/Formulation=penalty" \
     --set "Contact solver/DD-Newton/Max Newton iterations=40" \
+    --set "Contact solver/Monolithic/Max Newton iterations=40" \
     --set "Contact solver/Max iterations=2000" \
     "${mesh_args[@]}" "${args[@]}" > "$out/log" 2>&1
   local code=$?

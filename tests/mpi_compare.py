@@ -32,7 +32,7 @@ import sys
 TOLERANCE = 1e-10
 # Not results: where the bodies were solved, and how long it took.
 IGNORED = {"mpi_processes", "body_owners", "wall_time_s", "timings",
-           "distributed_mesh", "peak_memory", "mesh_memory_mb"}
+           "distributed_mesh", "peak_memory", "mesh_memory_mb", "processes"}
 # Changes of the iterate divided by its norm: already relative to the
 # solution, so compared to 1e-10 absolutely (a different direct solver's
 # round-off, 1e-16 of |u|, is 1e-10 of a residual of 1e-6).
@@ -120,6 +120,22 @@ def main():
                                      "--allow-idle" not in rest):
         failures.append(f"the {n}-process run did not use all processes "
                         f"({two['body_owners']})")
+    # summary.json's processes: every dof owned by exactly one process
+    # (the owned dofs sum to the bodies' dofs), one entry per process, and
+    # nothing sent by a single process.
+    for run_summary, n_run in ((one, 1), (two, n)):
+        processes = run_summary.get("processes", [])
+        owned = sum(p["owned_dofs"] for p in processes)
+        dofs = sum(b["dofs"] for b in run_summary["bodies"])
+        print(f"  {n_run} process(es): owned dofs "
+              f"{[p['owned_dofs'] for p in processes]} of {dofs}, bytes sent "
+              f"{[p['bytes_sent'] for p in processes]}")
+        if len(processes) != n_run or owned != dofs:
+            failures.append(f"{n_run} process(es): processes lists "
+                            f"{len(processes)} entries owning {owned} dofs, "
+                            f"the bodies have {dofs}")
+        if n_run == 1 and processes and processes[0]["bytes_sent"] != 0:
+            failures.append("one process reports bytes sent")
     if expect_repartition and "bodies now solved on processes" not in log:
         failures.append("no body moved to another process after refinement")
     meshes = {b["name"]: b.get("distributed_mesh") for b in two["bodies"]}

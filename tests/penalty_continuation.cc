@@ -56,7 +56,8 @@ main(int argc, char **argv)
     "Contact solver/Solver=dd-newton",
     "Contact pair S/Formulation=exact",
     "Contact solver/Tolerance=1e-10",
-    "Contact solver/DD-Newton/Max Newton iterations=300"};
+    "Contact solver/DD-Newton/Max Newton iterations=300",
+    "Contact solver/Monolithic/Max Newton iterations=300"};
 
   // 1. A plate of H/L = 0.01 clamped at its ends, pressed by a pressure onto
   //    the block across the gap r0 x^2 (scripts/stability_matrix.sh): its

@@ -224,7 +224,21 @@ namespace ddcontact
     if (!owns(b))
       v.reinit(bodies[b]->n_dofs());
     AssertDimension(v.size(), bodies[b]->n_dofs());
+    if (this_process == owner_of(b))
+      bytes_shared += sizeof(double) * v.size() * (n_procs - 1);
     Utilities::MPI::broadcast(v.data(), v.size(), owner_of(b), communicator);
+  }
+
+  types::global_dof_index
+  BodyDistribution::owned_dofs() const
+  {
+    types::global_dof_index n = 0;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (bodies[b]->is_solved_distributed())
+        n += bodies[b]->get_dof_handler().locally_owned_dofs().n_elements();
+      else if (this_process == owner_of(b))
+        n += bodies[b]->n_dofs();
+    return n;
   }
 
   void

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <ddcontact/body/reaction_forces.h>
+#include <ddcontact/io/process_report.h>
 #include <ddcontact/io/run_report.h>
 #include <ddcontact/output_file.h>
 #include <ddcontact/version.h>
@@ -644,14 +645,12 @@ namespace ddcontact
     json["wall_time_s"] = wall_clock.wall_time();
     json["timings"]     = timings_json(results);
 
-    // Peak resident memory (VmHWM) of the processes: what a distributed
-    // mesh saves.
-    Utilities::System::MemoryStats memory;
-    Utilities::System::get_memory_stats(memory);
-    const double peak_mb = memory.VmHWM / 1024.;
-    json["peak_memory"]  = {
-       {"largest_process_mb", Utilities::MPI::max(peak_mb, MPI_COMM_WORLD)},
-       {"all_processes_mb", Utilities::MPI::sum(peak_mb, MPI_COMM_WORLD)}};
+    // Peak resident memory (VmHWM): what a distributed mesh saves; per
+    // process, with its dofs and the bytes it sent.
+    json["peak_memory"] = peak_memory_json();
+    json["processes"]   = processes_json(
+      results.distribution,
+      results.contact_solver ? results.contact_solver->history().size() : 0);
 
     summary_json = json;
     if (writes_files)

@@ -9,6 +9,7 @@
 #include <ddcontact/body/parallel_parameters.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -145,6 +146,21 @@ namespace ddcontact
       return seconds_exchanging;
     }
 
+    /** The dofs this process owns: its part of every body partitioned
+     * over its process group, and every body it solves alone. Its copies of
+     * the bodies solved elsewhere are not counted. */
+    types::global_dof_index
+    owned_dofs() const;
+
+    /** Bytes of body vectors this process has sent by share() over the
+     * run (a broadcast counted as one message per receiving process): the
+     * whole iterates that every process still holds. */
+    std::uint64_t
+    bytes_sent() const
+    {
+      return bytes_shared;
+    }
+
     /** "omega1: 0, omega2: 1-2": the processes of every body, for the
      * screen and summary. */
     std::string
@@ -160,6 +176,7 @@ namespace ddcontact
     bool                                   groups_chosen      = false;
     mutable double                         seconds_solving    = 0;
     mutable double                         seconds_exchanging = 0;
+    mutable std::uint64_t                  bytes_shared       = 0;
   };
 } // namespace ddcontact
 
