@@ -132,14 +132,6 @@ namespace ddcontact
     interface          = &contact_interface;
     const auto &bodies = problem.get_bodies();
     const auto &pairs  = problem.get_pairs();
-    for (const auto *body : bodies)
-      if (body->is_solved_distributed())
-        throw InputError("Contact solver/Solver = dd-newton: body '" +
-                         body->name() +
-                         "' is solved by a group of processes, whose "
-                         "distributed matrix the preconditioner cannot "
-                         "factorize; use at most one process per body "
-                         "(Parallel/Body owners)");
 
     // Body 2 takes its share of a pair wherever its trace determines the
     // unknowns: always on the points, for nodal multipliers when the
@@ -239,6 +231,11 @@ namespace ddcontact
   void
   RobinPreconditioner::make_pattern(const unsigned int b)
   {
+    factors[b] = std::make_unique<BodyFactor>();
+    // A body of a process group builds its pattern with each factorization
+    // (factorize_with_springs()).
+    if (problem.get_bodies()[b]->is_solved_distributed())
+      return;
     // The stiffness plus the springs c_i c_i^T of the body's unknowns, on
     // the masters of their dofs.
     const auto            &K = problem.get_bodies()[b]->get_stiffness_matrix();
@@ -250,15 +247,27 @@ namespace ddcontact
       for (const auto i : row.dofs)
         for (const auto j : row.dofs)
           dsp.add(i, j);
-    factors[b] = std::make_unique<BodyFactor>();
     factors[b]->sparsity.copy_from(dsp);
   }
 
   void
   RobinPreconditioner::factorize(const unsigned int b)
   {
-    const auto &K      = problem.get_bodies()[b]->get_stiffness_matrix();
-    auto       &factor = *factors[b];
+    auto &factor = *factors[b];
+    if (problem.get_bodies()[b]->is_solved_distributed())
+    {
+      // Springs m_i / (alpha theta_i) at the active unknowns, MUMPS over
+      // the body's group.
+      std::vector<DofSprings> active_springs;
+      for (const auto &row : rows[b])
+        if (springs[row.unknown])
+          active_springs.push_back({row.dofs, row.c, row.spring});
+      factor.group.reset();
+      factor.group =
+        problem.get_bodies()[b]->factorize_with_springs(active_springs);
+      return;
+    }
+    const auto &K = problem.get_bodies()[b]->get_stiffness_matrix();
     factor.matrix.reinit(factor.sparsity);
     for (types::global_dof_index i = 0; i < K.m(); ++i)
       for (auto it = K.begin(i); it != K.end(i); ++it)
@@ -301,7 +310,11 @@ namespace ddcontact
       {
         // A body without rows (body 2 of exact contact) adds nothing.
         v[b].reinit(bodies[b]->n_dofs());
-        if (!rows[b].empty())
+        if (rows[b].empty())
+          return;
+        if (factors[b]->group)
+          factors[b]->group->solve(rhs[b], v[b]);
+        else
           factors[b]->direct.vmult(v[b], rhs[b]);
       },
       v);

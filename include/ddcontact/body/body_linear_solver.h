@@ -36,6 +36,28 @@ namespace ddcontact
    * Each owns its matrix and its load vector of body force and tractions
    * (12); the body assembles into them through add().
    */
+  /** Springs s c c^T on the dofs of one contact unknown, added to a
+   * body's stiffness (the Robin problems of RobinPreconditioner). */
+  struct DofSprings
+  {
+    std::vector<types::global_dof_index> dofs;
+    std::vector<double>                  c;
+    double                               stiffness = 0;
+  };
+
+  /** A factorization of a body's stiffness plus springs, over the
+   * processes of its group. */
+  class SpringFactorization
+  {
+  public:
+    virtual ~SpringFactorization() = default;
+
+    /** v = (K + springs)^{-1} @p rhs, @p rhs and @p v whole on every
+     * process of the group; collective over the group. */
+    virtual void
+    solve(const Vector<double> &rhs, Vector<double> &v) const = 0;
+  };
+
   template <int dim>
   class BodyLinearSolver
   {
@@ -96,6 +118,12 @@ namespace ddcontact
 
     virtual const Vector<double> &
     load_vector() const;
+
+    /** The stiffness plus @p springs factorized by MUMPS over the process
+     * group of a body solved by one (a serial body's preconditioner
+     * factorizes its own copy of matrix()). Collective over the group. */
+    virtual std::unique_ptr<SpringFactorization>
+    factorize_with_springs(const std::vector<DofSprings> &springs) const;
   };
 } // namespace ddcontact
 

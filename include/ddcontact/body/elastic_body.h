@@ -292,6 +292,14 @@ namespace ddcontact
                            Vector<double>       &r,
                            Vector<double>       &load) const;
 
+    /** The stiffness plus @p springs, factorized over the process group
+     * of a body solved by one (is_solved_distributed()); collective. */
+    std::unique_ptr<SpringFactorization>
+    factorize_with_springs(const std::vector<DofSprings> &springs) const
+    {
+      return linear_solver->factorize_with_springs(springs);
+    }
+
     /** The assembled stiffness matrix (on a body solved here by one
      * process). */
     const SparseMatrix<double> &

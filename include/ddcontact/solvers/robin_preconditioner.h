@@ -5,6 +5,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
+#include <ddcontact/body/body_linear_solver.h>
 #include <ddcontact/solvers/contact_interface.h>
 
 #include <algorithm>
@@ -70,7 +71,7 @@ namespace ddcontact
     explicit RobinPreconditioner(const ContactProblem &problem);
 
     /** Take the points and penalties of @p interface (after the pairs were
-     * set up). Throws InputError for a body solved by a process group. */
+     * set up). */
     void
     setup(const ContactInterface &interface);
 
@@ -138,12 +139,14 @@ namespace ddcontact
       bool preconditions = true;
     };
 
-    /** The Robin matrix of one body and its factorization. */
+    /** The Robin matrix of one body and its factorization: UMFPACK on
+     * one process, or MUMPS over the body's process group (group). */
     struct BodyFactor
     {
-      SparsityPattern      sparsity;
-      SparseMatrix<double> matrix;
-      SparseDirectUMFPACK  direct;
+      SparsityPattern                      sparsity;
+      SparseMatrix<double>                 matrix;
+      SparseDirectUMFPACK                  direct;
+      std::unique_ptr<SpringFactorization> group;
     };
 
     /** The theta of unknown @p i in the preconditioner: the interface's,
