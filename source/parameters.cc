@@ -34,6 +34,18 @@ namespace ddcontact
       return {keyword, Utilities::trim(text.substr(keyword.size()))};
     }
 
+    /** Follow one line (split_keyword()) through the subsections: @p path
+     * gains the subsection the line opens and loses the one it ends. */
+    void
+    follow_sections(std::vector<std::string>                  &path,
+                    const std::pair<std::string, std::string> &line)
+    {
+      if (line.first == "subsection")
+        path.push_back(line.second);
+      else if (line.first == "end" && line.second.empty() && !path.empty())
+        path.pop_back();
+    }
+
     /** The subsections open before line @p n of @p text ("Body a/Mesh"):
      * deal.II names only the entry whose value does not match its pattern,
      * and our own checks name the section too. */
@@ -44,13 +56,7 @@ namespace ddcontact
       std::string              line;
       std::vector<std::string> path;
       for (unsigned int i = 1; i < n && std::getline(lines, line); ++i)
-      {
-        const auto [keyword, rest] = split_keyword(line);
-        if (keyword == "subsection")
-          path.push_back(rest);
-        else if (keyword == "end" && rest.empty() && !path.empty())
-          path.pop_back();
-      }
+        follow_sections(path, split_keyword(line));
       std::string section;
       for (const auto &p : path)
         section += (section.empty() ? "" : "/") + p;
@@ -69,7 +75,8 @@ namespace ddcontact
       std::vector<std::string> path;
       for (unsigned int n = 1; std::getline(lines, line); ++n)
       {
-        const auto [keyword, rest] = split_keyword(line);
+        const auto split            = split_keyword(line);
+        const auto &[keyword, rest] = split;
         const bool retired =
           path.size() == 1 && path[0] == "Domain decomposition";
         if (retired && (keyword == "set" || keyword == "end"))
@@ -78,10 +85,7 @@ namespace ddcontact
                              keyword == "set"
                                ? Utilities::trim(rest.substr(0, rest.find('=')))
                                : ""));
-        if (keyword == "subsection")
-          path.push_back(rest);
-        else if (keyword == "end" && rest.empty() && !path.empty())
-          path.pop_back();
+        follow_sections(path, split);
       }
     }
 
@@ -346,8 +350,8 @@ namespace ddcontact
     // refinement; the monolithic solver has no such steps.
     if (adaptation.mode == AdaptationMode::combined &&
         contact_solver.solver == ContactSolverType::monolithic)
-      throw InputError("Adaptation/Mode: combined needs Domain "
-                       "decomposition/Solver = dd-newton or dd; use Mode = "
+      throw InputError("Adaptation/Mode: combined needs Contact "
+                       "solver/Solver = dd-newton or dd; use Mode = "
                        "nested with the monolithic solver");
     prm.enter_subsection("Parallel");
     parallel.parse(prm, body_names);

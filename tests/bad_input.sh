@@ -66,7 +66,7 @@ case_ "--set of an undeclared entry" "No such entry" "$base" --set "Body lower/N
 case_ "report point outside its body" "Output/Points" "$base" --set "Output/Points=lower: 9, 9"
 case_ "contact pair with unknown body" "Contact pair S" "$src/prm/paper_two_bodies.prm" --set "Contact pair S/Body 2=nobody"
 case_ "gamma outside (0, 1]" "Gamma" "$src/prm/paper_two_bodies.prm" --set "Contact solver/Domain decomposition/Gamma=0"
-case_ "combined with the monolithic solver" "Adaptation/Mode" "$src/prm/paper_two_bodies.prm" --set "Contact solver/Solver=monolithic"
+case_ "combined with the monolithic solver" "Adaptation/Mode: combined needs Contact solver/Solver = dd-newton or dd" "$src/prm/paper_two_bodies.prm" --set "Contact solver/Solver=monolithic"
 case_ "body owner names no body" "Parallel/Body owners" "$base" --set "Parallel/Body owners=lower: 0, nobody: 0"
 case_ "body owner on a missing process" "does not exist" "$base" --set "Parallel/Body owners=lower: 0, upper: 3"
 case_ "body without owner" "'upper' is not listed" "$base" --set "Parallel/Body owners=lower: 0"

@@ -181,8 +181,8 @@ namespace ddcontact
         // Row by row: K's entries of each owned row with the springs'
         // entries of that row merged in, inserted in one call per row
         // (entry by entry, the copy of 8.9e4 dofs took 20 s; 0.08 s so).
-        const auto &owned = system.owned;
-        const auto &K     = system.matrix;
+        const auto             &owned = system.owned;
+        const Epetra_CrsMatrix &K     = system.matrix.trilinos_matrix();
         std::map<types::global_dof_index,
                  std::map<types::global_dof_index, double>>
           extra;
@@ -201,13 +201,15 @@ namespace ddcontact
           // Epetra's view of the row (deal.II's row iterator copies the
           // row again for every entry).
           std::map<types::global_dof_index, double> row;
-          const Epetra_CrsMatrix                   &E = K.trilinos_matrix();
-          int                                       n = 0;
-          double                                   *v = nullptr;
-          int                                      *c = nullptr;
-          E.ExtractMyRowView(E.RowMap().LID(static_cast<int>(i)), n, v, c);
-          for (int k = 0; k < n; ++k)
-            row[E.ColMap().GID(c[k])] += v[k];
+          int                                       length      = 0;
+          double                                   *row_values  = nullptr;
+          int                                      *row_columns = nullptr;
+          K.ExtractMyRowView(K.RowMap().LID(static_cast<int>(i)),
+                             length,
+                             row_values,
+                             row_columns);
+          for (int k = 0; k < length; ++k)
+            row[K.ColMap().GID(row_columns[k])] += row_values[k];
           if (const auto e = extra.find(i); e != extra.end())
             for (const auto &[j, v] : e->second)
               row[j] += v;
