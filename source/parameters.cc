@@ -356,7 +356,6 @@ namespace ddcontact
     prm.enter_subsection("Parallel");
     parallel.parse(prm, body_names);
     prm.leave_subsection();
-    parallel.groups_for_auto = (contact_solver.solver == ContactSolverType::dd);
     // An explicit request for p4est meshes that a quadrilateral body cannot
     // have is an error, not a silent fallback (triangles are always shared).
     if (parallel.mesh == MeshPartition::distributed && n_world_processes() > 1)

@@ -352,7 +352,8 @@ namespace ddcontact
 
   std::vector<SymmetricTensor<2, 2>>
   BoundaryElementSolver::evaluate_stress(const std::vector<Point<2>> &points,
-                                         const bool hierarchical) const
+                                         const bool     hierarchical,
+                                         const MPI_Comm communicator) const
   {
     Assert(is_solved, ExcMessage("Call solve() first."));
     Timer timer;
@@ -367,7 +368,7 @@ namespace ddcontact
     {
       // Hierarchical evaluation (cost about linear in the points instead
       // of points x elements).
-      stress = FarFieldStresses(mesh, kelvin).evaluate(scaled);
+      stress = FarFieldStresses(mesh, kelvin).evaluate(scaled, communicator);
       for (auto &s : stress)
         s *= mu;
     }
@@ -474,13 +475,14 @@ namespace ddcontact
           const auto &q_points = fe_values.get_quadrature_points();
           points.insert(points.end(), q_points.begin(), q_points.end());
         }
-      // The choice of the evaluation follows the whole mesh, as on one
-      // process.
-      const auto stress = evaluate_stress(
-        points,
-        hierarchical(
-          std::size_t(dof_handler.get_triangulation().n_global_active_cells()) *
-          quadrature.size()));
+      // The choice of the evaluation, and its boxes, follow the whole
+      // mesh, as on one process.
+      const auto &tria = dof_handler.get_triangulation();
+      const auto  stress =
+        evaluate_stress(points,
+                        hierarchical(std::size_t(tria.n_global_active_cells()) *
+                                     quadrature.size()),
+                        tria.get_communicator());
       std::vector<std::vector<SymmetricTensor<2, 2>>> result(n_cells);
       std::size_t                                     p = 0;
       for (const auto &cell : dof_handler.active_cell_iterators())

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace ddcontact
@@ -91,33 +92,124 @@ namespace ddcontact
   {
   }
 
+  unsigned int
+  FarFieldStresses::TargetBox::quadrant(const Point<2> &y) const
+  {
+    const double half = 0.5 * side;
+    return 2 * (y[0] >= lower[0] + half) + (y[1] >= lower[1] + half);
+  }
+
+  FarFieldStresses::TargetBox
+  FarFieldStresses::TargetBox::child(const unsigned int q) const
+  {
+    const double half = 0.5 * side;
+    return {lower + Tensor<1, 2>({half * (q / 2), half * (q % 2)}), half};
+  }
+
+  namespace
+  {
+    // A box with at most this many points (of all processes) is a leaf:
+    // integrating its remaining elements at the points is cheaper than at
+    // the interpolation nodes.
+    constexpr std::size_t leaf_points = 2 * ChebyshevRule::n * ChebyshevRule::n;
+    constexpr unsigned    max_depth   = 30;
+
+    bool
+    is_parallel(const MPI_Comm communicator)
+    {
+      return Utilities::MPI::job_supports_mpi() &&
+             Utilities::MPI::n_mpi_processes(communicator) > 1;
+    }
+  } // namespace
+
+  std::vector<std::uint64_t>
+  FarFieldStresses::subdivided_boxes(const std::vector<Point<2>> &x,
+                                     const TargetBox             &root,
+                                     const MPI_Comm               communicator)
+  {
+    // Level by level: every process lists the same boxes (all four
+    // children of a subdivided box, empty here or not) with its own
+    // points, and one sum per level gives the counts of the whole set.
+    struct LevelBox
+    {
+      TargetBox                box;
+      std::uint64_t            key;
+      std::vector<std::size_t> points;
+    };
+    std::vector<LevelBox> level(1, LevelBox{root, 1, {}});
+    level[0].points.resize(x.size());
+    std::iota(level[0].points.begin(), level[0].points.end(), std::size_t(0));
+
+    std::vector<std::uint64_t> subdivided;
+    for (unsigned int depth = 0; depth < max_depth && !level.empty(); ++depth)
+    {
+      std::vector<double> counts(level.size()); // exact below 2^53
+      for (std::size_t b = 0; b < level.size(); ++b)
+        counts[b] = level[b].points.size();
+      if (is_parallel(communicator))
+        Utilities::MPI::sum(ArrayView<const double>(counts),
+                            communicator,
+                            ArrayView<double>(counts));
+
+      std::vector<LevelBox> next;
+      for (std::size_t b = 0; b < level.size(); ++b)
+        if (counts[b] > leaf_points)
+        {
+          subdivided.push_back(level[b].key);
+          std::array<LevelBox, 4> children;
+          for (unsigned int q = 0; q < 4; ++q)
+            children[q] = {level[b].box.child(q), 4 * level[b].key + q, {}};
+          for (const std::size_t i : level[b].points)
+            children[level[b].box.quadrant(x[i])].points.push_back(i);
+          for (auto &c : children)
+            next.push_back(std::move(c));
+        }
+      level = std::move(next);
+    }
+    std::sort(subdivided.begin(), subdivided.end());
+    return subdivided;
+  }
+
   std::vector<SymmetricTensor<2, 2>>
-  FarFieldStresses::evaluate(const std::vector<Point<2>> &points) const
+  FarFieldStresses::evaluate(const std::vector<Point<2>> &points,
+                             const MPI_Comm               communicator) const
   {
     std::vector<SymmetricTensor<2, 2>> stress(points.size());
-    if (points.empty())
-      return stress;
-    Point<2> lo = points[0], hi = points[0];
+    // The root: the bounding box of all processes' points.
+    const double          big = std::numeric_limits<double>::max();
+    std::array<double, 4> bounds{{big, big, big, big}}; // -x0, -x1, x0, x1
     for (const auto &y : points)
       for (unsigned int d = 0; d < 2; ++d)
       {
-        lo[d] = std::min(lo[d], y[d]);
-        hi[d] = std::max(hi[d], y[d]);
+        bounds[d]     = std::min(bounds[d], y[d]);
+        bounds[2 + d] = std::min(bounds[2 + d], -y[d]);
       }
+    if (is_parallel(communicator))
+      Utilities::MPI::min(ArrayView<const double>(bounds),
+                          communicator,
+                          ArrayView<double>(bounds));
+    if (bounds[0] == big) // no point on any process
+      return stress;
+    const Point<2> lo(bounds[0], bounds[1]), hi(-bounds[2], -bounds[3]);
     const double side = 1.001 * std::max(hi[0] - lo[0], hi[1] - lo[1]) + 1e-12;
     const TargetBox root{lo - Tensor<1, 2>({5e-4 * side, 5e-4 * side}), side};
+    const auto      subdivided = subdivided_boxes(points, root, communicator);
+
     std::vector<std::size_t> all_points(points.size());
     std::iota(all_points.begin(), all_points.end(), std::size_t(0));
     std::vector<unsigned int> all_elements(mesh.get_elements().size());
     std::iota(all_elements.begin(), all_elements.end(), 0u);
-    stresses_in_box(points,
-                    std::move(all_points),
-                    root,
-                    std::move(all_elements),
-                    nullptr,
-                    nullptr,
-                    stress,
-                    0);
+    if (!points.empty())
+      stresses_in_box(points,
+                      std::move(all_points),
+                      root,
+                      std::move(all_elements),
+                      nullptr,
+                      nullptr,
+                      stress,
+                      subdivided,
+                      1,
+                      0);
     return stress;
   }
 
@@ -130,6 +222,8 @@ namespace ddcontact
     const TargetBox                          *parent,
     const std::vector<SymmetricTensor<2, 2>> *parent_values,
     std::vector<SymmetricTensor<2, 2>>       &stress,
+    const std::vector<std::uint64_t>         &subdivided,
+    const std::uint64_t                       key,
     const unsigned int                        depth) const
   {
     const ChebyshevRule &cheb = chebyshev_rule();
@@ -142,10 +236,10 @@ namespace ddcontact
                     : SymmetricTensor<2, 2>();
     };
 
-    // A box with few points: integrating its remaining elements at the
-    // points is cheaper than at the interpolation nodes.
+    // A leaf (few points in the whole set): its remaining elements are
+    // integrated at the points.
     const unsigned int n_nodes = ChebyshevRule::n * ChebyshevRule::n;
-    if (points.size() <= 2 * n_nodes || depth >= 30)
+    if (!std::binary_search(subdivided.begin(), subdivided.end(), key))
     {
       for (const std::size_t i : points)
         stress[i] = inherited(x[i]) + BoundaryIntegration::somigliana_stress(
@@ -195,28 +289,24 @@ namespace ddcontact
       child_values = &values;
     }
 
-    // Quadrants; a point on a dividing line goes to the upper one.
-    const double                            half = 0.5 * box.side;
     std::array<std::vector<std::size_t>, 4> quadrant_points;
     for (const std::size_t i : points)
-      quadrant_points[2 * (x[i][0] >= box.lower[0] + half) +
-                      (x[i][1] >= box.lower[1] + half)]
-        .push_back(i);
+      quadrant_points[box.quadrant(x[i])].push_back(i);
     points.clear();
 
     const auto child = [&](const unsigned int q)
     {
       if (quadrant_points[q].empty())
         return;
-      const TargetBox sub{
-        box.lower + Tensor<1, 2>({half * (q / 2), half * (q % 2)}), half};
       stresses_in_box(x,
                       std::move(quadrant_points[q]),
-                      sub,
+                      box.child(q),
                       std::vector<unsigned int>(near),
                       child_parent,
                       child_values,
                       stress,
+                      subdivided,
+                      4 * key + q,
                       depth + 1);
     };
     // The top levels spread over the threads; below, one task per subtree.

@@ -76,13 +76,15 @@ namespace ddcontact
           }
       }
 
-    // The choice of the evaluation follows the whole mesh: the same on any
-    // number of processes. A distributed mesh evaluates its own points.
+    // The choice of the evaluation, and the boxes of the hierarchical one,
+    // follow the whole mesh: the same on any number of processes. A
+    // distributed mesh evaluates its own points.
     const bool hierarchical_evaluation =
       hierarchical(std::size_t(tria.n_global_active_cells()) * n_q);
     const auto stress =
       distributed
-        ? evaluate_stress(points, hierarchical_evaluation)
+        ? evaluate_stress(
+            points, hierarchical_evaluation, tria.get_communicator())
         : stress_at_points(points, communicator, hierarchical_evaluation);
 
     std::vector<std::vector<SymmetricTensor<2, 2>>> result(

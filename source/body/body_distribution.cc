@@ -216,6 +216,54 @@ namespace ddcontact
   }
 
   void
+  BodyDistribution::solve_and_share_traces(
+    const std::function<void(unsigned int)>                 &solve,
+    std::vector<Vector<double>>                             &per_body,
+    const std::vector<std::vector<types::global_dof_index>> &traces) const
+  {
+    AssertDimension(per_body.size(), bodies.size());
+    AssertDimension(traces.size(), bodies.size());
+    Timer timer;
+    for_each_body(solve, true);
+    seconds_solving += timer.wall_time();
+    timer.restart();
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      share_trace(b, per_body[b], traces[b]);
+    seconds_exchanging += timer.wall_time();
+  }
+
+  void
+  BodyDistribution::share_trace(
+    const unsigned int                          b,
+    Vector<double>                             &v,
+    const std::vector<types::global_dof_index> &dofs) const
+  {
+    if (n_procs == 1)
+      return;
+    // The owner's list with its values in one message: dofs (exact as
+    // doubles below 2^53), then values.
+    const bool          sender = this_process == owner_of(b);
+    std::vector<double> message;
+    if (sender)
+    {
+      AssertDimension(v.size(), bodies[b]->n_dofs());
+      message.reserve(2 * dofs.size());
+      for (const auto i : dofs)
+        message.push_back(static_cast<double>(i));
+      for (const auto i : dofs)
+        message.push_back(v(i));
+      bytes_shared += sizeof(double) * message.size() * (n_procs - 1);
+    }
+    message = Utilities::MPI::broadcast(communicator, message, owner_of(b));
+    if (owns(b))
+      return;
+    v.reinit(bodies[b]->n_dofs());
+    const std::size_t n = message.size() / 2;
+    for (std::size_t k = 0; k < n; ++k)
+      v(static_cast<types::global_dof_index>(message[k])) = message[n + k];
+  }
+
+  void
   BodyDistribution::share(const unsigned int b, Vector<double> &v) const
   {
     if (n_procs == 1)

@@ -31,9 +31,7 @@ namespace ddcontact
       "'auto': with at most as many processes as bodies, each body on one "
       "process (balancing the dofs, again after every refinement); with more "
       "processes, every body on its own group of processes, the group sizes "
-      "in proportion to the dofs (Solver = dd; dd-newton keeps each body on "
-      "one process, and the extra processes idle). 'all': every body on all "
-      "processes, one "
+      "in proportion to the dofs. 'all': every body on all processes, one "
       "body after the other. Or a list 'name: 0, name: 1-3' for every body "
       "(a process or a range of processes). A body on several processes has "
       "its mesh partitioned between them and is solved by a distributed "
@@ -84,7 +82,7 @@ namespace ddcontact
     if (mode == BodyOwners::all)
       return true;
     if (mode == BodyOwners::automatic)
-      return groups_for_auto && n_processes > n_bodies;
+      return n_processes > n_bodies;
     for (const auto &[name, group] : body_groups)
       if (group.size() > 1)
         return true;

@@ -1,6 +1,7 @@
 #include <ddcontact/contact/contact_problem.h>
 #include <ddcontact/parameter_tools.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -63,10 +64,35 @@ namespace ddcontact
     return u;
   }
 
+  std::vector<std::vector<types::global_dof_index>>
+  ContactProblem::trace_dofs() const
+  {
+    std::vector<std::vector<types::global_dof_index>> dofs(bodies.size());
+    for (const auto *pair : pairs)
+    {
+      auto &d1 = dofs[body_index(pair->get_body_1())];
+      auto &d2 = dofs[body_index(pair->get_body_2())];
+      for (const auto &point : pair->points())
+      {
+        d1.insert(d1.end(), point.dofs_1.begin(), point.dofs_1.end());
+        d1.insert(d1.end(), point.load_dofs_1.begin(), point.load_dofs_1.end());
+        d2.insert(d2.end(), point.dofs_2.begin(), point.dofs_2.end());
+        d2.insert(d2.end(), point.load_dofs_2.begin(), point.load_dofs_2.end());
+      }
+    }
+    for (auto &d : dofs)
+    {
+      std::sort(d.begin(), d.end());
+      d.erase(std::unique(d.begin(), d.end()), d.end());
+    }
+    return dofs;
+  }
+
   void
   ContactProblem::solve_all(const Iterate &loads,
                             Iterate       &u,
-                            const bool     homogeneous) const
+                            const bool     homogeneous,
+                            const Exchange exchange) const
   {
     // A contact load beyond the floating-point range would come back as a
     // non-finite displacement blamed on the body; name the pairs instead.
@@ -88,28 +114,31 @@ namespace ddcontact
     // The body problems of (20) are independent: solve them concurrently,
     // each on the process that owns it.
     u.resize(bodies.size());
-    distribution.solve_and_share(
-      [&](const unsigned int b)
-      {
-        if (homogeneous)
-          bodies[b]->solve_homogeneous(loads[b], u[b]);
-        else
-          bodies[b]->solve(loads[b], u[b]);
-      },
-      u);
+    const auto solve = [&](const unsigned int b)
+    {
+      if (homogeneous)
+        bodies[b]->solve_homogeneous(loads[b], u[b]);
+      else
+        bodies[b]->solve(loads[b], u[b]);
+    };
+    if (exchange == Exchange::traces)
+      distribution.solve_and_share_traces(solve, u, trace_dofs());
+    else
+      distribution.solve_and_share(solve, u);
   }
 
   void
   ContactProblem::solve_bodies(const std::vector<std::vector<double>> &sigma_n,
                                Iterate                                &u,
-                               const bool homogeneous) const
+                               const bool     homogeneous,
+                               const Exchange exchange) const
   {
     Iterate loads = zero_iterate();
     for (unsigned int p = 0; p < pairs.size(); ++p)
       pairs[p]->add_contact_loads(sigma_n[p],
                                   loads[body_index(pairs[p]->get_body_1())],
                                   loads[body_index(pairs[p]->get_body_2())]);
-    solve_all(loads, u, homogeneous);
+    solve_all(loads, u, homogeneous, exchange);
   }
 
   std::vector<double>

@@ -215,7 +215,9 @@ namespace ddcontact
                           ContactProblem::Iterate &u,
                           PointVector             &Sx) const
   {
-    problem.solve_bodies(normal_stresses(x), u, true);
+    // Only S x is read: the other processes need the traces alone.
+    problem.solve_bodies(
+      normal_stresses(x), u, true, ContactProblem::Exchange::traces);
     // A pressure pushes the bodies apart: the jump is -S x.
     Sx = average(jump(u));
     for (double &v : Sx)

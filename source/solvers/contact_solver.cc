@@ -132,7 +132,10 @@ namespace ddcontact
   {
     records.push_back(record);
     if (iteration_callback)
+    {
+      complete_iterate();
       iteration_callback(record.iteration);
+    }
     // SIGINT/SIGTERM: stop here, with this iteration recorded.
     interruption::check("contact iteration " +
                         std::to_string(record.iteration));
@@ -267,21 +270,58 @@ namespace ddcontact
   }
 
   bool
-  ContactSolver::step_within_limit(const std::string &loop)
+  ContactSolver::completing(const std::function<bool()> &work)
+  {
+    // The errors that every process meets at the same step (from the
+    // replicated contact data, or agreed over MPI): the last iterate is
+    // then written for diagnosis, so it must be whole too.
+    bool result = false;
+    try
+    {
+      result = work();
+    }
+    catch (const DivergenceError &)
+    {
+      complete_iterate();
+      throw;
+    }
+    catch (const InterruptedError &)
+    {
+      complete_iterate();
+      throw;
+    }
+    complete_iterate();
+    return result;
+  }
+
+  bool
+  ContactSolver::checked_step(const std::string &loop)
   {
     if (records.size() >= parameters.max_iterations)
       stop_at_iteration_limit(loop);
     return step();
   }
 
+  bool
+  ContactSolver::step_within_limit(const std::string &loop)
+  {
+    return completing([&]() { return checked_step(loop); });
+  }
+
   unsigned int
   ContactSolver::run()
   {
-    // The augmented Lagrangian's outer loop around the solver's own.
-    do
-      while (!step_within_limit("the domain decomposition"))
-        ;
-    while (start_uzawa_phase());
+    // The augmented Lagrangian's outer loop around the solver's own; the
+    // whole iterate is exchanged once, at the end.
+    completing(
+      [&]()
+      {
+        do
+          while (!checked_step("the domain decomposition"))
+            ;
+        while (start_uzawa_phase());
+        return true;
+      });
     return records.size();
   }
 

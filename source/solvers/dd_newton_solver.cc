@@ -262,7 +262,9 @@ namespace ddcontact
     alpha_stale = !coarse.empty();
     balanced    = coarse.empty();
     problem.solve_all(ContactProblem::Iterate(problem.get_bodies().size()),
-                      u_0);
+                      u_0,
+                      false,
+                      ContactProblem::Exchange::traces);
     ++n_data_solves;
     u_p = problem.zero_iterate();
     Sp.assign(p.size(), 0.);
@@ -464,6 +466,17 @@ namespace ddcontact
       for (unsigned int k = 0; k < last_sigma_n.size(); ++k)
         problem.law(k).set_contact_pressure(last_sigma_n[k], peak[k]);
     }
+  }
+
+  void
+  DDNewtonSolver::complete_iterate()
+  {
+    if (last_u_tilde.empty())
+      return;
+    problem.get_distribution().share(last_u_tilde);
+    const auto &bodies = problem.get_bodies();
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      bodies[b]->get_solution() = last_u_tilde[b];
   }
 
   bool

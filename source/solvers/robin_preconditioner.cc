@@ -305,7 +305,8 @@ namespace ddcontact
             rhs[b](row.dofs[i]) += s * row.c[i];
         }
     }
-    problem.get_distribution().solve_and_share(
+    // Only the traces of v are read below.
+    problem.get_distribution().solve_and_share_traces(
       [&](const unsigned int b)
       {
         // A body without rows (body 2 of exact contact) adds nothing.
@@ -317,7 +318,8 @@ namespace ddcontact
         else
           factors[b]->direct.vmult(v[b], rhs[b]);
       },
-      v);
+      v,
+      problem.trace_dofs());
     ++applications;
 
     // z = Theta^{-1} (r - sum_b C_b v_b) on the active set (sum_b beta_b =

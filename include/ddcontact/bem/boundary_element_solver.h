@@ -287,10 +287,12 @@ namespace ddcontact
 
   private:
     /** The stresses at @p points, by the hierarchical evaluation or point
-     * by point. */
+     * by point; the hierarchical one builds its boxes from the points of
+     * all processes of @p communicator (a collective call there). */
     std::vector<SymmetricTensor<2, 2>>
     evaluate_stress(const std::vector<Point<2>> &points,
-                    bool                         hierarchical) const;
+                    bool                         hierarchical,
+                    MPI_Comm communicator = MPI_COMM_SELF) const;
 
     void
     assemble_system(FullMatrix<double> &system_matrix);

@@ -1,6 +1,7 @@
 #ifndef ddcontact_far_field_stresses_h
 #define ddcontact_far_field_stresses_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 
@@ -8,6 +9,7 @@
 #include <ddcontact/bem/kelvin_solution.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace ddcontact
@@ -21,6 +23,12 @@ namespace ddcontact
    * interpolant of their (smooth) field, accurate to about 1e-8 of it,
    * and only the nearby elements are integrated at every point. The cost
    * is about linear in the points instead of points x elements.
+   *
+   * The boxes follow the whole set of points, spread over the processes
+   * of a communicator (a distributed mesh, each process with the points
+   * of its own cells): the root box and which boxes are subdivided come
+   * from global reductions, so every point gets the very same value on
+   * any number of processes.
    */
   class FarFieldStresses
   {
@@ -30,9 +38,11 @@ namespace ddcontact
     FarFieldStresses(const BoundaryMesh &mesh, const KelvinSolution &kelvin);
 
     /** The stresses (divided by mu) at the interior @p points (scaled
-     * coordinates, BoundaryMesh::scaled()). */
+     * coordinates, BoundaryMesh::scaled()), this process's share of the
+     * points of all processes of @p communicator (a collective call). */
     std::vector<SymmetricTensor<2, 2>>
-    evaluate(const std::vector<Point<2>> &points) const;
+    evaluate(const std::vector<Point<2>> &points,
+             MPI_Comm                     communicator = MPI_COMM_SELF) const;
 
   private:
     /** A square box of the target tree. */
@@ -40,7 +50,24 @@ namespace ddcontact
     {
       Point<2> lower;
       double   side;
+
+      /** The quadrant (0 to 3) of @p y; a point on a dividing line goes to
+       * the upper one. */
+      unsigned int
+      quadrant(const Point<2> &y) const;
+
+      /** Quadrant @p q as a box. */
+      TargetBox
+      child(unsigned int q) const;
     };
+
+    /** The boxes of the tree below @p root that hold more points than
+     * their leaves should (summed over @p communicator), as sorted keys:
+     * the root is 1, the children of k are 4 k + q. */
+    static std::vector<std::uint64_t>
+    subdivided_boxes(const std::vector<Point<2>> &x,
+                     const TargetBox             &root,
+                     MPI_Comm                     communicator);
 
     /**
      * One box of the hierarchy: @p points (indices into @p x) lie in
@@ -56,6 +83,8 @@ namespace ddcontact
                     const TargetBox                          *parent,
                     const std::vector<SymmetricTensor<2, 2>> *parent_values,
                     std::vector<SymmetricTensor<2, 2>>       &stress,
+                    const std::vector<std::uint64_t>         &subdivided,
+                    std::uint64_t                             key,
                     unsigned int                              depth) const;
 
     const BoundaryMesh   &mesh;

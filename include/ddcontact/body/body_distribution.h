@@ -94,6 +94,19 @@ namespace ddcontact
     solve_and_share(const std::function<void(unsigned int)> &solve,
                     std::vector<Vector<double>>             &per_body) const;
 
+    /**
+     * The same, but the other processes receive only the values of
+     * @p per_body[b] at the dofs @p traces[b] (its zero elsewhere), as its
+     * owner lists them: what an operator that reads the iterate on the
+     * contact zones needs (dd-newton), O(interface) bytes per body
+     * instead of O(volume). The owners keep their whole vectors.
+     */
+    void
+    solve_and_share_traces(
+      const std::function<void(unsigned int)>                 &solve,
+      std::vector<Vector<double>>                             &per_body,
+      const std::vector<std::vector<types::global_dof_index>> &traces) const;
+
     /** Solve every body problem on its owner (a scene without contact)
      * and hand the solutions to all processes. */
     void
@@ -152,9 +165,9 @@ namespace ddcontact
     types::global_dof_index
     owned_dofs() const;
 
-    /** Bytes of body vectors this process has sent by share() over the
-     * run (a broadcast counted as one message per receiving process): the
-     * whole iterates that every process still holds. */
+    /** Bytes of body vectors this process has sent by share() and
+     * solve_and_share_traces() over the run (a broadcast counted as one
+     * message per receiving process). */
     std::uint64_t
     bytes_sent() const
     {
@@ -167,6 +180,13 @@ namespace ddcontact
     describe() const;
 
   private:
+    /** Send the values of @p v at @p dofs (with the dofs) from the owner of
+     * body @p b to all processes; the others' @p v is zero elsewhere. */
+    void
+    share_trace(unsigned int                                b,
+                Vector<double>                             &v,
+                const std::vector<types::global_dof_index> &dofs) const;
+
     std::vector<ElasticBody<2> *>          bodies;
     const ParallelParameters               parameters;
     const MPI_Comm                         communicator;

@@ -73,15 +73,6 @@ namespace ddcontact
     process_groups(unsigned int n_processes, unsigned int n_bodies) const;
 
     /**
-     * Whether "auto" forms process groups when there are more processes
-     * than bodies. Only the paper's DD (Solver = dd) solves a body over a
-     * group; dd-newton's preconditioner factorizes every body on one
-     * process, so the scene turns this off for it (extra processes then
-     * stay idle).
-     */
-    bool groups_for_auto = true;
-
-    /**
      * Whether @p body gets a parallel::distributed::Triangulation (p4est):
      * each process then keeps only its own cells and a ghost layer, so
      * the mesh memory shrinks with the processes. That needs a body of

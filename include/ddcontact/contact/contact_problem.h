@@ -45,6 +45,15 @@ namespace ddcontact
   public:
     using Iterate = std::vector<Vector<double>>;
 
+    /** What the processes that do not solve a body receive of its
+     * solution: the whole vector, or only its values at trace_dofs() (zero
+     * elsewhere), enough for every contact evaluation. */
+    enum class Exchange
+    {
+      whole,
+      traces
+    };
+
     ContactProblem(const std::vector<ElasticBody<2> *> &bodies,
                    const std::vector<ContactPair *>    &pairs,
                    const BodyDistribution              &distribution);
@@ -108,7 +117,10 @@ namespace ddcontact
      * With @p homogeneous, the bodies' own data are left out
      * (ElasticBody::solve_homogeneous()). */
     void
-    solve_all(const Iterate &loads, Iterate &u, bool homogeneous = false) const;
+    solve_all(const Iterate &loads,
+              Iterate       &u,
+              bool           homogeneous = false,
+              Exchange       exchange    = Exchange::whole) const;
 
     /** Solve all bodies loaded by the normal stresses sigma_n (one vector
      * per pair) on their contact zones: one step of (20); with
@@ -116,7 +128,14 @@ namespace ddcontact
     void
     solve_bodies(const std::vector<std::vector<double>> &sigma_n,
                  Iterate                                &u,
-                 bool homogeneous = false) const;
+                 bool                                    homogeneous = false,
+                 Exchange exchange = Exchange::whole) const;
+
+    /** Per body, the dofs (sorted) that the contact evaluations read:
+     * those of the pairs' points, for the normal displacements and for the
+     * loads with the constraints resolved. Exchange::traces sends these. */
+    std::vector<std::vector<types::global_dof_index>>
+    trace_dofs() const;
 
     /** g = f_n - u_1n - u_2n of pair @p p at its points. */
     std::vector<double>

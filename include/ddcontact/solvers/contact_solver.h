@@ -119,7 +119,8 @@ namespace ddcontact
     run();
 
     /** step(), unless Contact solver/Max iterations is reached, where
-     * stop_at_iteration_limit(@p loop) throws instead. */
+     * stop_at_iteration_limit(@p loop) throws instead; then the iterate is
+     * made whole on every process (complete_iterate()). */
     bool
     step_within_limit(const std::string &loop);
 
@@ -241,6 +242,26 @@ namespace ddcontact
      * multipliers): derived classes drop what depends on the old one. */
     virtual void
     start_phase();
+
+    /** step() within Contact solver/Max iterations, without
+     * complete_iterate(). */
+    bool
+    checked_step(const std::string &loop);
+
+    /** @p work, then complete_iterate(), also when @p work stops with an
+     * error that every process meets (divergence, interruption). */
+    bool
+    completing(const std::function<bool()> &work);
+
+    /** Make the bodies' solutions and last_body_solution() whole on
+     * every process, for whoever reads them after step() or run() (the
+     * estimator, the output, the report, the iteration callback). A
+     * solver whose steps exchange less (dd-newton: the traces) sends the
+     * rest here; collective. */
+    virtual void
+    complete_iterate()
+    {
+    }
 
     /** Append @p record to the history and call the iteration callback. */
     void

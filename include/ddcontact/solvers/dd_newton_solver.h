@@ -210,9 +210,16 @@ namespace ddcontact
                         ContactProblem::Iterate &u_x);
 
     /** The bodies' solutions u_0 + u_p, and the last loads and body
-     * solutions for the estimator. */
+     * solutions for the estimator (on the processes that do not solve a
+     * body only its traces, until complete_iterate()). */
     void
     store_iterate();
+
+    /** The body solves send the other processes only the traces that
+     * S x reads (ContactInterface::apply()); here the owners send the
+     * whole u~ once, for the estimator, the output and the report. */
+    void
+    complete_iterate() override;
 
     ContactInterface interface {
       problem, parameters.multipliers_on_nodes(), parameters.exact_contact()
