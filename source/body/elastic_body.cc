@@ -204,10 +204,10 @@ namespace ddcontact
   void
   ElasticBody<dim>::setup_rigid_modes()
   {
-    if (mesh.is_distributed() || mesh.is_shared())
+    if (mesh.is_distributed())
     {
-      // The modes need the whole mesh on one process; a body partitioned
-      // between processes must be held by its Dirichlet conditions.
+      // The modes are computed from every cell: a p4est mesh, which keeps
+      // only its own, must be held by its Dirichlet conditions.
       bool has[2] = {false, false};
       for (const auto &[id, d] : boundary_conditions.dirichlet)
         for (unsigned int c = 0; c < 2; ++c)
@@ -215,9 +215,9 @@ namespace ddcontact
       if (!has[0] || !has[1])
         throw InputError(parameters.section() +
                          "/Dirichlet: a floating body (held only by contact) "
-                         "needs a mesh on one process; prescribe both "
-                         "displacement components somewhere, or use "
-                         "Parallel/Mesh = serial");
+                         "cannot have a distributed (p4est) mesh; use "
+                         "Parallel/Mesh = shared, or prescribe both "
+                         "displacement components somewhere");
       return;
     }
     AffineConstraints<double> closed;
@@ -273,6 +273,11 @@ namespace ddcontact
     mode_loads.clear();
     for (unsigned int k = 0; k < rigid_modes.size(); ++k)
       mode_loads.push_back(rigid_modes.mode(k) * data_load);
+    // Each process of a group assembled its own cells.
+    if (is_solved_distributed() && !mode_loads.empty())
+      Utilities::MPI::sum(ArrayView<const double>(mode_loads),
+                          mesh.group_communicator(),
+                          ArrayView<double>(mode_loads));
     linear_solver->compress();
   }
 

@@ -1,10 +1,13 @@
-#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/base/quadrature.h>
+
+#include <deal.II/fe/fe_values.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <ddcontact/body/rigid_body_modes.h>
 
 #include <cmath>
+#include <set>
 
 namespace ddcontact
 {
@@ -27,13 +30,34 @@ namespace ddcontact
         return;
     const unsigned int n = dof_handler.n_dofs();
 
+    // The support point and component of every dof, from every cell: a
+    // shared mesh holds all cells on every process, so this is the whole
+    // body there too (DoFTools' helpers give a parallel mesh's locally
+    // relevant part only).
+    const FiniteElement<dim> &fe = dof_handler.get_fe();
+    std::vector<Point<dim>>   x(n);
+    std::vector<bool>         is_x(n, false);
+    {
+      FEValues<dim>                        support(mapping,
+                            fe,
+                            Quadrature<dim>(fe.get_unit_support_points()),
+                            update_quadrature_points);
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        support.reinit(cell);
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+        {
+          x[dofs[i]]    = support.quadrature_point(i);
+          is_x[dofs[i]] = fe.system_to_component_index(i).first == 0;
+        }
+      }
+    }
+
     // The three rigid motions at every dof: translations in x and y, and
     // the rotation about the centre of the support points, scaled by the
     // body's size so that the three are of one magnitude.
-    std::vector<Point<dim>> x(n);
-    DoFTools::map_dofs_to_support_points(mapping, dof_handler, x);
-    const IndexSet x_dofs = DoFTools::extract_dofs(
-      dof_handler, ComponentMask(std::vector<bool>{true, false}));
     Point<dim> centre;
     for (const auto &point : x)
       centre += point / static_cast<double>(n);
@@ -43,10 +67,9 @@ namespace ddcontact
     std::vector<std::array<double, 3>> basic(n);
     for (unsigned int i = 0; i < n; ++i)
     {
-      const bool   is_x = x_dofs.is_element(i);
       const double rotation =
-        is_x ? -(x[i][1] - centre[1]) / size : (x[i][0] - centre[0]) / size;
-      basic[i] = {{is_x ? 1. : 0., is_x ? 0. : 1., rotation}};
+        is_x[i] ? -(x[i][1] - centre[1]) / size : (x[i][0] - centre[0]) / size;
+      basic[i] = {{is_x[i] ? 1. : 0., is_x[i] ? 0. : 1., rotation}};
     }
 
     // The free combinations: the kernel of the Gram matrix of the three
@@ -54,11 +77,25 @@ namespace ddcontact
     // held mode has an eigenvalue of at least about one).
     LAPACKFullMatrix<double> gram(3, 3);
     for (const auto &[id, condition] : conditions.dirichlet)
-      for (const auto i :
-           DoFTools::extract_boundary_dofs(dof_handler, condition.mask, {id}))
+    {
+      // The prescribed components on the faces of this id, each dof once
+      // and in ascending order.
+      std::set<types::global_dof_index>    prescribed;
+      std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() == id)
+          {
+            face->get_dof_indices(face_dofs);
+            for (unsigned int k = 0; k < face_dofs.size(); ++k)
+              if (condition.mask[fe.face_system_to_component_index(k).first])
+                prescribed.insert(face_dofs[k]);
+          }
+      for (const auto i : prescribed)
         for (unsigned int a = 0; a < 3; ++a)
           for (unsigned int b = 0; b < 3; ++b)
             gram(a, b) += basic[i][a] * basic[i][b];
+    }
     gram.compute_svd();
     const auto &vt = gram.get_svd_vt();
     for (unsigned int k = 0; k < 3; ++k)
