@@ -18,14 +18,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 r=${1:-6}
 part=${2:-all}
-if [ $# -ge 3 ]; then
-  exe=$(realpath "$3")
-else
-  scripts/install_deps.sh
-  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-  ninja -C build ddcontact
-  exe=build/ddcontact
-fi
+exe=$(scripts/release_executable.sh "${3:-}")
 out=doc/scaling-runs
 mkdir -p "$out"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
