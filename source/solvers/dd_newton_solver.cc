@@ -458,6 +458,7 @@ namespace ddcontact
       coarse.add_motion(alpha, last_u_tilde);
     for (unsigned int b = 0; b < bodies.size(); ++b)
       bodies[b]->get_solution() = last_u_tilde[b];
+    iterate_complete = false;
     // u_0 + u_p solves the body problems (20) loaded by sigma_n = -p.
     last_sigma_n = interface.normal_stresses(p);
     if (interface.on_nodes())
@@ -471,12 +472,13 @@ namespace ddcontact
   void
   DDNewtonSolver::complete_iterate()
   {
-    if (last_u_tilde.empty())
+    if (iterate_complete)
       return;
     problem.get_distribution().share(last_u_tilde);
     const auto &bodies = problem.get_bodies();
     for (unsigned int b = 0; b < bodies.size(); ++b)
       bodies[b]->get_solution() = last_u_tilde[b];
+    iterate_complete = true;
   }
 
   bool

@@ -221,6 +221,11 @@ namespace ddcontact
     void
     complete_iterate() override;
 
+    /** Whether last_u_tilde is whole on every process: false from
+     * store_iterate() until complete_iterate() has sent it, which a second
+     * call (the iteration callback, then the end of the step) skips. */
+    bool iterate_complete = true;
+
     ContactInterface interface {
       problem, parameters.multipliers_on_nodes(), parameters.exact_contact()
     };
