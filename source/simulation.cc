@@ -134,6 +134,7 @@ namespace ddcontact
       pcout << describe_contact_pair(*contact_pairs.back(),
                                      parameters.contact_solver.exact_contact());
     }
+    distribute_body_vectors();
     contact_solver = ContactSolver::create(parameters.contact_solver,
                                            raw_pointers(bodies),
                                            raw_pointers(contact_pairs),
@@ -147,6 +148,26 @@ namespace ddcontact
           suffix << '_' << std::setw(4) << std::setfill('0') << k;
           report.write_contact_profiles(results(), suffix.str());
         });
+  }
+
+  void
+  Simulation::distribute_body_vectors()
+  {
+    // dd-newton reads a body's iterate only on the contact zones (the
+    // traces) and in the body's own solves, so a body on a p4est mesh can
+    // keep just its part. The paper's DD relaxes whole iterates (21), and
+    // the adaptation's transfer and estimators still read whole vectors:
+    // with those the vectors stay whole.
+    if (parameters.contact_solver.solver != ContactSolverType::dd_newton ||
+        parameters.adaptation.enabled())
+      return;
+    const auto traces = ContactProblem(raw_pointers(bodies),
+                                       raw_pointers(contact_pairs),
+                                       *distribution)
+                          .trace_dofs();
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (bodies[b]->is_mesh_distributed())
+        bodies[b]->distribute_vectors(traces[b]);
   }
 
   void

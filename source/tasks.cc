@@ -46,4 +46,15 @@ namespace ddcontact
     AssertDimension(x.size(), y.size());
     return std::inner_product(x.begin(), x.end(), y.begin(), 0.);
   }
+
+  double
+  ordered_norm_sqr(const dealii::LinearAlgebra::distributed::Vector<double> &x)
+  {
+    const double own = std::inner_product(
+      x.begin(), x.begin() + x.locally_owned_size(), x.begin(), 0.);
+    const MPI_Comm comm = x.get_mpi_communicator();
+    return dealii::Utilities::MPI::n_mpi_processes(comm) > 1
+             ? dealii::Utilities::MPI::sum(own, comm)
+             : own;
+  }
 } // namespace ddcontact

@@ -185,7 +185,7 @@ namespace
     // quadrature points, assembled into the FEM load and handed to the
     // BEM as samples, as the DD does with the penalty pressure.
     BoundaryTractionSamples              samples;
-    Vector<double>                       load(body.n_dofs());
+    BodyVector                           load(body.n_dofs());
     const QGauss<1>                      face_quadrature(3);
     FEFaceValues<2>                      fe_face(body.get_mapping(),
                             body.get_fe(),
@@ -215,7 +215,7 @@ namespace
           cell->get_dof_indices(dofs);
           body.get_constraints().distribute_local_to_global(local, dofs, load);
         }
-    Vector<double> u;
+    BodyVector u;
     body.solve(load, u);
 
     FemBemEstimator printed(body, EstimatorType::fem_bem),

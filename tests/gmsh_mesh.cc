@@ -232,7 +232,7 @@ namespace
 
     FunctionParser<2> exact(2);
     exact.initialize("x,y", "a*x; b*y", constants);
-    Vector<double> difference(body.n_dofs());
+    BodyVector difference(body.n_dofs());
     VectorTools::interpolate(
       body.get_mapping(), body.get_dof_handler(), exact, difference);
     difference -= body.get_solution();

@@ -93,14 +93,14 @@ namespace
   }
 
   /** @p field interpolated into @p dofs, hanging nodes constrained. */
-  Vector<double>
+  BodyVector
   interpolant(const Mapping<2>               &mapping,
               const DoFHandler<2>            &dofs,
               const std::vector<std::string> &field)
   {
     FunctionParser<2> f(2);
     f.initialize("x,y", field, {});
-    Vector<double> u(dofs.n_dofs());
+    BodyVector u(dofs.n_dofs());
     VectorTools::interpolate(mapping, dofs, f, u);
     AffineConstraints<double> constraints;
     DoFTools::make_hanging_node_constraints(dofs, constraints);
@@ -119,9 +119,9 @@ namespace
   {
     DoFHandler<2> dofs(tria);
     dofs.distribute_dofs(fe);
-    const Vector<double> u = interpolant(mapping, dofs, smooth);
-    const QGauss<1>      quadrature(fe.degree + 1);
-    Vector<float>        reference(tria.n_active_cells());
+    const BodyVector u = interpolant(mapping, dofs, smooth);
+    const QGauss<1>  quadrature(fe.degree + 1);
+    Vector<float>    reference(tria.n_active_cells());
     KellyErrorEstimator<2>::estimate(
       mapping, dofs, quadrature, {}, u, reference);
     Vector<double> eta;

@@ -87,7 +87,7 @@ namespace
     // relative 1e-10 is safe and far below any discretization error).
     FunctionParser<2> exact(2);
     exact.initialize("x,y", scene.u_exact, Constants());
-    Vector<double> error(body.n_dofs());
+    BodyVector error(body.n_dofs());
     VectorTools::interpolate(
       body.get_mapping(), body.get_dof_handler(), exact, error);
     const double u_scale = error.linfty_norm();

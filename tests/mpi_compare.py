@@ -11,7 +11,8 @@ really solved the bodies on all N processes, and, with
 --expect-repartition, that it moved a body to another process after
 refinement. With --expect-distributed-mesh A,B it checks that exactly the
 bodies A and B of the N-process run had p4est meshes (Parallel/Mesh),
-and with --expect-shared-mesh that none had. --allow-idle accepts
+and with --expect-shared-mesh that none had; --expect-distributed-vectors
+checks that no process of the N-process run held a whole body vector. --allow-idle accepts
 processes that solve no body (dd-newton keeps each body on one process).
 
 With an iterative body solver, --tolerance T replaces 1e-10 by the
@@ -20,6 +21,7 @@ solver's accuracy.
 usage: mpi_compare.py MPIRUN EXE SCENE OUTDIR [--np N] [--tolerance T]
                       [--expect-repartition] [--expect-distributed-mesh A,B]
                       [--expect-shared-mesh] [--allow-idle]
+                      [--expect-distributed-vectors]
                       [--set Section/Entry=value ...]
                       [--parallel-set Section/Entry=value ...]
 (--parallel-set applies to the N-process run only.)
@@ -145,6 +147,21 @@ def main():
         if sorted(n for n, d in meshes.items() if d) != sorted(names):
             failures.append(f"distributed meshes {meshes}, expected on "
                             f"{names}")
+    # --expect-distributed-vectors: no process of the N-process run holds
+    # a whole body vector: each stores its owned dofs plus ghosts (locally
+    # relevant dofs and the contact traces), fewer entries than the bodies
+    # have dofs, where whole vectors (the 1-process run) hold all of them.
+    if "--expect-distributed-vectors" in rest:
+        dofs = sum(b["dofs"] for b in two["bodies"])
+        entries = [p["vector_entries"] for p in two["processes"]]
+        print(f"  vector entries per process {entries} of {dofs} dofs")
+        if one["processes"][0]["vector_entries"] != dofs:
+            failures.append("the 1-process run does not hold whole vectors")
+        for p in two["processes"]:
+            if not p["owned_dofs"] <= p["vector_entries"] < dofs:
+                failures.append(f"process {p['rank']} stores "
+                                f"{p['vector_entries']} entries, owns "
+                                f"{p['owned_dofs']} of {dofs} dofs")
     if "--expect-shared-mesh" in rest and any(meshes.values()):
         failures.append(f"a body had a distributed mesh: {meshes}")
     for f in failures:

@@ -86,7 +86,7 @@ main(int argc, char **argv)
         "x,y",
         std::vector<std::string>{"g11*x + g12*y", "g21*x + g22*y"},
         constants);
-      Vector<double> interpolated(body.n_dofs());
+      BodyVector interpolated(body.n_dofs());
       VectorTools::interpolate(
         body.get_mapping(), body.get_dof_handler(), exact, interpolated);
       interpolated -= body.get_solution();

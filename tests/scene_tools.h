@@ -91,7 +91,7 @@ namespace ddcontact
       double diff = 0, norm = 0;
       for (unsigned int i = 0; i < a.get_bodies().size(); ++i)
       {
-        dealii::Vector<double> d = a.get_bodies()[i]->get_solution();
+        ddcontact::BodyVector d = a.get_bodies()[i]->get_solution();
         d -= b.get_bodies()[i]->get_solution();
         diff += d.norm_sqr();
         norm += b.get_bodies()[i]->get_solution().norm_sqr();

@@ -80,12 +80,12 @@ namespace
     body.setup_and_factorize();
   }
 
-  Vector<double>
+  BodyVector
   interpolant(const ElasticBody<2> &body, const std::vector<std::string> &field)
   {
     FunctionParser<2> f(2);
     f.initialize("x,y", field, constants);
-    Vector<double> v(body.n_dofs());
+    BodyVector v(body.n_dofs());
     VectorTools::interpolate(body.get_mapping(), body.get_dof_handler(), f, v);
     return v;
   }
@@ -137,7 +137,7 @@ namespace
     // Every element holds linear fields: the solution is the exact one up
     // to round-off (condition numbers ~1e3-1e4 here; any discretisation
     // error would be O(h) or larger), as in tests/patch_test.cc.
-    Vector<double> error = interpolant(*body, linear);
+    BodyVector error = interpolant(*body, linear);
     error -= body->get_solution();
     const double u_error =
       error.linfty_norm() / body->get_solution().linfty_norm();
@@ -195,7 +195,7 @@ namespace
     for (unsigned int round = 0; round < 4; ++round)
     {
       refine_around_corner(*body, round);
-      Vector<double> error = interpolant(*body, field);
+      BodyVector error = interpolant(*body, field);
       error -= body->get_solution();
       max_error = std::max(
         max_error, error.linfty_norm() / body->get_solution().linfty_norm());

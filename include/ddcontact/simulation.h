@@ -102,6 +102,12 @@ namespace ddcontact
     void
     setup_contact();
 
+    /** Where the run allows it (dd-newton without adaptation), let every
+     * body on a p4est mesh keep only its own part of its vectors
+     * (ElasticBody::distribute_vectors()). */
+    void
+    distribute_body_vectors();
+
     /** The MeshAdaptation of the adapted bodies, and the strategy of
      * Adaptation/Mode. */
     void

@@ -1,6 +1,7 @@
 #ifndef ddcontact_tasks_h
 #define ddcontact_tasks_h
 
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/vector.h>
 
 #include <functional>
@@ -36,6 +37,11 @@ namespace ddcontact
   {
     return ordered_dot(x, x);
   }
+
+  /** ||x||^2 of a body's vector: its own entries summed in index order on
+   * every process, then over the processes of its communicator. */
+  double
+  ordered_norm_sqr(const dealii::LinearAlgebra::distributed::Vector<double> &x);
 } // namespace ddcontact
 
 #endif

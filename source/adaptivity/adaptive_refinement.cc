@@ -78,7 +78,7 @@ namespace ddcontact
   }
 
   void
-  AdaptiveRefinement::estimate(const Vector<double>          &u_fem,
+  AdaptiveRefinement::estimate(const BodyVector              &u_fem,
                                const BoundaryTractionSamples &contact)
   {
     AssertThrow(estimator, ExcMessage("uniform refinement estimates nothing"));

@@ -27,7 +27,7 @@ namespace ddcontact
   }
 
   void
-  FemBemEstimator::estimate(const Vector<double>          &u_fem,
+  FemBemEstimator::estimate(const BodyVector              &u_fem,
                             const BoundaryTractionSamples &contact)
   {
     Timer timer;

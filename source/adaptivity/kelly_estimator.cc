@@ -30,7 +30,7 @@ namespace ddcontact
                  const bool                                 conforming,
                  const std::vector<Point<2>>               &points,
                  const Mapping<2>                          &mapping,
-                 const Vector<double>                      &solution,
+                 const BodyVector                          &solution,
                  FEFaceValues<2>                           &face_values,
                  Gradients                                 &scratch,
                  Gradients                                 &gradients)
@@ -66,11 +66,11 @@ namespace ddcontact
   } // namespace
 
   void
-  face_jump_indicators(const Mapping<2>     &mapping,
-                       const DoFHandler<2>  &dof_handler,
-                       const Quadrature<1>  &face_quadrature,
-                       const Vector<double> &solution,
-                       Vector<double>       &eta)
+  face_jump_indicators(const Mapping<2>    &mapping,
+                       const DoFHandler<2> &dof_handler,
+                       const Quadrature<1> &face_quadrature,
+                       const BodyVector    &solution,
+                       Vector<double>      &eta)
   {
     const auto        &fe           = dof_handler.get_fe();
     const unsigned int n_components = fe.n_components();
@@ -141,7 +141,7 @@ namespace ddcontact
   }
 
   void
-  KellyEstimator::estimate(const Vector<double> &u_fem,
+  KellyEstimator::estimate(const BodyVector &u_fem,
                            const BoundaryTractionSamples &)
   {
     const QGauss<1> quadrature(body.get_fe().degree + 1);

@@ -204,7 +204,7 @@ namespace ddcontact
   void
   BodyDistribution::solve_and_share(
     const std::function<void(unsigned int)> &solve,
-    std::vector<Vector<double>>             &per_body) const
+    std::vector<BodyVector>                 &per_body) const
   {
     AssertDimension(per_body.size(), bodies.size());
     Timer timer;
@@ -218,7 +218,7 @@ namespace ddcontact
   void
   BodyDistribution::solve_and_share_traces(
     const std::function<void(unsigned int)>                 &solve,
-    std::vector<Vector<double>>                             &per_body,
+    std::vector<BodyVector>                                 &per_body,
     const std::vector<std::vector<types::global_dof_index>> &traces) const
   {
     AssertDimension(per_body.size(), bodies.size());
@@ -235,11 +235,16 @@ namespace ddcontact
   void
   BodyDistribution::share_trace(
     const unsigned int                          b,
-    Vector<double>                             &v,
+    BodyVector                                 &v,
     const std::vector<types::global_dof_index> &dofs) const
   {
     if (n_procs == 1)
       return;
+    if (bodies[b]->has_distributed_vectors())
+    {
+      import_ghosts(v);
+      return;
+    }
     // The owner's list with its values in one message: dofs (exact as
     // doubles below 2^53), then values.
     const bool          sender = this_process == owner_of(b);
@@ -257,24 +262,52 @@ namespace ddcontact
     message = Utilities::MPI::broadcast(communicator, message, owner_of(b));
     if (owns(b))
       return;
-    v.reinit(bodies[b]->n_dofs());
+    bodies[b]->reinit_vector(v);
     const std::size_t n = message.size() / 2;
     for (std::size_t k = 0; k < n; ++k)
       v(static_cast<types::global_dof_index>(message[k])) = message[n + k];
   }
 
   void
-  BodyDistribution::share(const unsigned int b, Vector<double> &v) const
+  BodyDistribution::share(const unsigned int b, BodyVector &v) const
   {
     if (n_procs == 1)
       return;
+    if (bodies[b]->has_distributed_vectors())
+    {
+      import_ghosts(v);
+      return;
+    }
     // Every process knows the body's size from its own copy of the mesh.
     if (!owns(b))
-      v.reinit(bodies[b]->n_dofs());
+      bodies[b]->reinit_vector(v);
     AssertDimension(v.size(), bodies[b]->n_dofs());
     if (this_process == owner_of(b))
       bytes_shared += sizeof(double) * v.size() * (n_procs - 1);
-    Utilities::MPI::broadcast(v.data(), v.size(), owner_of(b), communicator);
+    Utilities::MPI::broadcast(v.begin(), v.size(), owner_of(b), communicator);
+  }
+
+  void
+  BodyDistribution::import_ghosts(BodyVector &v) const
+  {
+    // The body's solve imported them already; a vector that was not
+    // solved for (zero) imports them here. Every process takes the same
+    // branch: the iteration is replicated.
+    if (!v.has_ghost_elements())
+      v.update_ghost_values();
+    bytes_shared += sizeof(double) * v.get_partitioner()->n_import_indices();
+  }
+
+  std::uint64_t
+  BodyDistribution::vector_entries() const
+  {
+    std::uint64_t n = 0;
+    for (const auto *body : bodies)
+    {
+      const auto &layout = *body->get_solution().get_partitioner();
+      n += layout.locally_owned_size() + layout.n_ghost_indices();
+    }
+    return n;
   }
 
   types::global_dof_index
@@ -290,7 +323,7 @@ namespace ddcontact
   }
 
   void
-  BodyDistribution::share(std::vector<Vector<double>> &per_body) const
+  BodyDistribution::share(std::vector<BodyVector> &per_body) const
   {
     AssertDimension(per_body.size(), bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
@@ -312,7 +345,7 @@ namespace ddcontact
   void
   BodyDistribution::solve_bodies()
   {
-    std::vector<Vector<double>> u(bodies.size());
+    std::vector<BodyVector> u(bodies.size());
     solve_and_share(
       [&](const unsigned int b)
       {

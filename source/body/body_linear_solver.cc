@@ -15,6 +15,8 @@
 #include <ddcontact/body/body_linear_solver.h>
 #include <ddcontact/interruption.h>
 
+#include <algorithm>
+#include <functional>
 #include <map>
 #include <type_traits>
 
@@ -22,6 +24,32 @@ namespace ddcontact
 {
   namespace
   {
+    /** The values of @p v from global index @p first on, in memory. */
+    const double *
+    values_from(const Vector<double> &v, const types::global_dof_index first)
+    {
+      return v.begin() + first;
+    }
+
+    const double *
+    values_from(const BodyVector &v, const types::global_dof_index first)
+    {
+      return v.begin() + v.get_partitioner()->global_to_local(first);
+    }
+
+    /** Whether @p v holds every one of the @p n_dofs dofs. */
+    bool
+    is_whole(const Vector<double> &, types::global_dof_index)
+    {
+      return true;
+    }
+
+    bool
+    is_whole(const BodyVector &v, const types::global_dof_index n_dofs)
+    {
+      return v.locally_owned_size() == n_dofs;
+    }
+
     /** Matrix and load of a body solved on this process alone. */
     struct SerialSystem
     {
@@ -46,25 +74,32 @@ namespace ddcontact
 
       /** l + @p extra (@p extra alone without @p with_load), and the
        * solution vector it is solved into. */
+      template <class Extra>
       void
-      right_hand_side(const Vector<double> &extra,
-                      const bool            with_load,
-                      VectorType           &rhs,
-                      VectorType           &x) const
+      right_hand_side(const Extra &extra,
+                      const bool   with_load,
+                      VectorType  &rhs,
+                      VectorType  &x) const
       {
         if (with_load)
           rhs = load;
         else
           rhs.reinit(load.size());
         if (extra.size() > 0)
-          rhs += extra;
+          std::transform(rhs.begin(),
+                         rhs.end(),
+                         values_from(extra, 0),
+                         rhs.begin(),
+                         std::plus<double>());
         x.reinit(load.size());
       }
 
+      template <class Whole>
       void
-      to_whole(const VectorType &x, Vector<double> &u) const
+      to_whole(const VectorType &x, Whole &u) const
       {
-        u = x;
+        u.reinit(x.size());
+        std::copy(x.begin(), x.end(), u.begin());
       }
 
       SparsityPattern      sparsity;
@@ -120,13 +155,15 @@ namespace ddcontact
         load.compress(VectorOperation::add);
       }
 
-      /** Every process of the group holds the whole @p extra load: it
-       * takes the rows it owns. */
+      /** Every process of the group holds at least its own rows of the
+       * @p extra load (all of them, or its part of a distributed
+       * BodyVector): it takes those. */
+      template <class Extra>
       void
-      right_hand_side(const Vector<double> &extra,
-                      const bool            with_load,
-                      VectorType           &rhs,
-                      VectorType           &x) const
+      right_hand_side(const Extra &extra,
+                      const bool   with_load,
+                      VectorType  &rhs,
+                      VectorType  &x) const
       {
         if (with_load)
           rhs = load;
@@ -136,20 +173,29 @@ namespace ddcontact
         if (extra.size() > 0 && owned.n_elements() > 0)
           std::transform(rhs.begin(),
                          rhs.end(),
-                         extra.begin() + *owned.begin(),
+                         values_from(extra, *owned.begin()),
                          rhs.begin(),
                          std::plus<double>());
       }
 
-      /** The solution whole on every process of the group. */
+      /** The solution in @p u: gathered whole on every process of the
+       * group, or, into a distributed BodyVector (reinit by the body with
+       * the same owned rows), this process's rows. */
+      template <class Whole>
       void
-      to_whole(const VectorType &x, Vector<double> &u) const
+      to_whole(const VectorType &x, Whole &u) const
       {
+        if (!is_whole(u, n_dofs) && u.size() == n_dofs)
+        {
+          AssertDimension(u.locally_owned_size(), x.locally_owned_size());
+          std::copy(x.begin(), x.end(), u.begin());
+          return;
+        }
         u.reinit(n_dofs);
         const int ierr = MPI_Allgatherv(x.begin(),
                                         x.locally_owned_size(),
                                         MPI_DOUBLE,
-                                        u.data(),
+                                        u.begin(),
                                         range_sizes.data(),
                                         range_starts.data(),
                                         MPI_DOUBLE,
@@ -238,7 +284,7 @@ namespace ddcontact
       }
 
       void
-      solve(const Vector<double> &rhs, Vector<double> &v) const override
+      solve(const BodyVector &rhs, BodyVector &v) const override
       {
         GroupSystem::VectorType b, x;
         system.right_hand_side(rhs, false, b, x);
@@ -392,13 +438,14 @@ namespace ddcontact
       }
 
       void
-      solve(const Vector<double> &load,
-            Vector<double>       &u,
-            const bool            with_load) const override
+      solve(const BodyVector &load,
+            BodyVector       &u,
+            const bool        with_load) const override
       {
-        Vector<double> rhs;
-        this->system.right_hand_side(load, with_load, rhs, u);
-        direct.vmult(u, rhs);
+        Vector<double> rhs, x;
+        this->system.right_hand_side(load, with_load, rhs, x);
+        direct.vmult(x, rhs);
+        this->system.to_whole(x, u);
       }
 
     private:
@@ -437,9 +484,9 @@ namespace ddcontact
       }
 
       void
-      solve(const Vector<double> &load,
-            Vector<double>       &u,
-            const bool            with_load) const override
+      solve(const BodyVector &load,
+            BodyVector       &u,
+            const bool        with_load) const override
       {
         GroupSystem::VectorType rhs, x;
         this->system.right_hand_side(load, with_load, rhs, x);
@@ -481,9 +528,9 @@ namespace ddcontact
       }
 
       void
-      solve(const Vector<double> &load,
-            Vector<double>       &u,
-            const bool            with_load) const override
+      solve(const BodyVector &load,
+            BodyVector       &u,
+            const bool        with_load) const override
       {
         typename System::VectorType rhs, x;
         this->system.right_hand_side(load, with_load, rhs, x);

@@ -18,7 +18,7 @@ namespace ddcontact
 {
   template <int dim>
   BodyStresses<dim>::BodyStresses(const ElasticBody<dim> &body,
-                                  const Vector<double>   &u)
+                                  const BodyVector       &u)
     : body(body)
     , u(u)
   {

@@ -194,7 +194,10 @@ namespace ddcontact
     if (mesh.is_distributed())
       complete_constraints(constraints);
 
-    solution.reinit(dof_handler.n_dofs());
+    partitioner =
+      std::make_shared<Utilities::MPI::Partitioner>(dof_handler.n_dofs());
+    distributed_vectors = false;
+    reinit_vector(solution);
     if (solved_here)
       setup_matrix();
     is_factorized = false;
@@ -245,7 +248,7 @@ namespace ddcontact
   ElasticBody<dim>::assemble_system()
   {
     linear_solver->zero();
-    Vector<double> data_load(is_floating() ? dof_handler.n_dofs() : 0);
+    BodyVector data_load(is_floating() ? dof_handler.n_dofs() : 0);
     // A load expression that is not finite somewhere (sqrt(x) at x < 0) is
     // found here, in the serial part (a worker thread must not throw), and
     // named after the loop.
@@ -283,13 +286,13 @@ namespace ddcontact
 
   template <int dim>
   void
-  ElasticBody<dim>::unconstrained_residual(const Vector<double> &u,
-                                           Vector<double>       &r,
-                                           Vector<double>       &load) const
+  ElasticBody<dim>::unconstrained_residual(const BodyVector &u,
+                                           BodyVector       &r,
+                                           BodyVector       &load) const
   {
     AssertDimension(u.size(), dof_handler.n_dofs());
-    r.reinit(dof_handler.n_dofs());
-    load.reinit(dof_handler.n_dofs());
+    reinit_vector(r);
+    reinit_vector(load);
     // r_K = A_K u_K - f_K of every cell, added without constraints: the
     // same cell matrices and loads the solver was given.
     Vector<double> u_cell, r_cell;
@@ -312,6 +315,10 @@ namespace ddcontact
           load(dofs[i]) += copy.vectors[0](i);
         }
       });
+    // The entries are this process's sums, to be read as they are (no
+    // ghost exchange; see BodyVector).
+    r.set_ghost_state(true);
+    load.set_ghost_state(true);
   }
 
   template <int dim>
@@ -536,7 +543,7 @@ namespace ddcontact
                                           comm);
       transfer.interpolate(moved);
       // The values of every process's own dofs, whole on all of them.
-      solution.reinit(dof_handler.n_dofs());
+      reinit_vector(solution);
       const auto owned_range = dof_handler.locally_owned_dofs();
       const auto pieces      = Utilities::MPI::all_gather(
         comm,
@@ -557,8 +564,8 @@ namespace ddcontact
     }
     else
     {
-      SolutionTransfer<dim, Vector<double>> transfer(dof_handler);
-      const Vector<double>                  old_solution = solution;
+      SolutionTransfer<dim, BodyVector> transfer(dof_handler);
+      const BodyVector                  old_solution = solution;
       transfer.prepare_for_coarsening_and_refinement(old_solution);
       get_triangulation().execute_coarsening_and_refinement();
 
@@ -594,13 +601,61 @@ namespace ddcontact
 
   template <int dim>
   void
-  ElasticBody<dim>::solve(const Vector<double> &load, Vector<double> &u) const
+  ElasticBody<dim>::distribute_vectors(
+    const std::vector<types::global_dof_index> &traces)
+  {
+    AssertThrow(mesh.is_distributed(), ExcInternalError());
+    IndexSet ghosts;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, ghosts);
+    ghosts.add_indices(traces.begin(), traces.end());
+    const auto layout = std::make_shared<Utilities::MPI::Partitioner>(
+      dof_handler.locally_owned_dofs(),
+      ghosts,
+      get_triangulation().get_communicator());
+    BodyVector distributed(layout);
+    // The solution is still whole (or of the old layout) here.
+    for (const auto i : dof_handler.locally_owned_dofs())
+      distributed(i) = solution(i);
+    distributed.update_ghost_values();
+    solution.swap(distributed);
+    partitioner         = layout;
+    distributed_vectors = true;
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::distribute_constraints(BodyVector &u,
+                                           const bool  homogeneous) const
+  {
+    // As AffineConstraints::distribute(), in the same order of operations
+    // (which on a whole vector gives the same numbers), but on the ghosts
+    // too and without its exchanges. The constraints are closed, so every
+    // entry refers to an unconstrained dof.
+    const auto &layout = *u.get_partitioner();
+    for (const auto &line : constraints.get_lines())
+      if (layout.in_local_range(line.index) ||
+          layout.is_ghost_entry(line.index))
+      {
+        double value = homogeneous ? 0. : line.inhomogeneity;
+        for (const auto &[column, weight] : line.entries)
+          value += u(column) * weight;
+        u(line.index) = value;
+      }
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::solve(const BodyVector &load, BodyVector &u) const
   {
     Assert(is_factorized, ExcMessage("factorize() must be called first"));
     if (load.size() > 0)
       AssertDimension(load.size(), dof_handler.n_dofs());
+    if (distributed_vectors && u.get_partitioner() != partitioner)
+      reinit_vector(u);
     linear_solver->solve(load, u);
-    constraints.distribute(u);
+    if (distributed_vectors)
+      u.update_ghost_values();
+    distribute_constraints(u, false);
     for (const double v : u)
       if (!std::isfinite(v))
         throw InputError(parameters.section() +
@@ -610,27 +665,23 @@ namespace ddcontact
 
   template <int dim>
   void
-  ElasticBody<dim>::solve_homogeneous(const Vector<double> &load,
-                                      Vector<double>       &u) const
+  ElasticBody<dim>::solve_homogeneous(const BodyVector &load,
+                                      BodyVector       &u) const
   {
     Assert(is_factorized, ExcMessage("factorize() must be called first"));
+    if (distributed_vectors && u.get_partitioner() != partitioner)
+      reinit_vector(u);
     linear_solver->solve(load, u, false);
-    // distribute() without the inhomogeneities; the constraints are closed,
-    // so every entry refers to an unconstrained dof.
-    for (const auto &line : constraints.get_lines())
-    {
-      double value = 0;
-      for (const auto &[column, weight] : line.entries)
-        value += weight * u(column);
-      u(line.index) = value;
-    }
+    if (distributed_vectors)
+      u.update_ghost_values();
+    distribute_constraints(u, true);
   }
 
   template <int dim>
   void
   ElasticBody<dim>::solve()
   {
-    solve(Vector<double>(), solution);
+    solve(BodyVector(), solution);
   }
 
   template class ElasticBody<2>;

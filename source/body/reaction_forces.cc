@@ -47,6 +47,31 @@ namespace ddcontact
       return support;
     }
 
+    /** AffineConstraints::condense() of the entries @p v stores (all of a
+     * whole vector; the owned and ghost entries of a distributed one),
+     * with the same operations in the same order but no exchange: the
+     * entries are this process's own sums, and a hanging dof's masters
+     * are on its cell. They may then be read (set_ghost_state()). */
+    void
+    condense_stored(const AffineConstraints<double> &constraints, BodyVector &v)
+    {
+      const auto &layout = *v.get_partitioner();
+      const auto  stored = [&](const types::global_dof_index i)
+      { return layout.in_local_range(i) || layout.is_ghost_entry(i); };
+      for (const auto &line : constraints.get_lines())
+        if (stored(line.index))
+        {
+          const double old_value = v(line.index);
+          for (const auto &[column, weight] : line.entries)
+            if (stored(column))
+              v(column) += old_value * weight;
+        }
+      for (const auto &line : constraints.get_lines())
+        if (stored(line.index))
+          v(line.index) = 0.;
+      v.set_ghost_state(true);
+    }
+
     /** The sum of @p r over the dofs of each support, per direction; the
      * last entry is the sum over all dofs. The dofs are those of this
      * process's cells (with @p owned_only: the dofs it owns), summed over
@@ -56,7 +81,7 @@ namespace ddcontact
     sum_by_support(const ElasticBody<dim> &body,
                    const std::vector<int> &support,
                    const unsigned int      n_supports,
-                   const Vector<double>   &r,
+                   const BodyVector       &r,
                    const bool              owned_only)
     {
       const IndexSet &owned = body.get_dof_handler().locally_owned_dofs();
@@ -89,8 +114,8 @@ namespace ddcontact
 
   template <int dim>
   ReactionForces<dim>::ReactionForces(const ElasticBody<dim> &body,
-                                      const Vector<double>   &u,
-                                      const Vector<double>   &contact_load)
+                                      const BodyVector       &u,
+                                      const BodyVector       &contact_load)
   {
     std::vector<types::boundary_id> ids;
     for (const auto &[id, d] : body.get_boundary_conditions().dirichlet)
@@ -99,9 +124,9 @@ namespace ddcontact
 
     // The residual of this process's cells, condensed onto the conforming
     // test functions, summed per support over the processes.
-    Vector<double> r, load;
+    BodyVector r, load;
     body.unconstrained_residual(u, r, load);
-    body.get_hanging_node_constraints().condense(r);
+    condense_stored(body.get_hanging_node_constraints(), r);
     const auto cells = sum_by_support(body, support, ids.size(), r, false);
 
     // The contact load is the same on every process: each counts the dofs
@@ -109,8 +134,9 @@ namespace ddcontact
     std::vector<Tensor<1, dim>> by_contact(ids.size() + 1);
     if (contact_load.size() > 0)
     {
-      Vector<double> c(contact_load);
-      body.get_hanging_node_constraints().condense(c);
+      BodyVector c;
+      copy_stored(contact_load, c);
+      condense_stored(body.get_hanging_node_constraints(), c);
       by_contact = sum_by_support(body, support, ids.size(), c, true);
     }
 

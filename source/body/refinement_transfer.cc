@@ -12,7 +12,7 @@ namespace ddcontact
   }
 
   void
-  RefinementTransfer::prepare(const Vector<double> &u)
+  RefinementTransfer::prepare(const BodyVector &u)
   {
     cell_values.clear();
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -27,7 +27,7 @@ namespace ddcontact
   }
 
   void
-  RefinementTransfer::interpolate(Vector<double> &u) const
+  RefinementTransfer::interpolate(BodyVector &u) const
   {
     u.reinit(dof_handler.n_dofs());
     for (const auto &[where, values] : cell_values)

@@ -106,7 +106,7 @@ namespace ddcontact
 
     for (const auto &w : weights)
     {
-      Vector<double> mode(n);
+      BodyVector mode(n);
       for (unsigned int i = 0; i < n; ++i)
         mode[i] = w[0] * basic[i][0] + w[1] * basic[i][1] + w[2] * basic[i][2];
       modes.push_back(std::move(mode));

@@ -32,7 +32,7 @@ namespace ddcontact
 
   template <int dim>
   SmoothedStresses<dim>::SmoothedStresses(const ElasticBody<dim> &body,
-                                          const Vector<double>   &u)
+                                          const BodyVector       &u)
     : dof_handler(body.get_triangulation())
   {
     Assert(!body.is_mesh_distributed(), ExcNotImplemented());

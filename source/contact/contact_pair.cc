@@ -556,10 +556,10 @@ namespace ddcontact
   }
 
   void
-  ContactPair::normal_displacements(const Vector<double> &u_1,
-                                    const Vector<double> &u_2,
-                                    std::vector<double>  &u_1n,
-                                    std::vector<double>  &u_2n) const
+  ContactPair::normal_displacements(const BodyVector    &u_1,
+                                    const BodyVector    &u_2,
+                                    std::vector<double> &u_1n,
+                                    std::vector<double> &u_2n) const
   {
     u_1n.resize(contact_points.size());
     u_2n.resize(contact_points.size());
@@ -578,8 +578,8 @@ namespace ddcontact
 
   std::pair<Tensor<1, 2>, Tensor<1, 2>>
   ContactPair::add_contact_loads(const std::vector<double> &sigma_n,
-                                 Vector<double>            &load_1,
-                                 Vector<double>            &load_2) const
+                                 BodyVector                &load_1,
+                                 BodyVector                &load_2) const
   {
     AssertDimension(sigma_n.size(), contact_points.size());
     const auto  &fe_1 = body_1.get_fe();
@@ -608,7 +608,7 @@ namespace ddcontact
   ContactPair::add_unconstrained_contact_load(
     const std::vector<double> &sigma_n,
     const ElasticBody<2>      &body,
-    Vector<double>            &load) const
+    BodyVector                &load) const
   {
     AssertDimension(sigma_n.size(), contact_points.size());
     Assert(&body == &body_1 || &body == &body_2, ExcInternalError());

@@ -51,7 +51,7 @@ namespace ddcontact
   {
     Iterate u(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      u[b] = bodies[b]->get_solution();
+      copy_stored(bodies[b]->get_solution(), u[b]);
     return u;
   }
 
@@ -60,7 +60,7 @@ namespace ddcontact
   {
     Iterate u(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      u[b].reinit(bodies[b]->n_dofs());
+      bodies[b]->reinit_vector(u[b]);
     return u;
   }
 
@@ -188,8 +188,9 @@ namespace ddcontact
                               state.u_1n,
                               state.u_2n);
     state.sigma_n = pressure(p, u);
-    Vector<double> l1(pair.get_body_1().n_dofs()),
-      l2(pair.get_body_2().n_dofs());
+    BodyVector l1, l2;
+    pair.get_body_1().reinit_vector(l1);
+    pair.get_body_2().reinit_vector(l2);
     std::tie(state.force_1, state.force_2) =
       pair.add_contact_loads(state.sigma_n, l1, l2);
     double lo = std::numeric_limits<double>::max(), hi = -lo;

@@ -25,7 +25,7 @@ namespace ddcontact
     class StressPostprocessor : public DataPostprocessor<dim>
     {
     public:
-      StressPostprocessor(const ElasticBody<dim> &body, const Vector<double> &u)
+      StressPostprocessor(const ElasticBody<dim> &body, const BodyVector &u)
         : stresses(body, u)
         , material(body.get_material())
       {
@@ -94,7 +94,7 @@ namespace ddcontact
   OutputWriter::write_step(const unsigned int                         step,
                            const double                               time,
                            const std::vector<const ElasticBody<2> *> &bodies,
-                           const std::vector<const Vector<double> *> &solutions,
+                           const std::vector<const BodyVector *>     &solutions,
                            const std::vector<CellData>               &cell_data)
   {
     // The union of the extra cell fields, so that every piece has them all.

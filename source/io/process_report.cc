@@ -23,10 +23,11 @@ namespace ddcontact
   processes_json(const BodyDistribution &distribution,
                  const unsigned int      n_steps)
   {
-    const std::array<double, 3> mine = {
+    const std::array<double, 4> mine = {
       static_cast<double>(distribution.owned_dofs()),
       peak_memory_mb(),
-      static_cast<double>(distribution.bytes_sent())};
+      static_cast<double>(distribution.bytes_sent()),
+      static_cast<double>(distribution.vector_entries())};
     Json         processes = Json::array();
     unsigned int rank      = 0;
     for (const auto &p : Utilities::MPI::all_gather(MPI_COMM_WORLD, mine))
@@ -35,7 +36,8 @@ namespace ddcontact
          {"owned_dofs", static_cast<unsigned long long>(p[0])},
          {"peak_memory_mb", p[1]},
          {"bytes_sent", static_cast<unsigned long long>(p[2])},
-         {"bytes_sent_per_step", n_steps > 0 ? p[2] / n_steps : 0.}});
+         {"bytes_sent_per_step", n_steps > 0 ? p[2] / n_steps : 0.},
+         {"vector_entries", static_cast<unsigned long long>(p[3])}});
     return processes;
   }
 

@@ -327,14 +327,15 @@ namespace ddcontact
                            Json                 &json) const
   {
     // The contact traction of the reported state (contact_<pair>.csv).
-    Vector<double> contact_load;
+    BodyVector contact_load;
     if (results.contact_solver != nullptr)
       for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
       {
         const auto &pair = *results.contact_pairs[p];
         if (&pair.get_body_1() != &body && &pair.get_body_2() != &body)
           continue;
-        contact_load.reinit(body.n_dofs(), contact_load.size() > 0);
+        if (contact_load.size() == 0)
+          body.reinit_vector(contact_load);
         pair.add_unconstrained_contact_load(
           results.contact_solver->contact_state(p).sigma_n, body, contact_load);
       }

@@ -25,7 +25,7 @@ namespace ddcontact
         parameters.smoothed_stresses);
     const auto                         &bodies = results.bodies;
     std::vector<const ElasticBody<2> *> body_pointers;
-    std::vector<const Vector<double> *> solutions;
+    std::vector<const BodyVector *>     solutions;
     std::vector<OutputWriter::CellData> cell_data(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {

@@ -186,7 +186,7 @@ namespace ddcontact
       last_sigma_n[p] = problem.pressure(p, last_u_tilde);
   }
 
-  const Vector<double> &
+  const BodyVector &
   ContactSolver::last_body_solution(const ElasticBody<2> &body) const
   {
     Assert(last_u_tilde.size() == problem.get_bodies().size(),

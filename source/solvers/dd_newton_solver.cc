@@ -452,12 +452,12 @@ namespace ddcontact
   DDNewtonSolver::store_iterate()
   {
     const auto &bodies = problem.get_bodies();
-    last_u_tilde       = u_0;
+    ContactProblem::assign(last_u_tilde, u_0);
     add(last_u_tilde, 1., u_p);
     if (!coarse.empty())
       coarse.add_motion(alpha, last_u_tilde);
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      bodies[b]->get_solution() = last_u_tilde[b];
+      copy_stored(last_u_tilde[b], bodies[b]->get_solution());
     iterate_complete = false;
     // u_0 + u_p solves the body problems (20) loaded by sigma_n = -p.
     last_sigma_n = interface.normal_stresses(p);
@@ -477,7 +477,7 @@ namespace ddcontact
     problem.get_distribution().share(last_u_tilde);
     const auto &bodies = problem.get_bodies();
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      bodies[b]->get_solution() = last_u_tilde[b];
+      copy_stored(last_u_tilde[b], bodies[b]->get_solution());
     iterate_complete = true;
   }
 
@@ -538,9 +538,10 @@ namespace ddcontact
         "body toward the contact");
     // Warm start: p off the new active set is set to zero, and S p with it.
     PointVector             x = p, Sx = Sp;
-    ContactProblem::Iterate u_x = u_p;
-    PointVector             dropped(p.size(), 0.);
-    bool                    any_dropped = false;
+    ContactProblem::Iterate u_x;
+    ContactProblem::assign(u_x, u_p);
+    PointVector dropped(p.size(), 0.);
+    bool        any_dropped = false;
     for (unsigned int q = 0; q < p.size(); ++q)
       if (!active[q] && p[q] != 0.)
       {

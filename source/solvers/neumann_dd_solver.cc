@@ -44,7 +44,7 @@ namespace ddcontact
 
     /** Concatenate the bodies' vectors into one, and back. */
     Vector<double>
-    flatten(const std::vector<Vector<double>> &u)
+    flatten(const ContactProblem::Iterate &u)
     {
       std::size_t n = 0;
       for (const auto &v : u)
@@ -60,7 +60,7 @@ namespace ddcontact
     }
 
     void
-    unflatten(const Vector<double> &flat, std::vector<Vector<double>> &u)
+    unflatten(const Vector<double> &flat, ContactProblem::Iterate &u)
     {
       std::size_t offset = 0;
       for (auto &v : u)
@@ -126,7 +126,7 @@ namespace ddcontact
     const bool finite_iterate = std::all_of(
       u.begin(),
       u.end(),
-      [](const Vector<double> &v) { return std::isfinite(v.linfty_norm()); });
+      [](const BodyVector &v) { return std::isfinite(v.linfty_norm()); });
     const auto &pair = *problem.get_pairs()[p];
     if (finite_iterate)
     {

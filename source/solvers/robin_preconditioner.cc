@@ -293,10 +293,10 @@ namespace ddcontact
 
     // C_b^T M (alpha Theta)^{-1} beta r on every body, r restricted to the
     // active set.
-    std::vector<Vector<double>> rhs(bodies.size()), v(bodies.size());
+    ContactProblem::Iterate rhs(bodies.size()), v(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
-      rhs[b].reinit(bodies[b]->n_dofs());
+      bodies[b]->reinit_vector(rhs[b]);
       for (const auto &row : rows[b])
         if (row.preconditions && active[row.unknown])
         {
@@ -310,13 +310,19 @@ namespace ddcontact
       [&](const unsigned int b)
       {
         // A body without rows (body 2 of exact contact) adds nothing.
-        v[b].reinit(bodies[b]->n_dofs());
+        bodies[b]->reinit_vector(v[b]);
         if (rows[b].empty())
           return;
         if (factors[b]->group)
+        {
           factors[b]->group->solve(rhs[b], v[b]);
-        else
-          factors[b]->direct.vmult(v[b], rhs[b]);
+          return;
+        }
+        // UMFPACK on this process, whose vectors are whole.
+        Vector<double> x(bodies[b]->n_dofs()), y(bodies[b]->n_dofs());
+        std::copy(rhs[b].begin(), rhs[b].end(), y.begin());
+        factors[b]->direct.vmult(x, y);
+        std::copy(x.begin(), x.end(), v[b].begin());
       },
       v,
       problem.trace_dofs());

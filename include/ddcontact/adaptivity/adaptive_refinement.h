@@ -69,8 +69,7 @@ namespace ddcontact
     /** Compute eta for @p u_fem, the FEM solution of the body problem
      * loaded by @p contact. */
     void
-    estimate(const Vector<double>          &u_fem,
-             const BoundaryTractionSamples &contact);
+    estimate(const BodyVector &u_fem, const BoundaryTractionSamples &contact);
 
     /**
      * Flag the cells to refine by the marking rule (threshold delta of (27),

@@ -36,7 +36,7 @@ namespace ddcontact
     /** Compute eta for @p u_fem, the FEM solution of the body problem
      * loaded by @p contact on the body's contact ids. */
     virtual void
-    estimate(const Vector<double>          &u_fem,
+    estimate(const BodyVector              &u_fem,
              const BoundaryTractionSamples &contact) = 0;
 
     /** eta per active cell of the last estimate. */

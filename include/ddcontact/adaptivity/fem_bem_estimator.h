@@ -59,7 +59,7 @@ namespace ddcontact
      * boundary data). Fills indicators() and the global norms.
      */
     void
-    estimate(const Vector<double>          &u_fem,
+    estimate(const BodyVector              &u_fem,
              const BoundaryTractionSamples &contact) override;
 
     /** eta per active cell (printed or scaled, by the variant). */

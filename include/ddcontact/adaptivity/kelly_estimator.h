@@ -33,11 +33,11 @@ namespace ddcontact
    * whole indicator. @p eta is resized to the number of active cells.
    */
   void
-  face_jump_indicators(const Mapping<2>     &mapping,
-                       const DoFHandler<2>  &dof_handler,
-                       const Quadrature<1>  &face_quadrature,
-                       const Vector<double> &solution,
-                       Vector<double>       &eta);
+  face_jump_indicators(const Mapping<2>    &mapping,
+                       const DoFHandler<2> &dof_handler,
+                       const Quadrature<1> &face_quadrature,
+                       const BodyVector    &solution,
+                       Vector<double>      &eta);
 
   /**
    * Kelly's indicator: the jump of the normal derivative of the FEM
@@ -54,7 +54,7 @@ namespace ddcontact
     explicit KellyEstimator(const ElasticBody<2> &body);
 
     void
-    estimate(const Vector<double>          &u_fem,
+    estimate(const BodyVector              &u_fem,
              const BoundaryTractionSamples &contact) override;
 
     const Vector<double> &

@@ -3,8 +3,6 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <deal.II/lac/vector.h>
-
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/body/parallel_parameters.h>
 
@@ -21,10 +19,12 @@ namespace ddcontact
   /**
    * The DD's natural parallelism over MPI processes: the body problems of
    * one iteration (20) are independent, so each body is solved by its own
-   * processes, and the solutions are then broadcast, so that every process
-   * holds every body's iterate. Everything else (contact pressures (20),
-   * relaxation (21), Anderson, estimation and refinement) is cheap and runs
-   * identically on every process on identical data, which keeps the
+   * processes, and the solutions are then shared: broadcast (whole, or
+   * only the traces), so that every process holds every body's iterate, or,
+   * for a body with distributed vectors (ElasticBody::distribute_vectors()),
+   * as ghosts imported from their owners. Everything else (contact pressures
+   * (20), relaxation (21), Anderson, estimation and refinement) is cheap and
+   * runs identically on every process on identical data, which keeps the
    * iteration equal to the serial one for any number of processes.
    *
    * Two layouts, chosen by "Parallel/Body owners"
@@ -92,7 +92,7 @@ namespace ddcontact
      */
     void
     solve_and_share(const std::function<void(unsigned int)> &solve,
-                    std::vector<Vector<double>>             &per_body) const;
+                    std::vector<BodyVector>                 &per_body) const;
 
     /**
      * The same, but the other processes receive only the values of
@@ -104,7 +104,7 @@ namespace ddcontact
     void
     solve_and_share_traces(
       const std::function<void(unsigned int)>                 &solve,
-      std::vector<Vector<double>>                             &per_body,
+      std::vector<BodyVector>                                 &per_body,
       const std::vector<std::vector<types::global_dof_index>> &traces) const;
 
     /** Solve every body problem on its owner (a scene without contact)
@@ -114,11 +114,11 @@ namespace ddcontact
 
     /** Send every body's vector from its owner to all processes. */
     void
-    share(std::vector<Vector<double>> &per_body) const;
+    share(std::vector<BodyVector> &per_body) const;
 
     /** Send one vector of body @p b from its owner to all processes. */
     void
-    share(unsigned int b, Vector<double> &v) const;
+    share(unsigned int b, BodyVector &v) const;
 
     /** Run @p work(b) for every body (or every body owned here) as
      * concurrent tasks; an exception on any process is thrown on all. */
@@ -165,6 +165,12 @@ namespace ddcontact
     types::global_dof_index
     owned_dofs() const;
 
+    /** The entries of the bodies' solution vectors this process stores:
+     * every dof of a whole vector, the owned dofs and ghosts of a
+     * distributed one (ElasticBody::distribute_vectors()). */
+    std::uint64_t
+    vector_entries() const;
+
     /** Bytes of body vectors this process has sent by share() and
      * solve_and_share_traces() over the run (a broadcast counted as one
      * message per receiving process). */
@@ -180,11 +186,16 @@ namespace ddcontact
     describe() const;
 
   private:
+    /** A distributed vector of a body solved by every process: the ghosts
+     * are imported from their owners instead of a broadcast. */
+    void
+    import_ghosts(BodyVector &v) const;
+
     /** Send the values of @p v at @p dofs (with the dofs) from the owner of
      * body @p b to all processes; the others' @p v is zero elsewhere. */
     void
     share_trace(unsigned int                                b,
-                Vector<double>                             &v,
+                BodyVector                                 &v,
                 const std::vector<types::global_dof_index> &dofs) const;
 
     std::vector<ElasticBody<2> *>          bodies;

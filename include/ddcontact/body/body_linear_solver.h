@@ -9,6 +9,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ddcontact/body/body_parameters.h>
+#include <ddcontact/body/body_vector.h>
 #include <ddcontact/parameter_tools.h>
 
 #include <memory>
@@ -52,10 +53,12 @@ namespace ddcontact
   public:
     virtual ~SpringFactorization() = default;
 
-    /** v = (K + springs)^{-1} @p rhs, @p rhs and @p v whole on every
-     * process of the group; collective over the group. */
+    /** v = (K + springs)^{-1} @p rhs: of @p rhs each process reads its
+     * own rows; @p v whole on every process of the group, or this
+     * process's rows of a distributed @p v (ElasticBody::reinit_vector());
+     * collective over the group. */
     virtual void
-    solve(const Vector<double> &rhs, Vector<double> &v) const = 0;
+    solve(const BodyVector &rhs, BodyVector &v) const = 0;
   };
 
   template <int dim>
@@ -106,9 +109,9 @@ namespace ddcontact
      * (the body's own load l left out, for a homogeneous solve). The
      * constraints are not distributed (the body does that). */
     virtual void
-    solve(const Vector<double> &load,
-          Vector<double>       &u,
-          bool                  with_load = true) const = 0;
+    solve(const BodyVector &load,
+          BodyVector       &u,
+          bool              with_load = true) const = 0;
 
     /** The assembled matrix and load of a body solved on one process (the
      * monolithic solver builds its system from them); a body solved by a

@@ -7,6 +7,8 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <ddcontact/body/body_vector.h>
+
 #include <vector>
 
 namespace ddcontact
@@ -49,7 +51,7 @@ namespace ddcontact
     /** The stresses of @p u (a vector of the body's dofs); the reduced
      * dilatation of every cell is computed here, once. Both references must
      * outlive this object. */
-    BodyStresses(const ElasticBody<dim> &body, const Vector<double> &u);
+    BodyStresses(const ElasticBody<dim> &body, const BodyVector &u);
 
     /** The stress (2) from the strain at a point of the active cell with
      * index @p cell. */
@@ -92,7 +94,7 @@ namespace ddcontact
     cell_centre() const;
 
     const ElasticBody<dim> &body;
-    const Vector<double>   &u;
+    const BodyVector       &u;
     /** div u at the reduced point of every active cell; empty with full
      * integration. */
     std::vector<double> dilatation;

@@ -20,6 +20,7 @@
 #include <ddcontact/body/body_mesh.h>
 #include <ddcontact/body/body_parameters.h>
 #include <ddcontact/body/body_stresses.h>
+#include <ddcontact/body/body_vector.h>
 #include <ddcontact/body/boundary_conditions.h>
 #include <ddcontact/body/material.h>
 #include <ddcontact/body/parallel_parameters.h>
@@ -47,11 +48,13 @@ namespace ddcontact
    * computed by BodyStresses (stresses()).
    *
    * On a mesh shared or distributed between processes (see BodyMesh) the
-   * iterate stays whole on every process, so that the DD loop (20)-(21) is
-   * the same for every kind of mesh: the processes of the body's group
-   * assemble their cells into a matrix distributed over the group and
-   * solve it together, and on a p4est mesh every process holds all
-   * constraints (complete_constraints()), which are few.
+   * processes of the body's group assemble their cells into a matrix
+   * distributed over the group and solve it together. The body's vectors
+   * (BodyVector, reinit_vector()) are whole on every process, so that the
+   * DD loop (20)-(21) is the same for every kind of mesh, unless a p4est
+   * body's are distributed (distribute_vectors(): owned dofs plus ghosts,
+   * for dd-newton). On a p4est mesh every process holds all constraints
+   * (complete_constraints()), which are few.
    */
   template <int dim>
   class ElasticBody
@@ -140,7 +143,7 @@ namespace ddcontact
      * may be empty (size 0) for none. Constraints are distributed in @p u.
      */
     void
-    solve(const Vector<double> &load, Vector<double> &u) const;
+    solve(const BodyVector &load, BodyVector &u) const;
 
     /**
      * Solve a_a(u, v) = load(v) with homogeneous data: no body force or
@@ -149,7 +152,7 @@ namespace ddcontact
      * a contact load alone, for the interface operator of DDNewtonSolver.
      */
     void
-    solve_homogeneous(const Vector<double> &load, Vector<double> &u) const;
+    solve_homogeneous(const BodyVector &load, BodyVector &u) const;
 
     /** Solve with no extra load into the body's own solution vector. */
     void
@@ -157,7 +160,7 @@ namespace ddcontact
 
     /** The stresses of @p u, a vector of this body's dofs. */
     BodyStresses<dim>
-    stresses(const Vector<double> &u) const
+    stresses(const BodyVector &u) const
     {
       return BodyStresses<dim>(*this, u);
     }
@@ -288,9 +291,9 @@ namespace ddcontact
      * processes, the sums of this process's cells only.
      */
     void
-    unconstrained_residual(const Vector<double> &u,
-                           Vector<double>       &r,
-                           Vector<double>       &load) const;
+    unconstrained_residual(const BodyVector &u,
+                           BodyVector       &r,
+                           BodyVector       &load) const;
 
     /** The stiffness plus @p springs, factorized over the process group
      * of a body solved by one (is_solved_distributed()); collective. */
@@ -359,13 +362,13 @@ namespace ddcontact
       return parameters.name;
     }
 
-    Vector<double> &
+    BodyVector &
     get_solution()
     {
       return solution;
     }
 
-    const Vector<double> &
+    const BodyVector &
     get_solution() const
     {
       return solution;
@@ -375,6 +378,34 @@ namespace ddcontact
     n_dofs() const
     {
       return dof_handler.n_dofs();
+    }
+
+    /** Make @p v a zero vector of this body's dofs, with the body's
+     * layout (see BodyVector). */
+    void
+    reinit_vector(BodyVector &v) const
+    {
+      v.reinit(partitioner);
+    }
+
+    /**
+     * On a distributed (p4est) mesh: from now on every vector of the body
+     * holds only the dofs this process owns, plus as ghosts its locally
+     * relevant dofs and @p traces (sorted; the dofs the contact
+     * evaluations read, ContactProblem::trace_dofs()), instead of all
+     * dofs. The solution keeps its values. Collective over the mesh's
+     * processes. A refinement (setup_system()) makes the vectors whole
+     * again.
+     */
+    void
+    distribute_vectors(const std::vector<types::global_dof_index> &traces);
+
+    /** Whether the body's vectors hold only this process's part
+     * (distribute_vectors()). */
+    bool
+    has_distributed_vectors() const
+    {
+      return distributed_vectors;
     }
 
   private:
@@ -402,6 +433,14 @@ namespace ddcontact
     void
     complete_constraints(AffineConstraints<double> &to_complete) const;
 
+    /** The constrained entries of @p u from its other entries (without
+     * the inhomogeneities with @p homogeneous), on every dof @p u holds:
+     * after a solve, whose ghosts (distributed vectors) are imported, so
+     * that no second exchange is needed -- a ghost's masters are on its
+     * cell, or are traces too (the load dofs of a contact point). */
+    void
+    distribute_constraints(BodyVector &u, bool homogeneous) const;
+
     /** The free rigid modes (rigid_modes) and their fixed components,
      * added to the open @p constraints. */
     void
@@ -423,9 +462,12 @@ namespace ddcontact
 
     AffineConstraints<double> constraints;
     AffineConstraints<double> hanging_node_constraints;
-    Vector<double>            solution;
-    RigidBodyModes<dim>       rigid_modes;
-    std::vector<double>       mode_loads;
+    BodyVector                solution;
+    // The layout of the body's vectors (reinit_vector()).
+    std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
+    bool                distributed_vectors = false;
+    RigidBodyModes<dim> rigid_modes;
+    std::vector<double> mode_loads;
 
     std::unique_ptr<BodyLinearSolver<dim>> linear_solver;
     bool                                   is_factorized = false;

@@ -6,6 +6,8 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <ddcontact/body/body_vector.h>
+
 #include <vector>
 
 namespace ddcontact
@@ -50,8 +52,8 @@ namespace ddcontact
      * constraints (ContactPair::add_unconstrained_contact_load(); size 0:
      * none). */
     ReactionForces(const ElasticBody<dim> &body,
-                   const Vector<double>   &u,
-                   const Vector<double>   &contact_load);
+                   const BodyVector       &u,
+                   const BodyVector       &contact_load);
 
     /** One entry per Dirichlet id, in ascending order. */
     const std::vector<Support> &

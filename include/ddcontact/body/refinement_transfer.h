@@ -5,6 +5,8 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <ddcontact/body/body_vector.h>
+
 #include <utility>
 #include <vector>
 
@@ -32,12 +34,12 @@ namespace ddcontact
 
     /** Keep the cell values of @p u; call before the refinement. */
     void
-    prepare(const Vector<double> &u);
+    prepare(const BodyVector &u);
 
     /** The kept field on the refined mesh, whose dofs are distributed;
      * distribute the constraints after. */
     void
-    interpolate(Vector<double> &u) const;
+    interpolate(BodyVector &u) const;
 
   private:
     const DoFHandler<2> &dof_handler;

@@ -10,6 +10,8 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 
+#include <ddcontact/body/body_vector.h>
+
 #include <ddcontact/body/boundary_conditions.h>
 
 #include <array>
@@ -63,7 +65,7 @@ namespace ddcontact
     }
 
     /** Mode @p k as a displacement (a vector of the body's dofs). */
-    const Vector<double> &
+    const BodyVector &
     mode(const unsigned int k) const
     {
       return modes[k];
@@ -81,7 +83,7 @@ namespace ddcontact
     description() const;
 
   private:
-    std::vector<Vector<double>>          modes;
+    std::vector<BodyVector>              modes;
     std::vector<types::global_dof_index> fixed;
     // Which of translation x, translation y, rotation the modes span,
     // for description(): the weights of each in the modes.

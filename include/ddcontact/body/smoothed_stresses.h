@@ -5,6 +5,8 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <ddcontact/body/body_vector.h>
+
 #include <string>
 #include <vector>
 
@@ -41,7 +43,7 @@ namespace ddcontact
   public:
     /** Project the stress of @p u, a vector of the dofs of @p body. The
      * body must outlive this object. */
-    SmoothedStresses(const ElasticBody<dim> &body, const Vector<double> &u);
+    SmoothedStresses(const ElasticBody<dim> &body, const BodyVector &u);
 
     /** The scalar space of the projected fields. */
     const DoFHandler<dim> &

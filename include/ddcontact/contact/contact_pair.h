@@ -124,10 +124,10 @@ namespace ddcontact
 
     /** u_1n and u_2n at every contact point. */
     void
-    normal_displacements(const Vector<double> &u_1,
-                         const Vector<double> &u_2,
-                         std::vector<double>  &u_1n,
-                         std::vector<double>  &u_2n) const;
+    normal_displacements(const BodyVector    &u_1,
+                         const BodyVector    &u_2,
+                         std::vector<double> &u_1n,
+                         std::vector<double> &u_2n) const;
 
     /**
      * Add the Neumann load of the normal traction sigma_n (one value per
@@ -140,8 +140,8 @@ namespace ddcontact
      */
     std::pair<Tensor<1, 2>, Tensor<1, 2>>
     add_contact_loads(const std::vector<double> &sigma_n,
-                      Vector<double>            &load_1,
-                      Vector<double>            &load_2) const;
+                      BodyVector                &load_1,
+                      BodyVector                &load_2) const;
 
     /**
      * Add the load of the normal stress @p sigma_n on @p body (either side
@@ -152,7 +152,7 @@ namespace ddcontact
     void
     add_unconstrained_contact_load(const std::vector<double> &sigma_n,
                                    const ElasticBody<2>      &body,
-                                   Vector<double>            &load) const;
+                                   BodyVector                &load) const;
 
     /**
      * Append the traction sigma_n n_a that the normal stress @p sigma_n

@@ -37,13 +37,14 @@ namespace ddcontact
    * solution of every body problem for given loads -- and nothing of how
    * to iterate (that is the solvers').
    *
-   * An iterate is one displacement vector per body (all dofs, on every
-   * process, as BodyDistribution shares them).
+   * An iterate is one displacement vector per body (BodyVector: all dofs
+   * on every process as BodyDistribution shares them, or a distributed
+   * body's owned dofs plus ghosts, the contact traces among them).
    */
   class ContactProblem
   {
   public:
-    using Iterate = std::vector<Vector<double>>;
+    using Iterate = std::vector<BodyVector>;
 
     /** What the processes that do not solve a body receive of its
      * solution: the whole vector, or only its values at trace_dofs() (zero
@@ -110,6 +111,17 @@ namespace ddcontact
     /** Zero vectors of the bodies' sizes. */
     Iterate
     zero_iterate() const;
+
+    /** @p to = @p from, vector by vector with copy_stored(), ghosts
+     * included (std::vector's assignment may copy construct, which drops
+     * them). */
+    static void
+    assign(Iterate &to, const Iterate &from)
+    {
+      to.resize(from.size());
+      for (unsigned int b = 0; b < from.size(); ++b)
+        copy_stored(from[b], to[b]);
+    }
 
     /** Solve every body b with the extra load loads[b] (empty: none), each
      * on its process, concurrently; every process receives all u[b].

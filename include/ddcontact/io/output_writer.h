@@ -52,7 +52,7 @@ namespace ddcontact
     write_step(unsigned int                               step,
                double                                     time,
                const std::vector<const ElasticBody<2> *> &bodies,
-               const std::vector<const Vector<double> *> &solutions,
+               const std::vector<const BodyVector *>     &solutions,
                const std::vector<CellData>               &cell_data = {});
 
   private:

@@ -218,7 +218,7 @@ namespace ddcontact
      * step, before any relaxation: the FEM side of the FEM-BEM estimator,
      * which must solve the same boundary value problem as the BEM.
      */
-    const Vector<double> &
+    const BodyVector &
     last_body_solution(const ElasticBody<2> &body) const;
 
     /** The contact traction that loaded @p body in the last step (20). */
