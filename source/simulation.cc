@@ -154,12 +154,14 @@ namespace ddcontact
   Simulation::distribute_body_vectors()
   {
     // dd-newton reads a body's iterate only on the contact zones (the
-    // traces) and in the body's own solves, so a body on a p4est mesh can
-    // keep just its part. The paper's DD relaxes whole iterates (21), and
-    // the adaptation's transfer and estimators still read whole vectors:
-    // with those the vectors stay whole.
+    // traces), in the body's own solves and, adapting with Kelly, on the
+    // body's own cells, so a body on a p4est mesh can keep just its part.
+    // The paper's DD relaxes whole iterates (21), and the FEM-BEM
+    // estimator's BEM reads the whole boundary: with those the vectors
+    // stay whole.
     if (parameters.contact_solver.solver != ContactSolverType::dd_newton ||
-        parameters.adaptation.enabled())
+        (parameters.adaptation.enabled() &&
+         parameters.adaptation.estimator != EstimatorType::kelly))
       return;
     const auto traces = ContactProblem(raw_pointers(bodies),
                                        raw_pointers(contact_pairs),

@@ -102,8 +102,9 @@ namespace ddcontact
     void
     setup_contact();
 
-    /** Where the run allows it (dd-newton without adaptation), let every
-     * body on a p4est mesh keep only its own part of its vectors
+    /** Where the run allows it (dd-newton, not adapted by the FEM-BEM
+     * estimator), let every body on a p4est mesh keep only its own part of
+     * its vectors
      * (ElasticBody::distribute_vectors()). */
     void
     distribute_body_vectors();

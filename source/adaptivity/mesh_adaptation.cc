@@ -209,6 +209,9 @@ namespace ddcontact
     for (auto *pair : pairs)
       pair->setup();
     if (solver != nullptr)
+    {
+      solver->get_problem().update_vector_layouts();
       solver->reinit_after_refinement();
+    }
   }
 } // namespace ddcontact

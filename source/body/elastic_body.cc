@@ -194,9 +194,20 @@ namespace ddcontact
     if (mesh.is_distributed())
       complete_constraints(constraints);
 
-    partitioner =
-      std::make_shared<Utilities::MPI::Partitioner>(dof_handler.n_dofs());
-    distributed_vectors = false;
+    // Distributed vectors stay distributed, with the locally relevant dofs
+    // as ghosts until distribute_vectors() adds the new traces.
+    if (distributed_vectors)
+    {
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+      partitioner = std::make_shared<Utilities::MPI::Partitioner>(
+        dof_handler.locally_owned_dofs(),
+        relevant,
+        get_triangulation().get_communicator());
+    }
+    else
+      partitioner =
+        std::make_shared<Utilities::MPI::Partitioner>(dof_handler.n_dofs());
     reinit_vector(solution);
     if (solved_here)
       setup_matrix();
@@ -522,6 +533,25 @@ namespace ddcontact
       // transferred values with the cells; the interpolation needs the
       // ghost values of the old mesh.
       AssertThrow(is_solved_distributed(), ExcInternalError());
+      if (distributed_vectors)
+      {
+        // The solution holds its owned dofs and the ghosts the
+        // interpolation needs; the new one is distributed likewise.
+        parallel::distributed::SolutionTransfer<dim, BodyVector> transfer(
+          dof_handler);
+        transfer.prepare_for_coarsening_and_refinement(solution);
+        get_triangulation().execute_coarsening_and_refinement();
+        setup_system();
+        transfer.interpolate(solution);
+        solution.update_ghost_values();
+        distribute_constraints(solution, false);
+        if (solved_here)
+        {
+          assemble_system();
+          factorize();
+        }
+        return;
+      }
       const MPI_Comm comm = get_triangulation().get_communicator();
       IndexSet       relevant;
       DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);

@@ -89,6 +89,15 @@ namespace ddcontact
   }
 
   void
+  ContactProblem::update_vector_layouts() const
+  {
+    const auto traces = trace_dofs();
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (bodies[b]->has_distributed_vectors())
+        bodies[b]->distribute_vectors(traces[b]);
+  }
+
+  void
   ContactProblem::solve_all(const Iterate &loads,
                             Iterate       &u,
                             const bool     homogeneous,

@@ -394,8 +394,9 @@ namespace ddcontact
      * relevant dofs and @p traces (sorted; the dofs the contact
      * evaluations read, ContactProblem::trace_dofs()), instead of all
      * dofs. The solution keeps its values. Collective over the mesh's
-     * processes. A refinement (setup_system()) makes the vectors whole
-     * again.
+     * processes. After a refinement (setup_system()) the vectors stay
+     * distributed, with the locally relevant dofs as ghosts, until this is
+     * called with the new traces.
      */
     void
     distribute_vectors(const std::vector<types::global_dof_index> &traces);

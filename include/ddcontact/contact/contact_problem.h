@@ -149,6 +149,12 @@ namespace ddcontact
     std::vector<std::vector<types::global_dof_index>>
     trace_dofs() const;
 
+    /** Give every body with distributed vectors the current trace_dofs()
+     * as ghosts (ElasticBody::distribute_vectors()): after the pairs were
+     * set up on new meshes. Collective. */
+    void
+    update_vector_layouts() const;
+
     /** g = f_n - u_1n - u_2n of pair @p p at its points. */
     std::vector<double>
     gaps(unsigned int p, const Iterate &u) const;
