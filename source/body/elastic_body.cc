@@ -603,7 +603,7 @@ namespace ddcontact
       transfer.interpolate(old_solution, solution);
     }
     // New hanging nodes and the Dirichlet data (5) on new boundary vertices.
-    constraints.distribute(solution);
+    distribute_constraints(solution);
     if (solved_here)
     {
       assemble_system();

@@ -106,7 +106,7 @@ namespace ddcontact
     unflatten(relaxation->update(flatten(u), flatten(u_tilde)), u);
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
-      bodies[b]->get_constraints().distribute(u[b]);
+      bodies[b]->distribute_constraints(u[b]);
       bodies[b]->get_solution() = u[b];
     }
   }

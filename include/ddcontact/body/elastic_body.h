@@ -401,6 +401,21 @@ namespace ddcontact
     void
     distribute_vectors(const std::vector<types::global_dof_index> &traces);
 
+    /**
+     * The constrained entries of @p u from its other entries (without the
+     * inhomogeneities with @p homogeneous), on every dof @p u holds, with
+     * the operations of AffineConstraints::distribute() in its order (the
+     * same numbers on a whole vector). A distributed @p u must have its
+     * ghosts imported; then no second exchange is needed: a ghost's
+     * masters are on its cell, or are traces too (the load dofs of a
+     * contact point). deal.II's distribute() treats every
+     * LinearAlgebra::distributed::Vector as parallel and copies it whole
+     * with an index set of its dofs at every call (the paper's DD calls it
+     * every iteration).
+     */
+    void
+    distribute_constraints(BodyVector &u, bool homogeneous = false) const;
+
     /** Whether the body's vectors hold only this process's part
      * (distribute_vectors()). */
     bool
@@ -433,14 +448,6 @@ namespace ddcontact
      * locally relevant dofs by those of all dofs, each from its owner. */
     void
     complete_constraints(AffineConstraints<double> &to_complete) const;
-
-    /** The constrained entries of @p u from its other entries (without
-     * the inhomogeneities with @p homogeneous), on every dof @p u holds:
-     * after a solve, whose ghosts (distributed vectors) are imported, so
-     * that no second exchange is needed -- a ghost's masters are on its
-     * cell, or are traces too (the load dofs of a contact point). */
-    void
-    distribute_constraints(BodyVector &u, bool homogeneous) const;
 
     /** The free rigid modes (rigid_modes) and their fixed components,
      * added to the open @p constraints. */
