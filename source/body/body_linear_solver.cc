@@ -26,28 +26,9 @@ namespace ddcontact
   {
     /** The values of @p v from global index @p first on, in memory. */
     const double *
-    values_from(const Vector<double> &v, const types::global_dof_index first)
-    {
-      return v.begin() + first;
-    }
-
-    const double *
     values_from(const BodyVector &v, const types::global_dof_index first)
     {
       return v.begin() + v.get_partitioner()->global_to_local(first);
-    }
-
-    /** Whether @p v holds every one of the @p n_dofs dofs. */
-    bool
-    is_whole(const Vector<double> &, types::global_dof_index)
-    {
-      return true;
-    }
-
-    bool
-    is_whole(const BodyVector &v, const types::global_dof_index n_dofs)
-    {
-      return v.locally_owned_size() == n_dofs;
     }
 
     /** Matrix and load of a body solved on this process alone. */
@@ -74,12 +55,11 @@ namespace ddcontact
 
       /** l + @p extra (@p extra alone without @p with_load), and the
        * solution vector it is solved into. */
-      template <class Extra>
       void
-      right_hand_side(const Extra &extra,
-                      const bool   with_load,
-                      VectorType  &rhs,
-                      VectorType  &x) const
+      right_hand_side(const BodyVector &extra,
+                      const bool        with_load,
+                      VectorType       &rhs,
+                      VectorType       &x) const
       {
         if (with_load)
           rhs = load;
@@ -94,9 +74,8 @@ namespace ddcontact
         x.reinit(load.size());
       }
 
-      template <class Whole>
       void
-      to_whole(const VectorType &x, Whole &u) const
+      to_whole(const VectorType &x, BodyVector &u) const
       {
         u.reinit(x.size());
         std::copy(x.begin(), x.end(), u.begin());
@@ -158,12 +137,11 @@ namespace ddcontact
       /** Every process of the group holds at least its own rows of the
        * @p extra load (all of them, or its part of a distributed
        * BodyVector): it takes those. */
-      template <class Extra>
       void
-      right_hand_side(const Extra &extra,
-                      const bool   with_load,
-                      VectorType  &rhs,
-                      VectorType  &x) const
+      right_hand_side(const BodyVector &extra,
+                      const bool        with_load,
+                      VectorType       &rhs,
+                      VectorType       &x) const
       {
         if (with_load)
           rhs = load;
@@ -181,11 +159,10 @@ namespace ddcontact
       /** The solution in @p u: gathered whole on every process of the
        * group, or, into a distributed BodyVector (reinit by the body with
        * the same owned rows), this process's rows. */
-      template <class Whole>
       void
-      to_whole(const VectorType &x, Whole &u) const
+      to_whole(const VectorType &x, BodyVector &u) const
       {
-        if (!is_whole(u, n_dofs) && u.size() == n_dofs)
+        if (u.size() == n_dofs && u.locally_owned_size() < n_dofs)
         {
           AssertDimension(u.locally_owned_size(), x.locally_owned_size());
           std::copy(x.begin(), x.end(), u.begin());
