@@ -153,15 +153,14 @@ namespace ddcontact
   void
   Simulation::distribute_body_vectors()
   {
-    // dd-newton reads a body's iterate only on the contact zones (the
+    // The solvers read a body's iterate only on the contact zones (the
     // traces), in the body's own solves and, adapting with Kelly, on the
-    // body's own cells, so a body on a p4est mesh can keep just its part.
-    // The paper's DD relaxes whole iterates (21), and the FEM-BEM
-    // estimator's BEM reads the whole boundary: with those the vectors
-    // stay whole.
-    if (parameters.contact_solver.solver != ContactSolverType::dd_newton ||
-        (parameters.adaptation.enabled() &&
-         parameters.adaptation.estimator != EstimatorType::kelly))
+    // body's own cells, so a body on a p4est mesh can keep just its part;
+    // the paper's relaxation (21) is entrywise, with inner products over
+    // the processes. The FEM-BEM estimator's BEM reads the whole boundary:
+    // with it the vectors stay whole.
+    if (parameters.adaptation.enabled() &&
+        parameters.adaptation.estimator != EstimatorType::kelly)
       return;
     const auto traces = ContactProblem(raw_pointers(bodies),
                                        raw_pointers(contact_pairs),

@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/thread_management.h>
 
 #include <ddcontact/tasks.h>
@@ -48,13 +49,20 @@ namespace ddcontact
   }
 
   double
+  ordered_sum(const double own, const MPI_Comm comm)
+  {
+    if (dealii::Utilities::MPI::n_mpi_processes(comm) == 1)
+      return own;
+    const auto all = dealii::Utilities::MPI::all_gather(comm, own);
+    return std::accumulate(all.begin(), all.end(), 0.);
+  }
+
+  double
   ordered_norm_sqr(const dealii::LinearAlgebra::distributed::Vector<double> &x)
   {
-    const double own = std::inner_product(
-      x.begin(), x.begin() + x.locally_owned_size(), x.begin(), 0.);
-    const MPI_Comm comm = x.get_mpi_communicator();
-    return dealii::Utilities::MPI::n_mpi_processes(comm) > 1
-             ? dealii::Utilities::MPI::sum(own, comm)
-             : own;
+    return ordered_sum(
+      std::inner_product(
+        x.begin(), x.begin() + x.locally_owned_size(), x.begin(), 0.),
+      x.get_mpi_communicator());
   }
 } // namespace ddcontact

@@ -38,8 +38,18 @@ namespace ddcontact
     return ordered_dot(x, x);
   }
 
+  /**
+   * The sum of every process's @p own over @p comm, added in rank order:
+   * the same bits on every process (an MPI_Allreduce may add in another
+   * order on each, and replicated decisions taken from it could then
+   * differ between processes). One MPI_Allgather of a double.
+   */
+  double
+  ordered_sum(double own, MPI_Comm comm);
+
   /** ||x||^2 of a body's vector: its own entries summed in index order on
-   * every process, then over the processes of its communicator. */
+   * every process, then over the processes of its communicator
+   * (ordered_sum()). */
   double
   ordered_norm_sqr(const dealii::LinearAlgebra::distributed::Vector<double> &x);
 } // namespace ddcontact

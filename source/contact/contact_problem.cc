@@ -60,7 +60,12 @@ namespace ddcontact
   {
     Iterate u(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
+    {
       bodies[b]->reinit_vector(u[b]);
+      // Its ghosts (a distributed body's traces) are valid zeros: the
+      // contact evaluations may read them without an import.
+      u[b].set_ghost_state(true);
+    }
     return u;
   }
 

@@ -229,9 +229,13 @@ namespace ddcontact
       if (largest > 0 && std::isfinite(largest))
         v[b] /= largest;
       else
-        for (unsigned int i = 0; i < v[b].size(); ++i)
+        for (const auto i : v[b].locally_owned_elements())
           v[b](i) = 1. + 0.1 * std::sin(1. + i);
       bodies[b]->get_constraints().set_zero(v[b]);
+      // The contact points read v at the traces, among a distributed
+      // body's ghosts: set_zero() and the start vector wrote owned entries.
+      if (Utilities::MPI::n_mpi_processes(v[b].get_mpi_communicator()) > 1)
+        v[b].update_ghost_values();
     }
     double lambda = 0;
     for (unsigned int it = 0; it < 30; ++it)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <numeric>
 #include <sstream>
 
 namespace ddcontact
@@ -42,33 +43,72 @@ namespace ddcontact
       return k <= 5 || k % step == 0;
     }
 
-    /** Concatenate the bodies' vectors into one, and back. */
+    /** The entries of the bodies' vectors that this process owns (every
+     * entry of a whole vector), concatenated body by body: what the
+     * relaxation (21) works on. */
     Vector<double>
     flatten(const ContactProblem::Iterate &u)
     {
       std::size_t n = 0;
       for (const auto &v : u)
-        n += v.size();
+        n += v.locally_owned_size();
       Vector<double> flat(n);
       std::size_t    offset = 0;
       for (const auto &v : u)
       {
-        std::copy(v.begin(), v.end(), flat.begin() + offset);
-        offset += v.size();
+        std::copy(
+          v.begin(), v.begin() + v.locally_owned_size(), flat.begin() + offset);
+        offset += v.locally_owned_size();
       }
       return flat;
     }
 
+    /** Back into @p u; a distributed body's ghosts (its locally relevant
+     * dofs and traces) are then imported from their owners, collectively
+     * over the body's processes. */
     void
     unflatten(const Vector<double> &flat, ContactProblem::Iterate &u)
     {
       std::size_t offset = 0;
       for (auto &v : u)
       {
-        std::copy(
-          flat.begin() + offset, flat.begin() + offset + v.size(), v.begin());
-        offset += v.size();
+        std::copy(flat.begin() + offset,
+                  flat.begin() + offset + v.locally_owned_size(),
+                  v.begin());
+        offset += v.locally_owned_size();
+        if (Utilities::MPI::n_mpi_processes(v.get_mpi_communicator()) > 1)
+          v.update_ghost_values();
       }
+    }
+
+    /** x . y of flattened iterates of the layout of @p u: a whole body's
+     * entries added in index order on this process, a distributed body's
+     * own entries then over its processes in rank order (ordered_sum()),
+     * so that every process finds the same value and takes the same
+     * decisions (Anderson's filtering, Aitken's gamma). With whole vectors
+     * this is ordered_dot() of the whole iterate, bit for bit. */
+    Relaxation::InnerProduct
+    inner_product(const ContactProblem::Iterate &u)
+    {
+      std::vector<std::pair<std::size_t, MPI_Comm>> segments;
+      for (const auto &v : u)
+        segments.emplace_back(v.locally_owned_size(), v.get_mpi_communicator());
+      return [segments](const Vector<double> &x, const Vector<double> &y)
+      {
+        AssertDimension(x.size(), y.size());
+        double      sum    = 0;
+        std::size_t offset = 0;
+        for (const auto &[n, comm] : segments)
+        {
+          const auto x0 = x.begin() + offset, y0 = y.begin() + offset;
+          if (Utilities::MPI::n_mpi_processes(comm) == 1)
+            sum = std::inner_product(x0, x0 + n, y0, sum);
+          else
+            sum += ordered_sum(std::inner_product(x0, x0 + n, y0, 0.), comm);
+          offset += n;
+        }
+        return sum;
+      };
     }
   } // namespace
 
@@ -103,11 +143,13 @@ namespace ddcontact
   {
     const auto &bodies = problem.get_bodies();
     auto        u      = problem.current_iterate();
+    relaxation->set_inner_product(inner_product(u));
     unflatten(relaxation->update(flatten(u), flatten(u_tilde)), u);
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
+      // On every stored entry: a ghost's masters are stored too.
       bodies[b]->distribute_constraints(u[b]);
-      bodies[b]->get_solution() = u[b];
+      copy_stored(u[b], bodies[b]->get_solution());
     }
   }
 
@@ -181,7 +223,7 @@ namespace ddcontact
       check_finite_pressure(p, u, record.iteration);
     }
     problem.solve_bodies(last_sigma_n, u_tilde);
-    last_u_tilde        = u_tilde;
+    ContactProblem::assign(last_u_tilde, u_tilde);
     const auto un       = problem.normal_displacements_by_body(u);
     const auto un_tilde = problem.normal_displacements_by_body(u_tilde);
 

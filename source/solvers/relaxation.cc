@@ -8,6 +8,12 @@
 
 namespace ddcontact
 {
+  Relaxation::Relaxation(const double gamma)
+    : gamma(gamma)
+    , inner(ordered_dot)
+  {
+  }
+
   Vector<double>
   FixedRelaxation::update(const Vector<double> &x, const Vector<double> &g)
   {
@@ -35,10 +41,10 @@ namespace ddcontact
     {
       Vector<double> df(f);
       df -= previous_residual;
-      const double dd = ordered_dot(df, df);
+      const double dd = inner(df, df);
       if (dd > 0)
-        gamma = std::clamp(
-          -gamma * ordered_dot(previous_residual, df) / dd, 1e-6, 1.);
+        gamma =
+          std::clamp(-gamma * inner(previous_residual, df) / dd, 1e-6, 1.);
     }
     previous_residual = f;
     Vector<double> x_new(x);
@@ -105,11 +111,12 @@ namespace ddcontact
         Vector<double>     v      = delta_f[column];
         for (unsigned int i = 0; i < j; ++i)
         {
-          r(i, j) = ordered_dot(q[i], v);
+          r(i, j) = inner(q[i], v);
           v.add(-r(i, j), q[i]);
         }
-        r(j, j) = std::sqrt(ordered_norm_sqr(v));
-        if (!(r(j, j) > 1e-6 * std::sqrt(ordered_norm_sqr(delta_f[column]))))
+        r(j, j) = std::sqrt(inner(v, v));
+        if (!(r(j, j) >
+              1e-6 * std::sqrt(inner(delta_f[column], delta_f[column]))))
         {
           delta_f.erase(delta_f.begin() + column);
           delta_g.erase(delta_g.begin() + column);
@@ -124,7 +131,7 @@ namespace ddcontact
     Vector<double>     alpha(m_kept);
     for (unsigned int i = m_kept; i-- > 0;)
     {
-      double sum = ordered_dot(q[i], f);
+      double sum = inner(q[i], f);
       for (unsigned int j = i + 1; j < m_kept; ++j)
         sum -= r(i, j) * alpha(j);
       alpha(i) = sum / r(i, i);

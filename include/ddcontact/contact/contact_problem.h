@@ -108,7 +108,7 @@ namespace ddcontact
     Iterate
     current_iterate() const;
 
-    /** Zero vectors of the bodies' sizes. */
+    /** Zero vectors of the bodies' layouts, their ghosts valid. */
     Iterate
     zero_iterate() const;
 

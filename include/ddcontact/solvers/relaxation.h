@@ -6,6 +6,7 @@
 #include <ddcontact/solvers/contact_solver_parameters.h>
 
 #include <deque>
+#include <functional>
 #include <memory>
 
 namespace ddcontact
@@ -17,14 +18,20 @@ namespace ddcontact
    * map value g = u~^{k+1} (the body solutions loaded by the pressure of
    * u^k), the next iterate u^{k+1}. Each strategy keeps its own history;
    * reset() forgets it (a new Uzawa phase or a new mesh changes the map).
+   *
+   * The vectors are the iterate's entries as this process holds them
+   * (all of them on one process); the inner product that Aitken and
+   * Anderson take of them is set by the solver (set_inner_product()), so
+   * that a body whose vectors are distributed over processes adds every
+   * process's part. Every other operation is entrywise.
    */
   class Relaxation
   {
   public:
-    explicit Relaxation(const double gamma)
-      : gamma(gamma)
-    {
-    }
+    using InnerProduct =
+      std::function<double(const Vector<double> &, const Vector<double> &)>;
+
+    explicit Relaxation(const double gamma);
 
     virtual ~Relaxation() = default;
 
@@ -51,8 +58,17 @@ namespace ddcontact
       gamma = new_gamma;
     }
 
+    /** x . y for the strategies (default: ordered_dot(), all entries on
+     * this process). */
+    void
+    set_inner_product(InnerProduct product)
+    {
+      inner = std::move(product);
+    }
+
   protected:
-    double gamma;
+    double       gamma;
+    InnerProduct inner;
   };
 
   /** The paper's fixed relaxation (21): u^{k+1} = u^k + gamma (g - u^k). */
