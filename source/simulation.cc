@@ -154,14 +154,10 @@ namespace ddcontact
   Simulation::distribute_body_vectors()
   {
     // The solvers read a body's iterate only on the contact zones (the
-    // traces), in the body's own solves and, adapting with Kelly, on the
-    // body's own cells, so a body on a p4est mesh can keep just its part;
-    // the paper's relaxation (21) is entrywise, with inner products over
-    // the processes. The FEM-BEM estimator's BEM reads the whole boundary:
-    // with it the vectors stay whole.
-    if (parameters.adaptation.enabled() &&
-        parameters.adaptation.estimator != EstimatorType::kelly)
-      return;
+    // traces), in the body's own solves and, adapting, on the body's own
+    // cells (the FEM stresses of the estimators), so a body on a p4est
+    // mesh keeps just its part; the paper's relaxation (21) is entrywise,
+    // with inner products over the processes.
     const auto traces = ContactProblem(raw_pointers(bodies),
                                        raw_pointers(contact_pairs),
                                        *distribution)
