@@ -100,13 +100,9 @@ namespace ddcontact
   }
 
   unsigned int
-  AdaptiveRefinement::mark()
+  AdaptiveRefinement::mark_above_delta()
   {
-    mark_cells(body.get_triangulation(),
-               parameters.marking == MarkingType::threshold
-                 ? eta
-                 : refinable_contributions,
-               parameters);
+    ddcontact::mark_above_delta(body.get_triangulation(), eta, parameters);
     return apply_caps();
   }
 

@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
 
@@ -17,26 +19,51 @@ namespace ddcontact
     const auto            &body_1 = pair.get_body_1();
     const auto            &body_2 = pair.get_body_2();
     const auto            &zone_1 = pair.zone_faces_1();
+    const auto            &points = pair.points();
     GridTools::Cache<2, 2> cache_1(body_1.get_triangulation(),
                                    body_1.get_mapping());
     GridTools::Cache<2, 2> cache(triangulation_2, body_2.get_mapping());
     unsigned int           flagged = 0;
     typename Triangulation<2>::active_cell_iterator hint, hint_1;
-    for (const auto &point : pair.points())
+
+    // Whether the cell of body 1 that holds each point x (inside a
+    // boundary face of S_1, so in one cell) is flagged: on a p4est mesh
+    // only its owner knows.
+    std::vector<unsigned int> halved(points.size(), 0);
+    for (unsigned int q = 0; q < points.size(); ++q)
     {
-      // The face of S_1 as it will be: halved where its cell is flagged.
-      double     h_1 = zone_1[point.face][0].distance(zone_1[point.face][1]);
       const auto found_1 = GridTools::find_active_cell_around_point(
-        cache_1, point.x, hint_1, {}, 1e-10);
-      if (found_1.first.state() == IteratorState::valid)
+        cache_1, points[q].x, hint_1, {}, 1e-10);
+      if (found_1.first.state() == IteratorState::valid &&
+          body_1.computes(found_1.first))
       {
-        hint_1 = found_1.first;
-        if (found_1.first->refine_flag_set())
-          h_1 /= 2;
+        hint_1    = found_1.first;
+        halved[q] = found_1.first->refine_flag_set() ? 1 : 0;
       }
+    }
+    if (body_1.is_mesh_distributed())
+    {
+      const int ierr =
+        MPI_Allreduce(MPI_IN_PLACE,
+                      halved.data(),
+                      halved.size(),
+                      MPI_UNSIGNED,
+                      MPI_MAX,
+                      body_1.get_triangulation().get_communicator());
+      AssertThrowMPI(ierr);
+    }
+
+    for (unsigned int q = 0; q < points.size(); ++q)
+    {
+      const auto &point = points[q];
+      // The face of S_1 as it will be: halved where its cell is flagged.
+      double h_1 = zone_1[point.face][0].distance(zone_1[point.face][1]);
+      if (halved[q])
+        h_1 /= 2;
       const auto found = GridTools::find_active_cell_around_point(
         cache, point.projection, hint, {}, 1e-10);
-      if (found.first.state() != IteratorState::valid)
+      if (found.first.state() != IteratorState::valid ||
+          !body_2.computes(found.first))
         continue;
       const auto cell = found.first;
       hint            = cell;
@@ -63,6 +90,8 @@ namespace ddcontact
         ++flagged;
       }
     }
-    return flagged;
+    return body_2.is_mesh_distributed()
+             ? Utilities::MPI::sum(flagged, triangulation_2.get_communicator())
+             : flagged;
   }
 } // namespace ddcontact

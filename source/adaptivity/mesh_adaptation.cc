@@ -54,19 +54,21 @@ namespace ddcontact
 
     // Fraction and Doerfler marking rank the cells of all adapted bodies
     // together, so that the body with the larger error gets more of the
-    // refinement (on one process; a distributed mesh marks its own).
-    bool joint =
-      parameters.marking != MarkingType::threshold && adaptations.size() > 1;
-    std::vector<const Vector<double> *> contributions;
-    for (const auto &a : adaptations)
+    // refinement; over all processes' cells, with the same cells flagged
+    // on any number of processes.
+    if (parameters.marking == MarkingType::threshold)
+      for (auto &a : adaptations)
+        marked += a->mark_above_delta();
+    else
     {
-      joint = joint && !a->get_body().is_mesh_distributed();
-      contributions.push_back(&a->error_contributions());
+      std::vector<double> contributions;
+      for_each_counted_cell([&](const double c, bool)
+                            { contributions.push_back(c); });
+      const double threshold = joint_marking_threshold(
+        contributions, parameters, marking_communicator());
+      for (auto &a : adaptations)
+        marked += a->mark_above(threshold);
     }
-    const double threshold =
-      joint ? joint_marking_threshold(contributions, parameters) : 0.;
-    for (auto &a : adaptations)
-      marked += joint ? a->mark_above(threshold) : a->mark();
 
     // Multipliers on the nodes of S_1 need an S_2 at least as fine
     // (grade_contact_zone()); the paper's penalty on the points is left as
@@ -76,7 +78,7 @@ namespace ddcontact
         for (auto &a : adaptations)
         {
           auto &body = a->get_body();
-          if (&body == &pair->get_body_2() && !body.is_mesh_distributed())
+          if (&body == &pair->get_body_2())
             marked += grade_contact_zone(
               *pair, body.get_triangulation(), parameters.max_level);
         }
@@ -149,34 +151,29 @@ namespace ddcontact
   MeshAdaptation::ensure_error_share(const unsigned int marked)
   {
     // The error the flagged cells carry, relative to the whole estimate
-    // (sums of squared contributions, all adapted bodies).
-    double                              flagged = 0, total = 0;
-    bool                                serial = true;
-    std::vector<const Vector<double> *> contributions;
-    for (const auto &a : adaptations)
-    {
-      const auto &body = a->get_body();
-      serial           = serial && !body.is_mesh_distributed();
-      const auto &c    = a->error_contributions();
-      contributions.push_back(&c);
-      for (const auto &cell : body.get_triangulation().active_cell_iterators())
+    // (sums of squared contributions, all adapted bodies, all processes).
+    double              flagged = 0, total = 0;
+    std::vector<double> contributions;
+    for_each_counted_cell(
+      [&](const double c, const bool is_flagged)
       {
-        const double c2 =
-          c(cell->active_cell_index()) * c(cell->active_cell_index());
-        total += c2;
-        if (cell->refine_flag_set())
-          flagged += c2;
-      }
-    }
-    // (Distributed meshes mark their own cells: left as the rule marked.)
-    if (!serial || !(total > 0) ||
+        contributions.push_back(c);
+        total += c * c;
+        if (is_flagged)
+          flagged += c * c;
+      });
+    const MPI_Comm comm = marking_communicator();
+    flagged             = ordered_sum(flagged, comm);
+    total               = ordered_sum(total, comm);
+    if (!(total > 0) ||
         flagged >= AdaptationParameters::min_refined_error_share * total)
       return marked;
     AdaptationParameters doerfler = parameters;
     doerfler.marking              = MarkingType::doerfler;
-    doerfler.fraction      = AdaptationParameters::min_refined_error_share;
-    const double threshold = joint_marking_threshold(contributions, doerfler);
-    unsigned int now       = 0;
+    doerfler.fraction = AdaptationParameters::min_refined_error_share;
+    const double threshold =
+      joint_marking_threshold(contributions, doerfler, comm);
+    unsigned int now = 0;
     for (auto &a : adaptations)
       now += a->mark_above(threshold);
     pcout << "  the marking flagged " << marked << " cells carrying "
@@ -185,6 +182,35 @@ namespace ddcontact
           << 100. * AdaptationParameters::min_refined_error_share
           << " %) instead" << std::endl;
     return now;
+  }
+
+  MPI_Comm
+  MeshAdaptation::marking_communicator() const
+  {
+    for (const auto &a : adaptations)
+      if (a->get_body().is_mesh_distributed())
+        return distribution.get_communicator();
+    return MPI_COMM_SELF;
+  }
+
+  void
+  MeshAdaptation::for_each_counted_cell(
+    const std::function<void(double, bool)> &f) const
+  {
+    // A p4est body counts its own cells on each process; a body held
+    // whole (serial or shared mesh) is counted by the first process when
+    // the sums run over the processes, else by each process alone.
+    const bool whole_here =
+      marking_communicator() == MPI_COMM_SELF ||
+      Utilities::MPI::this_mpi_process(distribution.get_communicator()) == 0;
+    for (const auto &a : adaptations)
+    {
+      const auto &body = a->get_body();
+      const auto &c    = a->error_contributions();
+      for (const auto &cell : body.get_triangulation().active_cell_iterators())
+        if (body.is_mesh_distributed() ? cell->is_locally_owned() : whole_here)
+          f(c(cell->active_cell_index()), cell->refine_flag_set());
+    }
   }
 
   void

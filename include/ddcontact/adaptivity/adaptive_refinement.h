@@ -72,17 +72,16 @@ namespace ddcontact
     estimate(const BodyVector &u_fem, const BoundaryTractionSamples &contact);
 
     /**
-     * Flag the cells to refine by the marking rule (threshold delta of (27),
-     * fixed fraction or Doerfler), except cells at Max level, and nothing
-     * when the refined mesh would exceed Max cells. Returns the number of
-     * flagged cells.
+     * Flag the cells to refine by the threshold delta of (27), except
+     * cells at Max level, and nothing when the refined mesh would exceed
+     * Max cells. Returns the number of flagged cells.
      */
     unsigned int
-    mark();
+    mark_above_delta();
 
     /** Flag the cells whose error contribution is at least @p threshold
-     * (joint marking of several bodies, joint_marking_threshold()), with
-     * the caps of mark(). */
+     * (fraction and Doerfler marking of all adapted bodies together,
+     * joint_marking_threshold()), with the caps of mark_above_delta(). */
     unsigned int
     mark_above(double threshold);
 
@@ -127,7 +126,7 @@ namespace ddcontact
       return eta_total;
     }
 
-    /** Cells that the last mark() flagged but Max level (threshold
+    /** Cells that the last marking flagged but Max level (threshold
      * marking) or Max cells kept unrefined. */
     unsigned int
     n_capped() const

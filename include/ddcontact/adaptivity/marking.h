@@ -6,6 +6,8 @@
 
 #include <ddcontact/adaptivity/adaptation_parameters.h>
 
+#include <mpi.h>
+
 #include <vector>
 
 namespace ddcontact
@@ -13,35 +15,40 @@ namespace ddcontact
   using namespace dealii;
 
   /**
-   * Set the refine flags of the cells of @p triangulation that the rule of
-   * Adaptation/Marking selects from @p eta (one value per active cell):
-   * the indicators (27) for threshold, the cells' error contributions
-   * (ErrorEstimator::error_contributions()) for the others:
-   *  - threshold: eta(e) > delta, the rule of (27) in the paper;
-   *  - fraction: the Fraction of the cells with the largest eta;
-   *  - doerfler: the fewest cells whose eta^2 sum to the Fraction of the
-   *    total (bulk marking: the error is the l2 sum of the cells').
-   * Other flags are cleared first. On a distributed mesh every process
-   * holds eta of its own cells, and fraction and Doerfler marking search
-   * their threshold over all processes. A new rule is one case here.
+   * Set the refine flags of the cells of @p triangulation whose indicator
+   * (27) @p eta (one value per active cell) is above Adaptation/Delta: the
+   * rule of the paper (Marking = threshold). Other flags are cleared
+   * first; a distributed mesh flags its own cells.
    */
   void
-  mark_cells(Triangulation<2>           &triangulation,
-             const Vector<double>       &eta,
-             const AdaptationParameters &parameters);
+  mark_above_delta(Triangulation<2>           &triangulation,
+                   const Vector<double>       &eta,
+                   const AdaptationParameters &parameters);
 
   /**
-   * Fraction or Doerfler marking over the cells of several bodies at once
-   * (@p contributions: one vector per body, the cells' error
-   * contributions in common units): the value at and above which a cell is
-   * refined, so that the error is balanced between the bodies instead of
-   * each body refining the same share of its own error. Infinity when no
-   * cell is to be refined.
+   * Fraction or Doerfler marking over the cells of all adapted bodies at
+   * once: the value at and above which a cell's error contribution
+   * (ErrorEstimator::error_contributions(), in common units) is refined,
+   * so that the error is balanced between the bodies instead of each body
+   * refining the same share of its own error. Infinity when no cell is to
+   * be refined.
+   *  - fraction: the round(Fraction N) largest of the N contributions;
+   *  - doerfler: the fewest cells whose squared contributions sum to the
+   *    Fraction of the total (bulk marking: the error is the l2 sum of the
+   *    cells').
+   *
+   * @p counted_here are the contributions this process counts, and
+   * @p communicator the processes that together count every cell once. On
+   * one process the values are sorted; over several the same value is
+   * found by bisection on the bit patterns of the (non-negative)
+   * contributions with exact global counts, about 64 reductions and no
+   * gather: fraction marking selects the same cells as on one process,
+   * Doerfler's sums differ by round-off in the order of summation.
    */
   double
-  joint_marking_threshold(
-    const std::vector<const Vector<double> *> &contributions,
-    const AdaptationParameters                &parameters);
+  joint_marking_threshold(const std::vector<double>  &counted_here,
+                          const AdaptationParameters &parameters,
+                          MPI_Comm                    communicator);
 } // namespace ddcontact
 
 #endif

@@ -10,6 +10,7 @@
 #include <ddcontact/contact/contact_pair.h>
 #include <ddcontact/solvers/contact_solver.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -99,6 +100,18 @@ namespace ddcontact
      * adapted bodies). Returns the marked cells. */
     unsigned int
     ensure_error_share(unsigned int marked);
+
+    /** The processes over which the cells' error contributions are
+     * summed and ranked: all, if an adapted body is on p4est (each process
+     * holds its own cells); this process alone otherwise. */
+    MPI_Comm
+    marking_communicator() const;
+
+    /** @p f(contribution, flagged) for every cell of the adapted bodies
+     * that this process counts in sums over marking_communicator(), body
+     * by body in cell order. */
+    void
+    for_each_counted_cell(const std::function<void(double, bool)> &f) const;
 
     /** The reason the refinement stopped above the target, after a
      * marking that flagged nothing. */

@@ -77,6 +77,13 @@ namespace ddcontact
       return groups[b][0];
     }
 
+    /** All processes of the run. */
+    MPI_Comm
+    get_communicator() const
+    {
+      return communicator;
+    }
+
     /** Whether the meshes are partitioned over process groups. */
     bool
     uses_process_groups() const

@@ -53,8 +53,8 @@ namespace ddcontact
    * (BodyVector, reinit_vector()) are whole on every process, so that the
    * DD loop (20)-(21) is the same for every kind of mesh, unless a p4est
    * body's are distributed (distribute_vectors(): owned dofs plus ghosts,
-   * for every solver and estimator). On a p4est mesh every process holds all constraints
-   * (complete_constraints()), which are few.
+   * for every solver and estimator). On a p4est mesh every process holds all
+   * constraints (complete_constraints()), which are few.
    */
   template <int dim>
   class ElasticBody
