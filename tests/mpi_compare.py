@@ -168,6 +168,14 @@ def main():
                 failures.append(f"process {p['rank']} stores "
                                 f"{p['vector_entries']} entries, owns "
                                 f"{p['owned_dofs']} of {dofs} dofs")
+        # ... and only the constraint lines of the entries it stores,
+        # fewer than all of the bodies' lines (the 1-process run's).
+        lines = one["processes"][0]["constraint_lines"]
+        stored = [p["constraint_lines"] for p in two["processes"]]
+        print(f"  constraint lines per process {stored} of {lines}")
+        if lines > 0 and max(stored) >= lines:
+            failures.append(f"a process stores {max(stored)} constraint "
+                            f"lines, as many as the bodies have ({lines})")
     if "--expect-shared-mesh" in rest and any(meshes.values()):
         failures.append(f"a body had a distributed mesh: {meshes}")
     for f in failures:

@@ -310,6 +310,15 @@ namespace ddcontact
     return n;
   }
 
+  std::uint64_t
+  BodyDistribution::constraint_lines() const
+  {
+    std::uint64_t n = 0;
+    for (const auto *body : bodies)
+      n += body->get_constraints().n_constraints();
+    return n;
+  }
+
   types::global_dof_index
   BodyDistribution::owned_dofs() const
   {

@@ -9,8 +9,6 @@
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
 
-#include <deal.II/lac/trilinos_vector.h>
-
 #include <deal.II/meshworker/copy_data.h>
 #include <deal.II/meshworker/mesh_loop.h>
 #include <deal.II/meshworker/scratch_data.h>
@@ -123,17 +121,23 @@ namespace ddcontact
 
   template <int dim>
   void
-  ElasticBody<dim>::complete_constraints(
-    AffineConstraints<double> &to_complete) const
+  ElasticBody<dim>::share_constraints(
+    AffineConstraints<double>         &to_complete,
+    const Utilities::MPI::Partitioner *layout) const
   {
-    // Every dof's constraint as the process owning the dof computed it,
-    // on every process, in one closed object: the DD keeps the whole
-    // iterate on every process and distributes the constraints in it
-    // (relaxation (21), the transfer after refinement), which must give
-    // the same numbers everywhere. These are the Dirichlet dofs of (5)
-    // and the hanging nodes: few next to the iterate.
-    std::vector<ConstraintLine> owned_lines;
-    const IndexSet             &owned = dof_handler.locally_owned_dofs();
+    // The distributed DD computes the constrained entries it stores from
+    // their masters (the relaxation (21), the transfer after refinement,
+    // every solve), which must give the same numbers on every process:
+    // a line computed from another cell can differ in the last bit, and
+    // the replicated iteration then drifts apart between the processes.
+    // These are the Dirichlet dofs of (5) and the hanging nodes.
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    IndexSet        sent(dof_handler.n_dofs());
+    if (layout != nullptr)
+      for (const auto &[begin, end] : layout->import_indices())
+        for (unsigned int i = begin; i < end; ++i)
+          sent.add_index(owned.nth_index_in_set(i));
+    std::vector<ConstraintLine> own_lines, sent_lines;
     for (const auto &line : to_complete.get_lines())
       if (owned.is_element(line.index))
       {
@@ -143,19 +147,33 @@ namespace ddcontact
           l.masters.push_back(master);
           l.weights.push_back(weight);
         }
-        owned_lines.push_back(l);
+        if (layout == nullptr || sent.is_element(line.index))
+          sent_lines.push_back(l);
+        own_lines.push_back(std::move(l));
       }
-    // (reinit() also drops the restriction to the locally relevant dofs.)
-    to_complete.reinit();
+    const auto add = [&](const ConstraintLine &l)
+    {
+      to_complete.add_line(l.index);
+      for (unsigned int k = 0; k < l.masters.size(); ++k)
+        to_complete.add_entry(l.index, l.masters[k], l.weights[k]);
+      to_complete.set_inhomogeneity(l.index, l.inhomogeneity);
+    };
+    if (layout == nullptr)
+      // (reinit() drops the restriction to the locally relevant dofs.)
+      to_complete.reinit();
+    else
+    {
+      IndexSet stored = owned;
+      stored.add_indices(layout->ghost_indices());
+      to_complete.reinit(stored);
+      for (const auto &l : own_lines)
+        add(l);
+    }
     for (const auto &from_process : Utilities::MPI::all_gather(
-           get_triangulation().get_communicator(), owned_lines))
+           get_triangulation().get_communicator(), sent_lines))
       for (const auto &l : from_process)
-      {
-        to_complete.add_line(l.index);
-        for (unsigned int k = 0; k < l.masters.size(); ++k)
-          to_complete.add_entry(l.index, l.masters[k], l.weights[k]);
-        to_complete.set_inhomogeneity(l.index, l.inhomogeneity);
-      }
+        if (layout == nullptr || layout->is_ghost_entry(l.index))
+          add(l);
     to_complete.close();
   }
 
@@ -172,19 +190,31 @@ namespace ddcontact
     // dofs (below, they are completed).
     constraints.clear();
     hanging_node_constraints.clear();
+    IndexSet relevant;
     if (mesh.is_distributed())
     {
-      IndexSet relevant;
       DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
       constraints.reinit(relevant);
       hanging_node_constraints.reinit(relevant);
     }
+    // Distributed vectors stay distributed, with the locally relevant dofs
+    // as ghosts until distribute_vectors() adds the new traces.
+    if (distributed_vectors)
+      partitioner = std::make_shared<Utilities::MPI::Partitioner>(
+        dof_handler.locally_owned_dofs(),
+        relevant,
+        get_triangulation().get_communicator());
+    else
+      partitioner =
+        std::make_shared<Utilities::MPI::Partitioner>(dof_handler.n_dofs());
+    const Utilities::MPI::Partitioner *stored =
+      distributed_vectors ? partitioner.get() : nullptr;
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     DoFTools::make_hanging_node_constraints(dof_handler,
                                             hanging_node_constraints);
     hanging_node_constraints.close();
     if (mesh.is_distributed())
-      complete_constraints(hanging_node_constraints);
+      share_constraints(hanging_node_constraints, stored);
     check_dirichlet_values(*this);
     for (const auto &[id, d] : boundary_conditions.dirichlet)
       VectorTools::interpolate_boundary_values(
@@ -192,22 +222,7 @@ namespace ddcontact
     setup_rigid_modes();
     constraints.close();
     if (mesh.is_distributed())
-      complete_constraints(constraints);
-
-    // Distributed vectors stay distributed, with the locally relevant dofs
-    // as ghosts until distribute_vectors() adds the new traces.
-    if (distributed_vectors)
-    {
-      IndexSet relevant;
-      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-      partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-        dof_handler.locally_owned_dofs(),
-        relevant,
-        get_triangulation().get_communicator());
-    }
-    else
-      partitioner =
-        std::make_shared<Utilities::MPI::Partitioner>(dof_handler.n_dofs());
+      share_constraints(constraints, stored);
     reinit_vector(solution);
     if (solved_here)
       setup_matrix();
@@ -530,57 +545,26 @@ namespace ddcontact
     if (mesh.is_distributed())
     {
       // p4est refines the owned cells, repartitions, and moves the
-      // transferred values with the cells; the interpolation needs the
-      // ghost values of the old mesh.
-      AssertThrow(is_solved_distributed(), ExcInternalError());
-      if (distributed_vectors)
-      {
-        // The solution holds its owned dofs and the ghosts the
-        // interpolation needs; the new one is distributed likewise.
-        parallel::distributed::SolutionTransfer<dim, BodyVector> transfer(
-          dof_handler);
-        transfer.prepare_for_coarsening_and_refinement(solution);
-        get_triangulation().execute_coarsening_and_refinement();
-        setup_system();
-        transfer.interpolate(solution);
-        solution.update_ghost_values();
-        distribute_constraints(solution, false);
-        if (solved_here)
-        {
-          assemble_system();
-          factorize();
-        }
-        return;
-      }
-      const MPI_Comm comm = get_triangulation().get_communicator();
-      IndexSet       relevant;
-      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-      TrilinosWrappers::MPI::Vector owned(dof_handler.locally_owned_dofs(),
-                                          comm),
-        ghosted(dof_handler.locally_owned_dofs(), relevant, comm);
-      for (const auto i : dof_handler.locally_owned_dofs())
-        owned(i) = solution(i);
-      owned.compress(VectorOperation::insert);
-      ghosted = owned;
-      parallel::distributed::SolutionTransfer<dim,
-                                              TrilinosWrappers::MPI::Vector>
-        transfer(dof_handler);
-      transfer.prepare_for_coarsening_and_refinement(ghosted);
+      // transferred values with the cells. The solution holds its owned
+      // dofs and the ghosts the interpolation needs (a p4est body's
+      // vectors are always distributed, Simulation::distribute_body_vectors());
+      // the new one is distributed likewise.
+      AssertThrow(is_solved_distributed() && distributed_vectors,
+                  ExcInternalError());
+      parallel::distributed::SolutionTransfer<dim, BodyVector> transfer(
+        dof_handler);
+      transfer.prepare_for_coarsening_and_refinement(solution);
       get_triangulation().execute_coarsening_and_refinement();
-
       setup_system();
-      TrilinosWrappers::MPI::Vector moved(dof_handler.locally_owned_dofs(),
-                                          comm);
-      transfer.interpolate(moved);
-      // The values of every process's own dofs, whole on all of them.
-      reinit_vector(solution);
-      const auto owned_range = dof_handler.locally_owned_dofs();
-      const auto pieces      = Utilities::MPI::all_gather(
-        comm,
-        std::make_pair(owned_range.n_elements() ? *owned_range.begin() : 0,
-                       std::vector<double>(moved.begin(), moved.end())));
-      for (const auto &[first, values] : pieces)
-        std::copy(values.begin(), values.end(), solution.begin() + first);
+      transfer.interpolate(solution);
+      solution.update_ghost_values();
+      distribute_constraints(solution, false);
+      if (solved_here)
+      {
+        assemble_system();
+        factorize();
+      }
+      return;
     }
     else if (mesh.is_simplex())
     {
@@ -650,6 +634,9 @@ namespace ddcontact
     solution.swap(distributed);
     partitioner         = layout;
     distributed_vectors = true;
+    // The lines of the entries now stored, the traces among them.
+    share_constraints(constraints, layout.get());
+    share_constraints(hanging_node_constraints, layout.get());
   }
 
   template <int dim>

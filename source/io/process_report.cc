@@ -23,11 +23,12 @@ namespace ddcontact
   processes_json(const BodyDistribution &distribution,
                  const unsigned int      n_steps)
   {
-    const std::array<double, 4> mine = {
+    const std::array<double, 5> mine = {
       static_cast<double>(distribution.owned_dofs()),
       peak_memory_mb(),
       static_cast<double>(distribution.bytes_sent()),
-      static_cast<double>(distribution.vector_entries())};
+      static_cast<double>(distribution.vector_entries()),
+      static_cast<double>(distribution.constraint_lines())};
     Json         processes = Json::array();
     unsigned int rank      = 0;
     for (const auto &p : Utilities::MPI::all_gather(MPI_COMM_WORLD, mine))
@@ -37,7 +38,8 @@ namespace ddcontact
          {"peak_memory_mb", p[1]},
          {"bytes_sent", static_cast<unsigned long long>(p[2])},
          {"bytes_sent_per_step", n_steps > 0 ? p[2] / n_steps : 0.},
-         {"vector_entries", static_cast<unsigned long long>(p[3])}});
+         {"vector_entries", static_cast<unsigned long long>(p[3])},
+         {"constraint_lines", static_cast<unsigned long long>(p[4])}});
     return processes;
   }
 

@@ -178,6 +178,13 @@ namespace ddcontact
     std::uint64_t
     vector_entries() const;
 
+    /** The constraint lines (Dirichlet dofs and hanging nodes) of the
+     * bodies this process stores: all of a body's on a serial or shared
+     * mesh, those of the stored entries with distributed vectors
+     * (ElasticBody::share_constraints()). */
+    std::uint64_t
+    constraint_lines() const;
+
     /** Bytes of body vectors this process has sent by share() and
      * solve_and_share_traces() over the run (a broadcast counted as one
      * message per receiving process). */

@@ -53,8 +53,9 @@ namespace ddcontact
    * (BodyVector, reinit_vector()) are whole on every process, so that the
    * DD loop (20)-(21) is the same for every kind of mesh, unless a p4est
    * body's are distributed (distribute_vectors(): owned dofs plus ghosts,
-   * for every solver and estimator). On a p4est mesh every process holds all
-   * constraints (complete_constraints()), which are few.
+   * for every solver and estimator). On a p4est mesh every process holds
+   * the constraints of the entries it stores, each from the dof's owner
+   * (share_constraints()).
    */
   template <int dim>
   class ElasticBody
@@ -444,10 +445,19 @@ namespace ddcontact
     void
     setup_matrix();
 
-    /** On a distributed mesh: replace the lines of @p to_complete for the
-     * locally relevant dofs by those of all dofs, each from its owner. */
+    /**
+     * On a distributed mesh: replace the lines of @p to_complete by each
+     * dof's line as the process owning the dof computed it, so that every
+     * process computes a constrained entry it stores as its owner does.
+     * With @p layout (distributed vectors) the lines of the entries a
+     * process stores, its own dofs and @p layout's ghosts: each owner
+     * sends the lines of its dofs that others import, O(partition
+     * boundary + traces). Without, the lines of all dofs on every process
+     * (whole vectors).
+     */
     void
-    complete_constraints(AffineConstraints<double> &to_complete) const;
+    share_constraints(AffineConstraints<double>         &to_complete,
+                      const Utilities::MPI::Partitioner *layout) const;
 
     /** The free rigid modes (rigid_modes) and their fixed components,
      * added to the open @p constraints. */
