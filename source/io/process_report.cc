@@ -24,11 +24,11 @@ namespace ddcontact
                  const unsigned int      n_steps)
   {
     const std::array<double, 5> mine = {
-      static_cast<double>(distribution.owned_dofs()),
-      peak_memory_mb(),
-      static_cast<double>(distribution.bytes_sent()),
-      static_cast<double>(distribution.vector_entries()),
-      static_cast<double>(distribution.constraint_lines())};
+      {static_cast<double>(distribution.owned_dofs()),
+       peak_memory_mb(),
+       static_cast<double>(distribution.bytes_sent()),
+       static_cast<double>(distribution.vector_entries()),
+       static_cast<double>(distribution.constraint_lines())}};
     Json         processes = Json::array();
     unsigned int rank      = 0;
     for (const auto &p : Utilities::MPI::all_gather(MPI_COMM_WORLD, mine))
