@@ -234,7 +234,7 @@ namespace ddcontact
       bodies[b]->get_constraints().set_zero(v[b]);
       // The contact points read v at the traces, among a distributed
       // body's ghosts: set_zero() and the start vector wrote owned entries.
-      if (Utilities::MPI::n_mpi_processes(v[b].get_mpi_communicator()) > 1)
+      if (bodies[b]->has_distributed_vectors())
         v[b].update_ghost_values();
     }
     double lambda = 0;

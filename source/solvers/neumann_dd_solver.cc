@@ -63,9 +63,7 @@ namespace ddcontact
       return flat;
     }
 
-    /** Back into @p u; a distributed body's ghosts (its locally relevant
-     * dofs and traces) are then imported from their owners, collectively
-     * over the body's processes. */
+    /** Back into the owned entries of @p u. */
     void
     unflatten(const Vector<double> &flat, ContactProblem::Iterate &u)
     {
@@ -76,8 +74,6 @@ namespace ddcontact
                   flat.begin() + offset + v.locally_owned_size(),
                   v.begin());
         offset += v.locally_owned_size();
-        if (Utilities::MPI::n_mpi_processes(v.get_mpi_communicator()) > 1)
-          v.update_ghost_values();
       }
     }
 
@@ -147,7 +143,12 @@ namespace ddcontact
     unflatten(relaxation->update(flatten(u), flatten(u_tilde)), u);
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
-      // On every stored entry: a ghost's masters are stored too.
+      // A distributed body's ghosts (its locally relevant dofs and the
+      // traces) from their owners, collectively over its processes; then
+      // the constraints on every stored entry (a ghost's masters are
+      // stored too).
+      if (bodies[b]->has_distributed_vectors())
+        u[b].update_ghost_values();
       bodies[b]->distribute_constraints(u[b]);
       copy_stored(u[b], bodies[b]->get_solution());
     }
