@@ -58,11 +58,13 @@ namespace ddcontact
   }
 
   double
-  ordered_norm_sqr(const dealii::LinearAlgebra::distributed::Vector<double> &x)
+  ordered_dot(const dealii::LinearAlgebra::distributed::Vector<double> &x,
+              const dealii::LinearAlgebra::distributed::Vector<double> &y)
   {
+    AssertDimension(x.locally_owned_size(), y.locally_owned_size());
     return ordered_sum(
       std::inner_product(
-        x.begin(), x.begin() + x.locally_owned_size(), x.begin(), 0.),
+        x.begin(), x.begin() + x.locally_owned_size(), y.begin(), 0.),
       x.get_mpi_communicator());
   }
 } // namespace ddcontact

@@ -47,11 +47,19 @@ namespace ddcontact
   double
   ordered_sum(double own, MPI_Comm comm);
 
-  /** ||x||^2 of a body's vector: its own entries summed in index order on
-   * every process, then over the processes of its communicator
-   * (ordered_sum()). */
+  /** x . y of two vectors of one body's layout: their own entries summed
+   * in index order on every process, then over the processes of their
+   * communicator (ordered_sum()). */
   double
-  ordered_norm_sqr(const dealii::LinearAlgebra::distributed::Vector<double> &x);
+  ordered_dot(const dealii::LinearAlgebra::distributed::Vector<double> &x,
+              const dealii::LinearAlgebra::distributed::Vector<double> &y);
+
+  /** ||x||^2 of a body's vector (ordered_dot()). */
+  inline double
+  ordered_norm_sqr(const dealii::LinearAlgebra::distributed::Vector<double> &x)
+  {
+    return ordered_dot(x, x);
+  }
 } // namespace ddcontact
 
 #endif

@@ -219,15 +219,20 @@ namespace ddcontact
     // Border the system with the free rigid modes (doc/bem-method.md §5.1):
     // [A R; R^T 0] [x; lambda] = [f; 0]. The solution has no rigid
     // component and lambda measures the equilibrium defect of the data.
+    // The column enters the collocation rows of the node (2 m + c), so
+    // that the defect goes to the same equations whatever the order of
+    // the nodes (a p4est mesh gathers them in another order); with every
+    // displacement unknown these rows are the unknowns' numbers.
     for (unsigned int q = 0; q < n_modes; ++q)
-      for (const auto &node : nodes)
+      for (unsigned int m = 0; m < nodes.size(); ++m)
         for (unsigned int c = 0; c < 2; ++c)
-          if (!node.known[c])
+          if (!nodes[m].known[c])
           {
+            const auto  &node = nodes[m];
             const double value =
               rigid_modes[q][c] +
               rigid_modes[q][2] * (c == 0 ? -node.x[1] : node.x[0]);
-            system_matrix(node.unknown[c], n_boundary_unknowns + q) = value;
+            system_matrix(2 * m + c, n_boundary_unknowns + q)       = value;
             system_matrix(n_boundary_unknowns + q, node.unknown[c]) = value;
           }
   }

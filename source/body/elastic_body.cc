@@ -19,6 +19,7 @@
 #include <ddcontact/body/boundary_data_checks.h>
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/body/refinement_transfer.h>
+#include <ddcontact/tasks.h>
 
 #include <iomanip>
 #include <sstream>
@@ -233,28 +234,15 @@ namespace ddcontact
   void
   ElasticBody<dim>::setup_rigid_modes()
   {
-    if (mesh.is_distributed())
-    {
-      // The modes are computed from every cell: a p4est mesh, which keeps
-      // only its own, must be held by its Dirichlet conditions.
-      bool has[2] = {false, false};
-      for (const auto &[id, d] : boundary_conditions.dirichlet)
-        for (unsigned int c = 0; c < 2; ++c)
-          has[c] = has[c] || d.mask[c];
-      if (!has[0] || !has[1])
-        throw InputError(parameters.section() +
-                         "/Dirichlet: a floating body (held only by contact) "
-                         "cannot have a distributed (p4est) mesh; use "
-                         "Parallel/Mesh = shared, or prescribe both "
-                         "displacement components somewhere");
-      return;
-    }
     AffineConstraints<double> closed;
     closed.copy_from(constraints);
     closed.close();
-    rigid_modes.reinit(dof_handler, get_mapping(), boundary_conditions, closed);
+    rigid_modes.reinit(
+      dof_handler, get_mapping(), boundary_conditions, closed, partitioner);
+    // Every process that stores a fixed dof holds its line.
     for (const auto i : rigid_modes.fixing_dofs())
-      constraints.add_line(i);
+      if (constraints.can_store_line(i))
+        constraints.add_line(i);
   }
 
   template <int dim>
@@ -274,7 +262,9 @@ namespace ddcontact
   ElasticBody<dim>::assemble_system()
   {
     linear_solver->zero();
-    BodyVector data_load(is_floating() ? dof_handler.n_dofs() : 0);
+    BodyVector data_load;
+    if (is_floating())
+      reinit_vector(data_load);
     // A load expression that is not finite somewhere (sqrt(x) at x < 0) is
     // found here, in the serial part (a worker thread must not throw), and
     // named after the loop.
@@ -300,10 +290,16 @@ namespace ddcontact
     if (non_finite_load)
       throw_non_finite_load(*this);
     mode_loads.clear();
+    // Distributed vectors: the loads of the ghosts go to their owners,
+    // and the owned parts of the work are added in rank order.
+    if (distributed_vectors && is_floating())
+      data_load.compress(VectorOperation::add);
     for (unsigned int k = 0; k < rigid_modes.size(); ++k)
-      mode_loads.push_back(rigid_modes.mode(k) * data_load);
-    // Each process of a group assembled its own cells.
-    if (is_solved_distributed() && !mode_loads.empty())
+      mode_loads.push_back(distributed_vectors
+                             ? ordered_dot(rigid_modes.mode(k), data_load)
+                             : rigid_modes.mode(k) * data_load);
+    // Each process of a group assembled its own cells into whole vectors.
+    if (is_solved_distributed() && !distributed_vectors && !mode_loads.empty())
       Utilities::MPI::sum(ArrayView<const double>(mode_loads),
                           mesh.group_communicator(),
                           ArrayView<double>(mode_loads));
@@ -634,6 +630,7 @@ namespace ddcontact
     solution.swap(distributed);
     partitioner         = layout;
     distributed_vectors = true;
+    rigid_modes.set_layout(layout);
     // The lines of the entries now stored, the traces among them.
     share_constraints(constraints, layout.get());
     share_constraints(hanging_node_constraints, layout.get());

@@ -1,10 +1,16 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
+
+#include <deal.II/distributed/tria_base.h>
+
+#include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/fe/fe_values.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <ddcontact/body/rigid_body_modes.h>
+#include <ddcontact/tasks.h>
 
 #include <cmath>
 #include <set>
@@ -13,10 +19,12 @@ namespace ddcontact
 {
   template <int dim>
   void
-  RigidBodyModes<dim>::reinit(const DoFHandler<dim>           &dof_handler,
-                              const Mapping<dim>              &mapping,
-                              const BoundaryConditions<dim>   &conditions,
-                              const AffineConstraints<double> &constraints)
+  RigidBodyModes<dim>::reinit(
+    const DoFHandler<dim>                                    &dof_handler,
+    const Mapping<dim>                                       &mapping,
+    const BoundaryConditions<dim>                            &conditions,
+    const AffineConstraints<double>                          &constraints,
+    const std::shared_ptr<const Utilities::MPI::Partitioner> &layout)
   {
     static_assert(dim == 2, "rigid modes are written for 2D");
     modes.clear();
@@ -28,15 +36,27 @@ namespace ddcontact
     for (const auto &[id, condition] : conditions.dirichlet)
       if (condition.mask[0] && condition.mask[1])
         return;
-    const unsigned int n = dof_handler.n_dofs();
+    const types::global_dof_index n = dof_handler.n_dofs();
 
-    // The support point and component of every dof, from every cell: a
-    // shared mesh holds all cells on every process, so this is the whole
-    // body there too (DoFTools' helpers give a parallel mesh's locally
-    // relevant part only).
+    // Every dof is counted once: on a serial or shared mesh, which holds
+    // every cell, all of them here; on a p4est mesh those this process
+    // owns, the sums then added over the processes in rank order (the
+    // same bits everywhere; on one process own + 0 = own).
+    const auto *p4est =
+      dynamic_cast<const parallel::DistributedTriangulationBase<dim> *>(
+        &dof_handler.get_triangulation());
+    const MPI_Comm comm = p4est ? p4est->get_communicator() : MPI_COMM_SELF;
+    const IndexSet counted =
+      p4est ? dof_handler.locally_owned_dofs() : complete_index_set(n);
+    IndexSet known = counted;
+    if (p4est)
+      DoFTools::extract_locally_relevant_dofs(dof_handler, known);
+    const auto total = [&](const double own) { return ordered_sum(own, comm); };
+
+    // The support point and component of every dof of the cells here.
     const FiniteElement<dim> &fe = dof_handler.get_fe();
-    std::vector<Point<dim>>   x(n);
-    std::vector<bool>         is_x(n, false);
+    std::vector<Point<dim>>   x(known.n_elements());
+    std::vector<bool>         is_x(known.n_elements(), false);
     {
       FEValues<dim>                        support(mapping,
                             fe,
@@ -44,38 +64,43 @@ namespace ddcontact
                             update_quadrature_points);
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        support.reinit(cell);
-        cell->get_dof_indices(dofs);
-        for (unsigned int i = 0; i < dofs.size(); ++i)
+        if (!cell->is_artificial())
         {
-          x[dofs[i]]    = support.quadrature_point(i);
-          is_x[dofs[i]] = fe.system_to_component_index(i).first == 0;
+          support.reinit(cell);
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+          {
+            const auto k = known.index_within_set(dofs[i]);
+            x[k]         = support.quadrature_point(i);
+            is_x[k]      = fe.system_to_component_index(i).first == 0;
+          }
         }
-      }
     }
 
     // The three rigid motions at every dof: translations in x and y, and
     // the rotation about the centre of the support points, scaled by the
     // body's size so that the three are of one magnitude.
     Point<dim> centre;
-    for (const auto &point : x)
-      centre += point / static_cast<double>(n);
+    for (const auto i : counted)
+      centre += x[known.index_within_set(i)] / static_cast<double>(n);
+    for (unsigned int d = 0; d < dim; ++d)
+      centre[d] = total(centre[d]);
     double size = 0;
-    for (const auto &point : x)
-      size = std::max(size, point.distance(centre));
-    std::vector<std::array<double, 3>> basic(n);
-    for (unsigned int i = 0; i < n; ++i)
+    for (const auto i : counted)
+      size = std::max(size, x[known.index_within_set(i)].distance(centre));
+    size = Utilities::MPI::max(size, comm);
+    // The three at the dof of index k in known.
+    const auto basic = [&](const unsigned int k) -> std::array<double, 3>
     {
       const double rotation =
-        is_x[i] ? -(x[i][1] - centre[1]) / size : (x[i][0] - centre[0]) / size;
-      basic[i] = {{is_x[i] ? 1. : 0., is_x[i] ? 0. : 1., rotation}};
-    }
+        is_x[k] ? -(x[k][1] - centre[1]) / size : (x[k][0] - centre[0]) / size;
+      return {{is_x[k] ? 1. : 0., is_x[k] ? 0. : 1., rotation}};
+    };
 
     // The free combinations: the kernel of the Gram matrix of the three
     // at the prescribed components (entries of order one per dof, so a
     // held mode has an eigenvalue of at least about one).
-    LAPACKFullMatrix<double> gram(3, 3);
+    double own_gram[3][3] = {};
     for (const auto &[id, condition] : conditions.dirichlet)
     {
       // The prescribed components on the faces of this id, each dof once
@@ -83,19 +108,29 @@ namespace ddcontact
       std::set<types::global_dof_index>    prescribed;
       std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
       for (const auto &cell : dof_handler.active_cell_iterators())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && face->boundary_id() == id)
-          {
-            face->get_dof_indices(face_dofs);
-            for (unsigned int k = 0; k < face_dofs.size(); ++k)
-              if (condition.mask[fe.face_system_to_component_index(k).first])
-                prescribed.insert(face_dofs[k]);
-          }
+        if (!cell->is_artificial())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && face->boundary_id() == id)
+            {
+              face->get_dof_indices(face_dofs);
+              for (unsigned int k = 0; k < face_dofs.size(); ++k)
+                if (condition
+                      .mask[fe.face_system_to_component_index(k).first] &&
+                    counted.is_element(face_dofs[k]))
+                  prescribed.insert(face_dofs[k]);
+            }
       for (const auto i : prescribed)
+      {
+        const auto e = basic(known.index_within_set(i));
         for (unsigned int a = 0; a < 3; ++a)
           for (unsigned int b = 0; b < 3; ++b)
-            gram(a, b) += basic[i][a] * basic[i][b];
+            own_gram[a][b] += e[a] * e[b];
+      }
     }
+    LAPACKFullMatrix<double> gram(3, 3);
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int b = 0; b < 3; ++b)
+        gram(a, b) = total(own_gram[a][b]);
     gram.compute_svd();
     const auto &vt = gram.get_svd_vt();
     for (unsigned int k = 0; k < 3; ++k)
@@ -104,11 +139,20 @@ namespace ddcontact
     if (weights.empty())
       return;
 
-    for (const auto &w : weights)
+    // The value of mode m at the dof of index k in known.
+    const auto value = [&](const unsigned int m, const unsigned int k)
     {
-      BodyVector mode(n);
-      for (unsigned int i = 0; i < n; ++i)
-        mode[i] = w[0] * basic[i][0] + w[1] * basic[i][1] + w[2] * basic[i][2];
+      const auto  e = basic(k);
+      const auto &w = weights[m];
+      return w[0] * e[0] + w[1] * e[1] + w[2] * e[2];
+    };
+    for (unsigned int m = 0; m < weights.size(); ++m)
+    {
+      BodyVector mode(layout);
+      for (unsigned int k = 0; k < known.n_elements(); ++k)
+        if (layout->in_local_range(known.nth_index_in_set(k)))
+          mode(known.nth_index_in_set(k)) = value(m, k);
+      mode.update_ghost_values();
       modes.push_back(std::move(mode));
     }
 
@@ -116,15 +160,19 @@ namespace ddcontact
     // dof whose mode values are farthest from the span of those already
     // chosen (pivoted Gram-Schmidt on the rows of the mode matrix). The
     // values of the modes at the fixed dofs then form a regular matrix,
-    // so no free motion leaves all of them at rest. The first dof wins a
-    // tie, so the choice is deterministic.
+    // so no free motion leaves all of them at rest. Symmetric bodies have
+    // ties (the corners of a rectangle under a rotation), which round-off
+    // of the centre decides: among the dofs within 1e-10 of the largest
+    // value, the one with the smallest support point (x, then y, then the
+    // x component) wins, which is the same dof on any mesh partition and
+    // numbering.
     std::vector<std::vector<double>> chosen_directions;
     // The mode values at dof i without their part along the chosen ones.
-    const auto residual_row = [&](const unsigned int i)
+    const auto residual_row = [&](const types::global_dof_index i)
     {
       std::vector<double> row(modes.size());
       for (unsigned int m = 0; m < modes.size(); ++m)
-        row[m] = modes[m][i];
+        row[m] = value(m, known.index_within_set(i));
       for (const auto &q : chosen_directions)
       {
         double dot = 0;
@@ -135,29 +183,70 @@ namespace ddcontact
       }
       return row;
     };
+    const auto norm_sqr = [](const std::vector<double> &row)
+    {
+      double norm = 0;
+      for (const double v : row)
+        norm += v * v;
+      return norm;
+    };
     for (unsigned int k = 0; k < modes.size(); ++k)
     {
-      double       best     = 0;
-      unsigned int best_dof = n;
-      for (unsigned int i = 0; i < n; ++i)
+      double largest = 0;
+      for (const auto i : counted)
+        if (!constraints.is_constrained(i))
+          largest = std::max(largest, norm_sqr(residual_row(i)));
+      largest = Utilities::MPI::max(largest, comm);
+      AssertThrow(largest > 1e-12,
+                  ExcMessage("no free dof holds a rigid mode"));
+      // The offer of each process: {x, y, component (0: x), dof, row}.
+      std::vector<double> offer;
+      for (const auto i : counted)
         if (!constraints.is_constrained(i))
         {
-          double norm = 0;
-          for (const double v : residual_row(i))
-            norm += v * v;
-          if (norm > best)
-          {
-            best     = norm;
-            best_dof = i;
-          }
+          auto row = residual_row(i);
+          if (norm_sqr(row) < (1 - 1e-10) * largest)
+            continue;
+          const auto          j         = known.index_within_set(i);
+          std::vector<double> candidate = {
+            x[j][0], x[j][1], is_x[j] ? 0. : 1., static_cast<double>(i)};
+          candidate.insert(candidate.end(), row.begin(), row.end());
+          if (offer.empty() ||
+              std::lexicographical_compare(candidate.begin(),
+                                           candidate.begin() + 3,
+                                           offer.begin(),
+                                           offer.begin() + 3))
+            offer = std::move(candidate);
         }
-      AssertThrow(best_dof < n && best > 1e-12,
-                  ExcMessage("no free dof holds a rigid mode"));
-      auto q = residual_row(best_dof);
-      for (double &v : q)
-        v /= std::sqrt(best);
-      chosen_directions.push_back(q);
-      fixed.push_back(best_dof);
+      std::vector<double> best = offer;
+      if (p4est)
+        for (const auto &o : Utilities::MPI::all_gather(comm, offer))
+          if (!o.empty() &&
+              (best.empty() ||
+               std::lexicographical_compare(
+                 o.begin(), o.begin() + 3, best.begin(), best.begin() + 3)))
+            best = o;
+      std::vector<double> direction(best.begin() + 4, best.end());
+      const double        length = std::sqrt(norm_sqr(direction));
+      for (double &v : direction)
+        v /= length;
+      chosen_directions.push_back(direction);
+      fixed.push_back(static_cast<types::global_dof_index>(best[3]));
+    }
+  }
+
+  template <int dim>
+  void
+  RigidBodyModes<dim>::set_layout(
+    const std::shared_ptr<const Utilities::MPI::Partitioner> &layout)
+  {
+    for (auto &mode : modes)
+    {
+      BodyVector moved(layout);
+      for (const auto i : layout->locally_owned_range())
+        moved(i) = mode(i);
+      moved.update_ghost_values();
+      mode.swap(moved);
     }
   }
 

@@ -10,7 +10,8 @@ namespace ddcontact
 {
   Relaxation::Relaxation(const double gamma)
     : gamma(gamma)
-    , inner(ordered_dot)
+    , inner([](const Vector<double> &x, const Vector<double> &y)
+            { return ordered_dot(x, y); })
   {
   }
 

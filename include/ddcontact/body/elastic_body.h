@@ -323,7 +323,7 @@ namespace ddcontact
     /** The rigid motions the Dirichlet conditions (5) leave free: none
      * for a held body; for a floating one (held only by contact) they are
      * clamped at a few components (RigidBodyModes::fixing_dofs()), which
-     * makes the stiffness regular (serial meshes only). */
+     * makes the stiffness regular. */
     const RigidBodyModes<dim> &
     get_rigid_modes() const
     {

@@ -1,6 +1,7 @@
 #ifndef ddcontact_rigid_body_modes_h
 #define ddcontact_rigid_body_modes_h
 
+#include <deal.II/base/partitioner.h>
 #include <deal.II/base/types.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -15,6 +16,7 @@
 #include <ddcontact/body/boundary_conditions.h>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -40,6 +42,13 @@ namespace ddcontact
    * solution of the free body. DDNewtonSolver adds the modes' amplitudes
    * and the equilibrium of each floating body as a coarse problem
    * (RigidModeCoarseSpace).
+   *
+   * On a p4est mesh each process knows only its cells and a ghost layer:
+   * the centre, the size and the Gram matrix below are then sums (and a
+   * maximum) over the dofs each process owns, added over the processes in
+   * rank order, and the fixed dofs come from an argmax over the processes
+   * (the largest value, ties to the smallest dof index, as on one
+   * process). The mode vectors take the body's vector layout.
    */
   template <int dim>
   class RigidBodyModes
@@ -49,13 +58,23 @@ namespace ddcontact
      * The free modes of the body with dofs @p dof_handler and the
      * prescribed components of @p conditions, and the fixed components:
      * @p constraints (closed: hanging nodes and Dirichlet data) tells
-     * which dofs are already constrained and may not be chosen.
+     * which dofs are already constrained and may not be chosen (it must
+     * hold the lines of the dofs this process owns). The modes are
+     * vectors of @p layout (ElasticBody::reinit_vector()). Collective
+     * over a p4est mesh's processes.
      */
     void
     reinit(const DoFHandler<dim>           &dof_handler,
            const Mapping<dim>              &mapping,
            const BoundaryConditions<dim>   &conditions,
-           const AffineConstraints<double> &constraints);
+           const AffineConstraints<double> &constraints,
+           const std::shared_ptr<const Utilities::MPI::Partitioner> &layout);
+
+    /** The modes as vectors of @p layout, which owns the same dofs as the
+     * layout they have (ElasticBody::distribute_vectors() adds ghosts). */
+    void
+    set_layout(
+      const std::shared_ptr<const Utilities::MPI::Partitioner> &layout);
 
     /** The number of free rigid modes (0: the body is held). */
     unsigned int
