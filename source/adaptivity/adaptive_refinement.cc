@@ -149,32 +149,32 @@ namespace ddcontact
       return marked;
     // Over Max cells: an adaptive step keeps the flagged cells with the
     // largest error contributions that fit (dropping them all stalled one
-    // body while the other went on); uniform refinement and partitioned
-    // meshes refine all or nothing.
-    const unsigned int budget =
-      (parameters.mode == AdaptationMode::uniform ||
-       body.is_mesh_distributed() || n_cells >= parameters.max_cells)
-        ? 0
-        : (parameters.max_cells - n_cells) / 3;
-    // (Uniform refinement has no contributions to rank: budget 0 clears.)
-    std::vector<std::pair<double, unsigned int>> flagged;
+    // body while the other went on), ties in the order of the cells' ids,
+    // so that a p4est mesh keeps the cells one process keeps; uniform
+    // refinement refines all or nothing.
+    const unsigned int  budget = (parameters.mode == AdaptationMode::uniform ||
+                                 n_cells >= parameters.max_cells)
+                                   ? 0
+                                   : (parameters.max_cells - n_cells) / 3;
+    std::vector<double> contributions;
+    std::vector<CellId> ids;
     for (const auto &cell : tria.active_cell_iterators())
-      if (budget > 0 && cell->refine_flag_set())
-        flagged.emplace_back(refinable_contributions(cell->active_cell_index()),
-                             cell->active_cell_index());
-    // Largest first, ties by cell index: the same cells on every run.
-    std::sort(flagged.begin(),
-              flagged.end(),
-              [](const auto &a, const auto &b) {
-                return a.first > b.first ||
-                       (a.first == b.first && a.second < b.second);
-              });
-    std::vector<bool> keep(n_cells, false);
-    for (unsigned int k = 0; k < std::min<std::size_t>(budget, flagged.size());
-         ++k)
-      keep[flagged[k].second] = true;
+      if (body.computes(cell) && cell->refine_flag_set())
+      {
+        contributions.push_back(
+          parameters.mode == AdaptationMode::uniform
+            ? 0.
+            : refinable_contributions(cell->active_cell_index()));
+        ids.push_back(cell->id());
+      }
+    const auto keep = keep_largest(
+      contributions,
+      ids,
+      budget,
+      body.is_mesh_distributed() ? tria.get_communicator() : MPI_COMM_SELF);
+    unsigned int k = 0;
     for (const auto &cell : tria.active_cell_iterators())
-      if (!keep[cell->active_cell_index()])
+      if (body.computes(cell) && cell->refine_flag_set() && !keep[k++])
         cell->clear_refine_flag();
     const unsigned int kept = std::min<unsigned int>(budget, marked);
     capped += marked - kept;

@@ -109,6 +109,24 @@ namespace ddcontact
       return value_of(lo);
     }
 
+    /** The n-th largest of the processes' @p values (at most @p largest):
+     * the largest t with n values at or above it (counts are exact, and
+     * the same on every process). */
+    double
+    nth_largest(const std::vector<double> &values,
+                const unsigned long long   n,
+                const double               largest,
+                const MPI_Comm             comm)
+    {
+      const auto count_from = [&](const double t)
+      {
+        const unsigned long long here = std::count_if(
+          values.begin(), values.end(), [t](const double v) { return v >= t; });
+        return static_cast<double>(Utilities::MPI::sum(here, comm));
+      };
+      return largest_value_with(count_from, static_cast<double>(n), largest);
+    }
+
     /** The threshold of sorted_threshold() from the processes' values,
      * by bisection (see joint_marking_threshold()). */
     double
@@ -130,17 +148,7 @@ namespace ddcontact
           std::round(parameters.fraction * n_values));
         if (n == 0)
           return std::numeric_limits<double>::infinity();
-        // The n-th largest value: the largest t with n values at or
-        // above it (counts are exact, and the same on every process).
-        const auto count_from = [&](const double t)
-        {
-          const unsigned long long here =
-            std::count_if(values.begin(),
-                          values.end(),
-                          [t](const double v) { return v >= t; });
-          return static_cast<double>(Utilities::MPI::sum(here, comm));
-        };
-        return largest_value_with(count_from, static_cast<double>(n), largest);
+        return nth_largest(values, n, largest, comm);
       }
       // Doerfler: the largest t whose values at or above it carry the
       // Fraction of the squared total.
@@ -170,5 +178,49 @@ namespace ddcontact
     return Utilities::MPI::n_mpi_processes(communicator) == 1
              ? sorted_threshold(counted_here, parameters)
              : distributed_threshold(counted_here, parameters, communicator);
+  }
+
+  std::vector<bool>
+  keep_largest(const std::vector<double> &values,
+               const std::vector<CellId> &cells,
+               const unsigned long long   n,
+               const MPI_Comm             comm)
+  {
+    AssertDimension(values.size(), cells.size());
+    const auto n_values =
+      Utilities::MPI::sum<unsigned long long>(values.size(), comm);
+    if (n_values <= n)
+      return std::vector<bool>(values.size(), true);
+    std::vector<bool> keep(values.size(), false);
+    if (n == 0)
+      return keep;
+    const double largest = Utilities::MPI::max(
+      values.empty() ? 0. : *std::max_element(values.begin(), values.end()),
+      comm);
+    const double t = nth_largest(values, n, largest, comm);
+    // Every value above t is kept (fewer than n); of those at t, the
+    // first in CellId order make up the n.
+    unsigned long long  above = 0;
+    std::vector<CellId> tied_here;
+    for (unsigned int i = 0; i < values.size(); ++i)
+      if (values[i] > t)
+      {
+        keep[i] = true;
+        ++above;
+      }
+      else if (values[i] == t)
+        tied_here.push_back(cells[i]);
+    above = Utilities::MPI::sum(above, comm);
+    std::vector<CellId> tied;
+    for (const auto &from : Utilities::MPI::all_gather(comm, tied_here))
+      tied.insert(tied.end(), from.begin(), from.end());
+    std::sort(tied.begin(), tied.end());
+    Assert(above < n && above + tied.size() >= n, ExcInternalError());
+    tied.resize(n - above);
+    for (unsigned int i = 0; i < values.size(); ++i)
+      if (values[i] == t &&
+          std::binary_search(tied.begin(), tied.end(), cells[i]))
+        keep[i] = true;
+    return keep;
   }
 } // namespace ddcontact

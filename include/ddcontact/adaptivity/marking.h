@@ -1,6 +1,7 @@
 #ifndef ddcontact_marking_h
 #define ddcontact_marking_h
 
+#include <deal.II/grid/cell_id.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 
@@ -49,6 +50,22 @@ namespace ddcontact
   joint_marking_threshold(const std::vector<double>  &counted_here,
                           const AdaptationParameters &parameters,
                           MPI_Comm                    communicator);
+
+  /**
+   * Which of @p values (this process's, one per cell @p cells) are among
+   * the @p n largest over all processes of @p communicator: those above
+   * the n-th largest value, and of the cells at it as many as are
+   * missing, in the order of their CellId (a cell's place in the
+   * hierarchy, the same on one process and on a p4est mesh, where cell
+   * indices differ). Used to keep the flagged cells that fit in
+   * Adaptation/Max cells. The n-th largest is found as in
+   * joint_marking_threshold(); the tied cells' ids are gathered.
+   */
+  std::vector<bool>
+  keep_largest(const std::vector<double> &values,
+               const std::vector<CellId> &cells,
+               unsigned long long         n,
+               MPI_Comm                   communicator);
 } // namespace ddcontact
 
 #endif
