@@ -109,6 +109,16 @@ namespace ddcontact
       return value_of(lo);
     }
 
+    /** The largest of all processes' (non-negative) @p values, 0 for
+     * none. */
+    double
+    largest_over(const std::vector<double> &values, const MPI_Comm comm)
+    {
+      return Utilities::MPI::max(
+        values.empty() ? 0. : *std::max_element(values.begin(), values.end()),
+        comm);
+    }
+
     /** The n-th largest of the processes' @p values (at most @p largest):
      * the largest t with n values at or above it (counts are exact, and
      * the same on every process). */
@@ -136,9 +146,7 @@ namespace ddcontact
     {
       const auto n_values =
         Utilities::MPI::sum<unsigned long long>(values.size(), comm);
-      const double largest = Utilities::MPI::max(
-        values.empty() ? 0. : *std::max_element(values.begin(), values.end()),
-        comm);
+      const double largest = largest_over(values, comm);
       if (n_values == 0)
         return std::numeric_limits<double>::infinity();
 
@@ -194,10 +202,8 @@ namespace ddcontact
     std::vector<bool> keep(values.size(), false);
     if (n == 0)
       return keep;
-    const double largest = Utilities::MPI::max(
-      values.empty() ? 0. : *std::max_element(values.begin(), values.end()),
-      comm);
-    const double t = nth_largest(values, n, largest, comm);
+    const double largest = largest_over(values, comm);
+    const double t       = nth_largest(values, n, largest, comm);
     // Every value above t is kept (fewer than n); of those at t, the
     // first in CellId order make up the n.
     unsigned long long  above = 0;

@@ -150,8 +150,11 @@ namespace ddcontact
     {
       BodyVector mode(layout);
       for (unsigned int k = 0; k < known.n_elements(); ++k)
-        if (layout->in_local_range(known.nth_index_in_set(k)))
-          mode(known.nth_index_in_set(k)) = value(m, k);
+      {
+        const auto i = known.nth_index_in_set(k);
+        if (layout->in_local_range(i))
+          mode(i) = value(m, k);
+      }
       mode.update_ghost_values();
       modes.push_back(std::move(mode));
     }
@@ -190,42 +193,49 @@ namespace ddcontact
         norm += v * v;
       return norm;
     };
+    // Whether candidate a = {x, y, component (0: x), dof, row} comes
+    // before b (an empty one: none).
+    const auto precedes =
+      [](const std::vector<double> &a, const std::vector<double> &b)
+    {
+      return !a.empty() &&
+             (b.empty() ||
+              std::lexicographical_compare(
+                a.begin(), a.begin() + 3, b.begin(), b.begin() + 3));
+    };
     for (unsigned int k = 0; k < modes.size(); ++k)
     {
+      // The squared residual of every free counted dof (-1: constrained).
+      std::vector<double> norms;
+      norms.reserve(counted.n_elements());
       double largest = 0;
       for (const auto i : counted)
-        if (!constraints.is_constrained(i))
-          largest = std::max(largest, norm_sqr(residual_row(i)));
+      {
+        norms.push_back(
+          constraints.is_constrained(i) ? -1. : norm_sqr(residual_row(i)));
+        largest = std::max(largest, norms.back());
+      }
       largest = Utilities::MPI::max(largest, comm);
       AssertThrow(largest > 1e-12,
                   ExcMessage("no free dof holds a rigid mode"));
-      // The offer of each process: {x, y, component (0: x), dof, row}.
-      std::vector<double> offer;
+      // This process's first candidate, then the first of all processes'.
+      std::vector<double> best;
+      unsigned int        position = 0;
       for (const auto i : counted)
-        if (!constraints.is_constrained(i))
+        if (norms[position++] >= (1 - 1e-10) * largest)
         {
-          auto row = residual_row(i);
-          if (norm_sqr(row) < (1 - 1e-10) * largest)
-            continue;
           const auto          j         = known.index_within_set(i);
           std::vector<double> candidate = {
             x[j][0], x[j][1], is_x[j] ? 0. : 1., static_cast<double>(i)};
+          const auto row = residual_row(i);
           candidate.insert(candidate.end(), row.begin(), row.end());
-          if (offer.empty() ||
-              std::lexicographical_compare(candidate.begin(),
-                                           candidate.begin() + 3,
-                                           offer.begin(),
-                                           offer.begin() + 3))
-            offer = std::move(candidate);
+          if (precedes(candidate, best))
+            best = std::move(candidate);
         }
-      std::vector<double> best = offer;
       if (p4est)
-        for (const auto &o : Utilities::MPI::all_gather(comm, offer))
-          if (!o.empty() &&
-              (best.empty() ||
-               std::lexicographical_compare(
-                 o.begin(), o.begin() + 3, best.begin(), best.begin() + 3)))
-            best = o;
+        for (const auto &offer : Utilities::MPI::all_gather(comm, best))
+          if (precedes(offer, best))
+            best = offer;
       std::vector<double> direction(best.begin() + 4, best.end());
       const double        length = std::sqrt(norm_sqr(direction));
       for (double &v : direction)

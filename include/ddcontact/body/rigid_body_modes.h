@@ -47,8 +47,9 @@ namespace ddcontact
    * the centre, the size and the Gram matrix below are then sums (and a
    * maximum) over the dofs each process owns, added over the processes in
    * rank order, and the fixed dofs come from an argmax over the processes
-   * (the largest value, ties to the smallest dof index, as on one
-   * process). The mode vectors take the body's vector layout.
+   * (ties within 1e-10 to the smallest support point, which is the same
+   * dof on one process and on any partition). The mode vectors take the
+   * body's vector layout.
    */
   template <int dim>
   class RigidBodyModes
