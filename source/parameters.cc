@@ -358,15 +358,14 @@ namespace ddcontact
     prm.leave_subsection();
     // An explicit request for p4est meshes that a quadrilateral body cannot
     // have is an error, not a silent fallback (triangles are always shared).
-    if (parallel.mesh == MeshPartition::distributed && n_world_processes() > 1)
-      for (const auto &body : bodies)
-        if (body.cell_type == CellType::quadrilateral &&
-            !parallel.distributed_mesh(body, n_world_processes()))
-          throw InputError(
-            "Parallel/Mesh: distributed, but body '" + body.name +
-            "' is not solved by every process (distributed meshes need "
-            "Body owners = all, or a list that gives the body every "
-            "process); use Mesh = auto or shared");
+    if (parallel.mesh == MeshPartition::distributed &&
+        n_world_processes() > 1 &&
+        !parallel.process_groups(n_world_processes(), bodies.size()))
+      throw InputError(
+        "Parallel/Mesh: distributed, but every body is solved whole on one "
+        "process (Body owners = auto with at most as many processes as "
+        "bodies, or a list of single processes), so no mesh is split; use "
+        "more processes, Body owners = all, or Mesh = auto");
     if (contact_solver.solver == ContactSolverType::monolithic &&
         n_world_processes() > 1)
       throw InputError("Contact solver/Solver: monolithic runs on one "

@@ -242,7 +242,7 @@ namespace ddcontact
       return;
     if (bodies[b]->has_distributed_vectors())
     {
-      import_ghosts(v);
+      import_ghosts(b, v);
       return;
     }
     // The owner's list with its values in one message: dofs (exact as
@@ -275,7 +275,7 @@ namespace ddcontact
       return;
     if (bodies[b]->has_distributed_vectors())
     {
-      import_ghosts(v);
+      import_ghosts(b, v);
       return;
     }
     // Every process knows the body's size from its own copy of the mesh.
@@ -288,12 +288,21 @@ namespace ddcontact
   }
 
   void
-  BodyDistribution::import_ghosts(BodyVector &v) const
+  BodyDistribution::import_ghosts(const unsigned int b, BodyVector &v) const
   {
+    if (bodies[b]->is_solved_by_part_of_mesh())
+    {
+      // Solved by the group alone: the others receive the traces (and a
+      // vector of the body's layout, if they had none), and every
+      // process of the mesh imports, collectively.
+      if (!owns(b))
+        bodies[b]->reinit_vector(v);
+      v.update_ghost_values();
+    }
     // The body's solve imported them already; a vector that was not
     // solved for (zero) imports them here. Every process takes the same
     // branch: the iteration is replicated.
-    if (!v.has_ghost_elements())
+    else if (!v.has_ghost_elements())
       v.update_ghost_values();
     bytes_shared += sizeof(double) * v.get_partitioner()->n_import_indices();
   }

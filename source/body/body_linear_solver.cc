@@ -74,10 +74,14 @@ namespace ddcontact
         x.reinit(load.size());
       }
 
+      /** The solution in @p u: whole, or into the owned rows of a
+       * distributed BodyVector whose process owns every dof (a p4est body
+       * on a group of one), which keeps its layout. */
       void
       to_whole(const VectorType &x, BodyVector &u) const
       {
-        u.reinit(x.size());
+        if (u.size() != x.size() || u.locally_owned_size() != x.size())
+          u.reinit(x.size());
         std::copy(x.begin(), x.end(), u.begin());
       }
 

@@ -1,3 +1,4 @@
+#include <deal.II/distributed/p4est_wrappers.h>
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/distributed/tria.h>
 
@@ -363,6 +364,8 @@ namespace ddcontact
   BodyMesh<dim>::make(const BoundaryConditions<dim> &conditions,
                       const std::string             &work_directory)
   {
+    made_with = &conditions;
+    made_in   = work_directory;
     tria->clear();
     if (parameters.mesh_type == MeshType::rectangle)
       make_rectangle();
@@ -561,9 +564,14 @@ namespace ddcontact
   BodyMesh<dim>::~BodyMesh()
   {
     // The body's solver, which uses the group's communicator, is released
-    // before the mesh (ElasticBody declares it after the mesh).
-    if (group_comm != MPI_COMM_NULL)
-      MPI_Comm_free(&group_comm);
+    // before the mesh (ElasticBody declares it after the mesh). The meshes
+    // go before their communicators.
+    weighting.disconnect();
+    tria.reset();
+    previous_tria.reset();
+    for (MPI_Comm *comm : {&group_comm, &mesh_comm, &previous_comm})
+      if (*comm != MPI_COMM_NULL)
+        MPI_Comm_free(comm);
   }
 
   template <int dim>
@@ -615,13 +623,11 @@ namespace ddcontact
     AssertThrow(
       ranks.size() == 1 || is_shared() || distributed,
       ExcMessage("a body on several processes needs a partitioned mesh"));
-    // p4est splits the forest between all processes of the mesh's
-    // communicator, which must be the group.
-    AssertThrow(!distributed || ranks.size() == Utilities::MPI::n_mpi_processes(
-                                                  tria->get_communicator()),
-                ExcMessage("a distributed mesh is solved by all processes"));
-    const bool changed = ranks != group;
+    // A p4est mesh is placed the first time even on the group {0} it
+    // starts with: p4est spread its cells over every process.
+    const bool changed = ranks != group || (distributed && !placed);
     group              = ranks;
+    placed             = true;
     if (group_comm != MPI_COMM_NULL)
       MPI_Comm_free(&group_comm);
     group_comm = comm;
@@ -629,7 +635,105 @@ namespace ddcontact
       // No cell is flagged: the refinement step only fires the
       // post-refinement signal, which partitions between the new group.
       tria->execute_coarsening_and_refinement();
+    if (changed && distributed)
+      place_forest_on_group(ranks);
     return changed;
+  }
+
+  template <int dim>
+  void
+  BodyMesh<dim>::place_forest_on_group(const std::vector<unsigned int> &ranks)
+  {
+    AssertThrow(made_with != nullptr, ExcInternalError());
+    const MPI_Comm     comm = tria->get_communicator();
+    const unsigned int n    = Utilities::MPI::n_mpi_processes(comm);
+    AssertThrow(ranks.size() <= n, ExcInternalError());
+    // The world ranks in the order of the mesh's communicator.
+    const auto order = Utilities::MPI::all_gather(
+      comm, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD));
+    weighting.disconnect();
+    if (!std::equal(ranks.begin(), ranks.end(), order.begin()))
+    {
+      // The group first, in its order, then the others: collective over
+      // the world (every process holds every body's mesh object).
+      const unsigned int me = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+      const auto         position = std::find(ranks.begin(), ranks.end(), me);
+      const int          key      = position != ranks.end()
+                                      ? static_cast<int>(position - ranks.begin())
+                                      : static_cast<int>(ranks.size() + me);
+      MPI_Comm           led;
+      const int          ierr = MPI_Comm_split(MPI_COMM_WORLD, 0, key, &led);
+      AssertThrowMPI(ierr);
+      // The old mesh lives until the DoFHandler has moved to the new one.
+      previous_tria = std::move(tria);
+      previous_comm = mesh_comm;
+      mesh_comm     = led;
+      snapping.disconnect();
+      tria = std::make_unique<parallel::distributed::Triangulation<dim>>(
+        mesh_comm, previous_tria->get_mesh_smoothing());
+    }
+    if (!previous_tria && ranks.size() == n)
+      return; // p4est balances the cells over all processes
+    if (ranks.size() < n)
+      weighting = tria->signals.weight.connect(
+        [this](const typename Triangulation<dim>::cell_iterator &,
+               const typename Triangulation<dim>::CellStatus)
+        { return group_weight(); });
+    weight_calls = 0;
+    if (previous_tria)
+      make(*made_with, made_in);
+    // The cells of the mesh as made, or as p4est spread them over every
+    // process at creation, go to the group.
+    dynamic_cast<parallel::distributed::Triangulation<dim> &>(*tria)
+      .repartition();
+    const bool member =
+      std::find(ranks.begin(),
+                ranks.end(),
+                Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)) !=
+      ranks.end();
+    AssertThrow(
+      member || dynamic_cast<parallel::distributed::Triangulation<dim> &>(*tria)
+                    .n_locally_owned_active_cells() == 0,
+      ExcMessage("a process outside a body's group owns cells"));
+  }
+
+  template <int dim>
+  unsigned int
+  BodyMesh<dim>::group_weight()
+  {
+    const auto *forest =
+      dynamic_cast<const parallel::distributed::Triangulation<dim> &>(*tria)
+        .get_p4est();
+    const std::uint64_t N = forest->global_num_quadrants;
+    const std::uint64_t P = forest->mpisize;
+    const std::uint64_t k = group.size();
+    const std::uint64_t i =
+      forest->global_first_quadrant[forest->mpirank] + weight_calls;
+    if (++weight_calls ==
+        static_cast<std::uint64_t>(forest->local_num_quadrants))
+      weight_calls = 0;
+    // Chunk j is [floor(j N / k), floor((j + 1) N / k)); the chunks j =
+    // 1, ..., k - 1 that begin at i + 1 (several, if some are empty) are
+    // those with ceil((i + 1) k / N) <= j <= ceil((i + 2) k / N) - 1.
+    const auto ceil_div = [](const std::uint64_t a, const std::uint64_t b)
+    { return (a + b - 1) / b; };
+    const std::uint64_t lo =
+      std::max<std::uint64_t>(ceil_div((i + 1) * k, N), 1);
+    const std::uint64_t hi =
+      std::min<std::uint64_t>(ceil_div((i + 2) * k, N), k) - 1;
+    std::uint64_t weight = hi >= lo ? hi - lo + 1 : 0;
+    if (i + 1 == N)
+      weight += P - k + 1;
+    return static_cast<unsigned int>(weight);
+  }
+
+  template <int dim>
+  void
+  BodyMesh<dim>::release_previous_mesh()
+  {
+    previous_tria.reset();
+    if (previous_comm != MPI_COMM_NULL)
+      MPI_Comm_free(&previous_comm);
   }
 
   template <int dim>

@@ -98,6 +98,7 @@ namespace ddcontact
     const bool changed = mesh.set_process_group(ranks, group);
     if (changed && (mesh.is_distributed() || mesh.is_shared()))
       setup_system();
+    mesh.release_previous_mesh();
   }
 
   namespace
@@ -208,6 +209,14 @@ namespace ddcontact
     else
       partitioner =
         std::make_shared<Utilities::MPI::Partitioner>(dof_handler.n_dofs());
+    // A p4est body on a group smaller than its mesh's processes: the
+    // group's own ghost exchange, for its solves (import_group_ghosts()).
+    group_layout.reset();
+    if (mesh.is_distributed() && mesh.group_communicator() != MPI_COMM_NULL &&
+        mesh.process_group().size() < Utilities::MPI::n_mpi_processes(
+                                        get_triangulation().get_communicator()))
+      group_layout = std::make_shared<Utilities::MPI::Partitioner>(
+        dof_handler.locally_owned_dofs(), relevant, mesh.group_communicator());
     const Utilities::MPI::Partitioner *stored =
       distributed_vectors ? partitioner.get() : nullptr;
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
@@ -262,9 +271,16 @@ namespace ddcontact
   ElasticBody<dim>::assemble_system()
   {
     linear_solver->zero();
+    // Member-only, like the whole assembly: with a group smaller than the
+    // mesh's processes the work is summed over the group (group_layout).
     BodyVector data_load;
     if (is_floating())
-      reinit_vector(data_load);
+    {
+      if (distributed_vectors && group_layout)
+        data_load.reinit(group_layout);
+      else
+        reinit_vector(data_load);
+    }
     // A load expression that is not finite somewhere (sqrt(x) at x < 0) is
     // found here, in the serial part (a worker thread must not throw), and
     // named after the loop.
@@ -296,7 +312,7 @@ namespace ddcontact
       data_load.compress(VectorOperation::add);
     for (unsigned int k = 0; k < rigid_modes.size(); ++k)
       mode_loads.push_back(distributed_vectors
-                             ? ordered_dot(rigid_modes.mode(k), data_load)
+                             ? ordered_dot(data_load, rigid_modes.mode(k))
                              : rigid_modes.mode(k) * data_load);
     // Each process of a group assembled its own cells into whole vectors.
     if (is_solved_distributed() && !distributed_vectors && !mode_loads.empty())
@@ -545,8 +561,7 @@ namespace ddcontact
       // dofs and the ghosts the interpolation needs (a p4est body's
       // vectors are always distributed, Simulation::distribute_body_vectors());
       // the new one is distributed likewise.
-      AssertThrow(is_solved_distributed() && distributed_vectors,
-                  ExcInternalError());
+      AssertThrow(distributed_vectors, ExcInternalError());
       parallel::distributed::SolutionTransfer<dim, BodyVector> transfer(
         dof_handler);
       transfer.prepare_for_coarsening_and_refinement(solution);
@@ -638,6 +653,37 @@ namespace ddcontact
 
   template <int dim>
   void
+  ElasticBody<dim>::import_group_ghosts(BodyVector &u) const
+  {
+    if (!group_layout)
+    {
+      u.update_ghost_values();
+      return;
+    }
+    // Over the group alone: the other processes do not take part in its
+    // solves. The owned rows are the same in both layouts.
+    BodyVector         g(group_layout);
+    const unsigned int n_owned = group_layout->locally_owned_size();
+    AssertDimension(u.locally_owned_size(), n_owned);
+    for (unsigned int l = 0; l < n_owned; ++l)
+      g.local_element(l) = u.local_element(l);
+    g.update_ghost_values();
+    for (unsigned int j = 0; j < group_layout->n_ghost_indices(); ++j)
+      u(group_layout->local_to_global(n_owned + j)) =
+        g.local_element(n_owned + j);
+  }
+
+  template <int dim>
+  bool
+  ElasticBody<dim>::is_solved_by_part_of_mesh() const
+  {
+    return mesh.is_distributed() && mesh.process_group().size() <
+                                      Utilities::MPI::n_mpi_processes(
+                                        get_triangulation().get_communicator());
+  }
+
+  template <int dim>
+  void
   ElasticBody<dim>::distribute_constraints(BodyVector &u,
                                            const bool  homogeneous) const
   {
@@ -668,7 +714,7 @@ namespace ddcontact
       reinit_vector(u);
     linear_solver->solve(load, u);
     if (distributed_vectors)
-      u.update_ghost_values();
+      import_group_ghosts(u);
     distribute_constraints(u, false);
     for (const double v : u)
       if (!std::isfinite(v))
@@ -687,7 +733,7 @@ namespace ddcontact
       reinit_vector(u);
     linear_solver->solve(load, u, false);
     if (distributed_vectors)
-      u.update_ghost_values();
+      import_group_ghosts(u);
     distribute_constraints(u, true);
   }
 

@@ -42,8 +42,8 @@ namespace ddcontact
       selection_pattern<MeshPartition>(),
       "How the mesh of a body solved by several processes is split. "
       "'distributed': parallel::distributed::Triangulation (p4est), each "
-      "process keeps only its cells and a ghost layer; for quadrilateral "
-      "bodies solved by every process (Body owners = all). "
+      "process of the body's group keeps only its cells and a ghost layer, "
+      "the other processes none; for quadrilateral bodies. "
       "'shared': parallel::shared::Triangulation, every process keeps the "
       "whole mesh and assembles its part. 'auto': distributed where "
       "possible, shared elsewhere.");
@@ -55,11 +55,7 @@ namespace ddcontact
   {
     if (n_processes <= 1 || mesh == MeshPartition::shared)
       return false;
-    const bool on_every_process =
-      mode == BodyOwners::all ||
-      (mode == BodyOwners::list &&
-       body_groups.at(body.name).size() == n_processes);
-    return on_every_process && body.cell_type == CellType::quadrilateral;
+    return body.cell_type == CellType::quadrilateral;
   }
 
   MeshKind

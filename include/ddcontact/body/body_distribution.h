@@ -200,10 +200,11 @@ namespace ddcontact
     describe() const;
 
   private:
-    /** A distributed vector of a body solved by every process: the ghosts
-     * are imported from their owners instead of a broadcast. */
+    /** A distributed vector @p v of body @p b: the ghosts are imported
+     * from their owners instead of a broadcast (on every process of the
+     * body's mesh, also those outside its group). */
     void
-    import_ghosts(BodyVector &v) const;
+    import_ghosts(unsigned int b, BodyVector &v) const;
 
     /** Send the values of @p v at @p dofs (with the dofs) from the owner of
      * body @p b to all processes; the others' @p v is zero elsewhere. */

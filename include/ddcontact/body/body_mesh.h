@@ -14,6 +14,7 @@
 #include <ddcontact/body/parallel_parameters.h>
 #include <ddcontact/parameter_tools.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -75,10 +76,25 @@ namespace ddcontact
      * communicator (MPI_COMM_NULL on the others; the mesh takes it over and
      * frees it). A shared mesh is partitioned between the ranks again;
      * returns whether the group changed.
+     *
+     * A p4est mesh stays on all processes (every one of them can then
+     * evaluate the body at contact points and import its traces), but its
+     * cells go to the group alone: p4est cuts the forest's z-order into
+     * consecutive pieces for the ranks of the mesh's communicator in turn,
+     * so the mesh moves onto a communicator that the group leads (made
+     * again there, once, when the group is not its first ranks), and cell
+     * weights (group_weight()) leave the other processes no cell, now and
+     * after every refinement. The ElasticBody reinitializes its dofs on
+     * the new mesh, then calls release_previous_mesh().
      */
     bool
     set_process_group(const std::vector<unsigned int> &ranks,
                       const MPI_Comm                   group_communicator);
+
+    /** Free the mesh replaced by set_process_group() (its DoFHandler has
+     * moved to the new one). */
+    void
+    release_previous_mesh();
 
     const std::vector<unsigned int> &
     process_group() const
@@ -227,6 +243,26 @@ namespace ddcontact
     void
     partition_between_group();
 
+    /** A p4est mesh on a communicator that @p ranks lead, with the cell
+     * weights that keep every cell on them (set_process_group()). */
+    void
+    place_forest_on_group(const std::vector<unsigned int> &ranks);
+
+    /**
+     * The weight of the next quadrant p4est asks for when it partitions a
+     * forest whose cells belong to the first k = group.size() of its P
+     * ranks. With weights summing to P, p4est gives rank r the quadrants
+     * whose preceding weights sum to r (the cut of rank r is r P / P).
+     * The quadrants are cut into k consecutive chunks of equal counts: the
+     * last quadrant of each chunk but the last weighs 1, the very last
+     * quadrant P - k + 1, all others 0. Chunk j's quadrants are then
+     * preceded by weight j, so they go to rank j, and ranks k to P - 1 get
+     * none. deal.II asks once per local quadrant, in p4est's order; the
+     * count of calls gives the quadrant's global index.
+     */
+    unsigned int
+    group_weight();
+
     const BodyParameters               &parameters;
     CircularBoundaries                  circles;
     boost::signals2::connection         snapping; // circles.snap()
@@ -239,6 +275,19 @@ namespace ddcontact
     unsigned int              n_merged = 0;
     std::vector<unsigned int> group{0};
     MPI_Comm                  group_comm = MPI_COMM_NULL;
+    bool                      placed     = false; // set_process_group()
+
+    // What make() was given, for making a p4est mesh again on its
+    // group's communicator.
+    const BoundaryConditions<dim> *made_with = nullptr;
+    std::string                    made_in;
+    // A p4est mesh's communicator when it is not the world's (owned, freed
+    // after the mesh), and the mesh it replaced until the dofs moved.
+    MPI_Comm                            mesh_comm = MPI_COMM_NULL;
+    std::unique_ptr<Triangulation<dim>> previous_tria;
+    MPI_Comm                            previous_comm = MPI_COMM_NULL;
+    boost::signals2::connection         weighting; // group_weight()
+    std::uint64_t                       weight_calls = 0;
   };
 } // namespace ddcontact
 

@@ -425,6 +425,13 @@ namespace ddcontact
       return distributed_vectors;
     }
 
+    /** Whether the body is on a p4est mesh whose cells belong to a group
+     * smaller than the mesh's processes (BodyMesh::set_process_group()):
+     * the others hold its vectors' traces only, and import them after
+     * every set of solves, collectively over the mesh's processes. */
+    bool
+    is_solved_by_part_of_mesh() const;
+
   private:
     /** The cell matrices of a_a (11) and the loads of l_a (12) of this
      * process's cells, each passed to @p copier (one thread at a time). */
@@ -459,6 +466,14 @@ namespace ddcontact
     share_constraints(AffineConstraints<double>         &to_complete,
                       const Utilities::MPI::Partitioner *layout) const;
 
+    /** The ghosts of a distributed @p u after a solve: imported over the
+     * group that solves the body (group_layout), or over all the mesh's
+     * processes when they are the group. The traces among the ghosts
+     * that the group does not store are imported after the solves, by
+     * BodyDistribution. */
+    void
+    import_group_ghosts(BodyVector &u) const;
+
     /** The free rigid modes (rigid_modes) and their fixed components,
      * added to the open @p constraints. */
     void
@@ -483,6 +498,9 @@ namespace ddcontact
     BodyVector                solution;
     // The layout of the body's vectors (reinit_vector()).
     std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
+    // The owned and locally relevant dofs over the group's communicator,
+    // on a group smaller than the mesh's processes (import_group_ghosts()).
+    std::shared_ptr<const Utilities::MPI::Partitioner> group_layout;
     bool                distributed_vectors = false;
     RigidBodyModes<dim> rigid_modes;
     std::vector<double> mode_loads;

@@ -63,7 +63,7 @@ namespace ddcontact
 
     /**
      * Whether the bodies' meshes are partitioned over process groups
-     * (parallel::shared::Triangulation on MPI_COMM_WORLD, a distributed
+     * (p4est or parallel::shared::Triangulation, a distributed
      * matrix and solver on every group with more than one process): with
      * "all", with a list in which a body has several processes, and with
      * "auto" when there are more processes than bodies. Otherwise every
@@ -75,10 +75,12 @@ namespace ddcontact
     /**
      * Whether @p body gets a parallel::distributed::Triangulation (p4est):
      * each process then keeps only its own cells and a ghost layer, so
-     * the mesh memory shrinks with the processes. That needs a body of
-     * quadrilaterals solved by every process ("all", or a list giving it
-     * every process: the p4est forest lives on MPI_COMM_WORLD). "auto"
-     * takes it wherever it is possible, "shared" never.
+     * the mesh memory shrinks with the processes, and the processes
+     * outside the body's group keep none of them
+     * (BodyMesh::set_process_group()). That needs a body of
+     * quadrilaterals (deal.II 9.4's p4est holds no triangles) on process
+     * groups (process_groups()). "auto" takes it wherever it is possible,
+     * "shared" never.
      */
     bool
     distributed_mesh(const BodyParameters &body,
