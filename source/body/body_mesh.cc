@@ -648,21 +648,20 @@ namespace ddcontact
     const MPI_Comm     comm = tria->get_communicator();
     const unsigned int n    = Utilities::MPI::n_mpi_processes(comm);
     AssertThrow(ranks.size() <= n, ExcInternalError());
+    const unsigned int me = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const auto         position = std::find(ranks.begin(), ranks.end(), me);
+    const bool         member   = position != ranks.end();
     // The world ranks in the order of the mesh's communicator.
-    const auto order = Utilities::MPI::all_gather(
-      comm, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD));
+    const auto order = Utilities::MPI::all_gather(comm, me);
     weighting.disconnect();
     if (!std::equal(ranks.begin(), ranks.end(), order.begin()))
     {
       // The group first, in its order, then the others: collective over
       // the world (every process holds every body's mesh object).
-      const unsigned int me = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-      const auto         position = std::find(ranks.begin(), ranks.end(), me);
-      const int          key      = position != ranks.end()
-                                      ? static_cast<int>(position - ranks.begin())
-                                      : static_cast<int>(ranks.size() + me);
-      MPI_Comm           led;
-      const int          ierr = MPI_Comm_split(MPI_COMM_WORLD, 0, key, &led);
+      const int key = member ? static_cast<int>(position - ranks.begin())
+                             : static_cast<int>(ranks.size() + me);
+      MPI_Comm  led;
+      const int ierr = MPI_Comm_split(MPI_COMM_WORLD, 0, key, &led);
       AssertThrowMPI(ierr);
       // The old mesh lives until the DoFHandler has moved to the new one.
       previous_tria = std::move(tria);
@@ -684,29 +683,19 @@ namespace ddcontact
       make(*made_with, made_in);
     // The cells of the mesh as made, or as p4est spread them over every
     // process at creation, go to the group.
-    dynamic_cast<parallel::distributed::Triangulation<dim> &>(*tria)
-      .repartition();
-    const bool member =
-      std::find(ranks.begin(),
-                ranks.end(),
-                Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)) !=
-      ranks.end();
-    AssertThrow(
-      member || dynamic_cast<parallel::distributed::Triangulation<dim> &>(*tria)
-                    .n_locally_owned_active_cells() == 0,
-      ExcMessage("a process outside a body's group owns cells"));
+    forest().repartition();
+    AssertThrow(member || forest().n_locally_owned_active_cells() == 0,
+                ExcMessage("a process outside a body's group owns cells"));
   }
 
   template <int dim>
   unsigned int
   BodyMesh<dim>::group_weight()
   {
-    const auto *forest =
-      dynamic_cast<const parallel::distributed::Triangulation<dim> &>(*tria)
-        .get_p4est();
-    const std::uint64_t N = forest->global_num_quadrants;
-    const std::uint64_t P = forest->mpisize;
-    const std::uint64_t k = group.size();
+    const auto         *forest = this->forest().get_p4est();
+    const std::uint64_t N      = forest->global_num_quadrants;
+    const std::uint64_t P      = forest->mpisize;
+    const std::uint64_t k      = group.size();
     const std::uint64_t i =
       forest->global_first_quadrant[forest->mpirank] + weight_calls;
     if (++weight_calls ==
@@ -725,6 +714,14 @@ namespace ddcontact
     if (i + 1 == N)
       weight += P - k + 1;
     return static_cast<unsigned int>(weight);
+  }
+
+  template <int dim>
+  parallel::distributed::Triangulation<dim, dim> &
+  BodyMesh<dim>::forest() const
+  {
+    return dynamic_cast<parallel::distributed::Triangulation<dim, dim> &>(
+      *tria);
   }
 
   template <int dim>

@@ -212,9 +212,8 @@ namespace ddcontact
     // A p4est body on a group smaller than its mesh's processes: the
     // group's own ghost exchange, for its solves (import_group_ghosts()).
     group_layout.reset();
-    if (mesh.is_distributed() && mesh.group_communicator() != MPI_COMM_NULL &&
-        mesh.process_group().size() < Utilities::MPI::n_mpi_processes(
-                                        get_triangulation().get_communicator()))
+    if (is_solved_by_part_of_mesh() &&
+        mesh.group_communicator() != MPI_COMM_NULL)
       group_layout = std::make_shared<Utilities::MPI::Partitioner>(
         dof_handler.locally_owned_dofs(), relevant, mesh.group_communicator());
     const Utilities::MPI::Partitioner *stored =

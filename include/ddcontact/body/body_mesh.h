@@ -20,6 +20,12 @@
 #include <utility>
 #include <vector>
 
+namespace dealii::parallel::distributed
+{
+  template <int dim, int spacedim>
+  class Triangulation;
+} // namespace dealii::parallel::distributed
+
 namespace ddcontact
 {
   using namespace dealii;
@@ -242,6 +248,10 @@ namespace ddcontact
      * (triangles). */
     void
     partition_between_group();
+
+    /** The mesh as the p4est forest it is (distributed meshes only). */
+    parallel::distributed::Triangulation<dim, dim> &
+    forest() const;
 
     /** A p4est mesh on a communicator that @p ranks lead, with the cell
      * weights that keep every cell on them (set_process_group()). */
