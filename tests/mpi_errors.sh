@@ -4,7 +4,8 @@
 # process 1 alone (an MPMD launch) names process 1 and ends the run with
 # exit 1; the same bad value on every process is printed once without a
 # process number; different errors on the processes are each printed once
-# with their processes
+# with their processes; Parallel/Mesh = distributed where no mesh is split
+# is refused in one line
 # usage: mpi_errors.sh MPIRUN DDCONTACT_EXECUTABLE SOURCE_DIR
 set -u
 mpirun="$1"; exe="$2"; src="$3"
@@ -46,6 +47,15 @@ code=$?
 [ "$(count "error on process 0: Body omega1/Material/$nu" "$work/3.err")" -eq 1 ] &&
   [ "$(count "error on process 1: Body omega1/Material/Young's modulus" "$work/3.err")" -eq 1 ]
 check $? "each printed once with its process"
+
+# 4. Parallel/Mesh = distributed where no mesh is split (two bodies on two
+# processes, a body each): refused in one line naming the entry.
+"$mpirun" -np 2 "$exe" "$good" --set "Parallel/Mesh=distributed" \
+  --output "$work/d" >"$work/4.out" 2>"$work/4.err"
+code=$?
+[ "$code" -eq 1 ]; check $? "Mesh = distributed without process groups: exit 1 (got $code)"
+[ "$(count "ddcontact: error: Parallel/Mesh: distributed, but every body is solved whole on one process" "$work/4.err")" -eq 1 ]
+check $? "printed once, naming Parallel/Mesh"
 
 for f in "$work"/*.err; do echo "--- $(basename "$f")"; grep "ddcontact" "$f"; done
 [ "$failures" -eq 0 ] && echo PASSED || { echo "FAILED ($failures)"; exit 1; }
