@@ -4,6 +4,8 @@
 set -euo pipefail
 
 packages=(libdeal.ii-dev gmsh cmake ninja-build g++ make)
+# lld links the Debug test programs in less than half the time of gold.
+packages+=(lld)
 # summary.json is written (and read by the tests) with nlohmann JSON.
 packages+=(nlohmann-json3-dev)
 # MPI launcher for the distributed runs and their tests.
