@@ -429,9 +429,15 @@ namespace ddcontact
                          ", but pair " + contact_pairs.front().name + " is " +
                          selection_name(contact_pairs.front().formulation) +
                          "; all pairs of a scene take the same formulation");
-    contact_solver.set_formulation(contact_pairs.empty() ||
-                                   contact_pairs.front().formulation ==
-                                     ContactFormulation::exact);
+    const auto frictional =
+      std::find_if(contact_pairs.begin(),
+                   contact_pairs.end(),
+                   [](const ContactPairParameters &pair)
+                   { return pair.friction != FrictionLaw::none; });
+    contact_solver.set_formulation(
+      contact_pairs.empty() ||
+        contact_pairs.front().formulation == ContactFormulation::exact,
+      frictional == contact_pairs.end() ? std::string() : frictional->name);
 
     prm.enter_subsection("Output");
     {

@@ -267,6 +267,11 @@ namespace ddcontact
                                    1,
                                    constants,
                                    "Contact pair " + parameters.name + "/Gap");
+    if (has_friction())
+      friction_function = make_function(parameters.friction_expression(),
+                                        1,
+                                        constants,
+                                        parameters.friction_entry());
   }
 
   void
@@ -443,6 +448,26 @@ namespace ddcontact
              p.b,
              p.load_dofs_2,
              p.load_2);
+      if (!has_friction())
+        continue;
+      // The tangent tau = n_1 turned by +90 degrees, tau_2 = -tau; the
+      // same dofs and load dofs as the normal's.
+      const Tensor<1, 2>                   tau({-p.normal[1], p.normal[0]});
+      std::vector<types::global_dof_index> dofs, load_dofs;
+      couple(
+        shapes_1[q], body_1.get_fe(), tau, dofs, p.at, load_dofs, p.load_t1);
+      couple(
+        shapes_2[q], body_2.get_fe(), -tau, dofs, p.bt, load_dofs, p.load_t2);
+      p.friction = friction_function->value(p.x);
+      if (!std::isfinite(p.friction) || p.friction < 0)
+      {
+        std::ostringstream message;
+        message << parameters.friction_entry() << ": " << p.friction << " at ("
+                << p.x[0] << ", " << p.x[1]
+                << ") of S_1; give an expression >= 0 and finite on the "
+                   "whole zone";
+        throw InputError(message.str());
+      }
     }
 
     // Thickness of both bodies along the mean normal of S_1 (the x axis
@@ -576,6 +601,53 @@ namespace ddcontact
     }
   }
 
+  std::vector<double>
+  ContactPair::slips(const BodyVector &u_1, const BodyVector &u_2) const
+  {
+    std::vector<double> s(contact_points.size());
+    if (!has_friction())
+      return s;
+    for (unsigned int q = 0; q < contact_points.size(); ++q)
+    {
+      const auto &p = contact_points[q];
+      for (unsigned int i = 0; i < p.at.size(); ++i)
+        s[q] += p.at[i] * u_1(p.dofs_1[i]);
+      for (unsigned int i = 0; i < p.bt.size(); ++i)
+        s[q] += p.bt[i] * u_2(p.dofs_2[i]);
+    }
+    return s;
+  }
+
+  std::pair<Tensor<1, 2>, Tensor<1, 2>>
+  ContactPair::add_friction_loads(const std::vector<double> &t,
+                                  BodyVector                &load_1,
+                                  BodyVector                &load_2) const
+  {
+    AssertDimension(t.size(), contact_points.size());
+    Tensor<1, 2> force_1, force_2;
+    if (!has_friction())
+      return {force_1, force_2};
+    const auto &fe_1 = body_1.get_fe();
+    const auto &fe_2 = body_2.get_fe();
+    for (unsigned int q = 0; q < contact_points.size(); ++q)
+    {
+      if (t[q] == 0.)
+        continue;
+      // The traction -t tau_a on body a, as sigma_n n_a for the normal.
+      const auto  &p = contact_points[q];
+      const double s = -t[q] * p.JxW;
+      for (unsigned int i = 0; i < p.at.size(); ++i)
+        force_1[fe_1.system_to_component_index(i).first] += s * p.at[i];
+      for (unsigned int i = 0; i < p.bt.size(); ++i)
+        force_2[fe_2.system_to_component_index(i).first] += s * p.bt[i];
+      for (unsigned int i = 0; i < p.load_t1.size(); ++i)
+        load_1(p.load_dofs_1[i]) += s * p.load_t1[i];
+      for (unsigned int i = 0; i < p.load_t2.size(); ++i)
+        load_2(p.load_dofs_2[i]) += s * p.load_t2[i];
+    }
+    return {force_1, force_2};
+  }
+
   std::pair<Tensor<1, 2>, Tensor<1, 2>>
   ContactPair::add_contact_loads(const std::vector<double> &sigma_n,
                                  BodyVector                &load_1,
@@ -625,9 +697,31 @@ namespace ddcontact
   }
 
   void
+  ContactPair::add_unconstrained_friction_load(const std::vector<double> &t,
+                                               const ElasticBody<2>      &body,
+                                               BodyVector &load) const
+  {
+    if (t.empty())
+      return;
+    AssertDimension(t.size(), contact_points.size());
+    Assert(&body == &body_1 || &body == &body_2, ExcInternalError());
+    const bool on_body_1 = (&body == &body_1);
+    for (unsigned int q = 0; q < contact_points.size(); ++q)
+    {
+      const auto  &p            = contact_points[q];
+      const double s            = -t[q] * p.JxW;
+      const auto  &dofs         = on_body_1 ? p.dofs_1 : p.dofs_2;
+      const auto  &coefficients = on_body_1 ? p.at : p.bt;
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        load(dofs[i]) += s * coefficients[i];
+    }
+  }
+
+  void
   ContactPair::add_traction_samples(const std::vector<double> &sigma_n,
                                     const ElasticBody<2>      &body,
-                                    BoundaryTractionSamples   &samples) const
+                                    BoundaryTractionSamples   &samples,
+                                    const std::vector<double> &t) const
   {
     AssertDimension(sigma_n.size(), contact_points.size());
     Assert(&body == &body_1 || &body == &body_2, ExcInternalError());
@@ -637,8 +731,10 @@ namespace ddcontact
       const auto &p = contact_points[q];
       samples.points.push_back(on_body_1 ? p.x : p.projection);
       samples.weights.push_back(p.JxW);
-      samples.traction.push_back((on_body_1 ? sigma_n[q] : -sigma_n[q]) *
-                                 p.normal);
+      Tensor<1, 2> traction = sigma_n[q] * p.normal;
+      if (!t.empty())
+        traction -= t[q] * Tensor<1, 2>({-p.normal[1], p.normal[0]});
+      samples.traction.push_back(on_body_1 ? traction : -traction);
     }
   }
 } // namespace ddcontact

@@ -10,6 +10,10 @@ namespace ddcontact
   DDCONTACT_SELECTION(ContactFormulation,
                       {"exact", ContactFormulation::exact},
                       {"penalty", ContactFormulation::penalty})
+  DDCONTACT_SELECTION(FrictionLaw,
+                      {"none", FrictionLaw::none},
+                      {"tresca", FrictionLaw::tresca},
+                      {"coulomb", FrictionLaw::coulomb})
   DDCONTACT_SELECTION(GapType,
                       {"expression", GapType::expression},
                       {"geometric", GapType::geometric})
@@ -99,6 +103,25 @@ namespace ddcontact
       "no pressure. auto: a tenth of the smaller body's diameter (a wider gap "
       "cannot close under small strains), at least twice the longest zone "
       "face. Otherwise a length > 0.");
+    prm.declare_entry(
+      "Friction",
+      "none",
+      selection_pattern<FrictionLaw>(),
+      "none (the default, the paper's frictionless contact); tresca: the "
+      "tangential traction |t| <= g with slip only where |t| = g, g the "
+      "Friction bound; coulomb: |t| <= mu p with mu the Friction "
+      "coefficient (doc/friction.md). Needs Contact solver/Solver = "
+      "monolithic for now.");
+    prm.declare_entry("Friction bound",
+                      "0",
+                      Patterns::Anything(),
+                      "Friction = tresca: the slip bound g [stress] >= 0, an "
+                      "expression in x, y and the constants.");
+    prm.declare_entry("Friction coefficient",
+                      "0",
+                      Patterns::Anything(),
+                      "Friction = coulomb: the coefficient mu >= 0, an "
+                      "expression in x, y and the constants.");
     prm.declare_entry("Gauss points",
                       "3",
                       Patterns::Integer(1, 10),
@@ -122,6 +145,9 @@ namespace ddcontact
     penalty        = prm.get_double("Penalty");
     thickness      = prm.get_double("Thickness");
     n_gauss        = prm.get_integer("Gauss points");
+    friction       = parse_selection<FrictionLaw>(prm.get("Friction"));
+    friction_bound = prm.get("Friction bound");
+    friction_coefficient       = prm.get("Friction coefficient");
     const std::string distance = Utilities::trim(prm.get("Search distance"));
     if (distance != "auto")
     {

@@ -207,6 +207,32 @@ namespace ddcontact
     pair.get_body_2().reinit_vector(l2);
     std::tie(state.force_1, state.force_2) =
       pair.add_contact_loads(state.sigma_n, l1, l2);
+    const auto &friction = laws[p].get_friction();
+    if (pair.has_friction() && !pair.points().empty() &&
+        friction.t.size() == pair.points().size())
+    {
+      state.t              = friction.t;
+      state.slip_increment = friction.slip_increment;
+      state.slip           = friction.slip;
+      state.slip_state     = friction.state;
+      state.dissipation    = friction.dissipation;
+      const auto forces    = pair.add_friction_loads(friction.t, l1, l2);
+      state.force_1 += forces.first;
+      state.force_2 += forces.second;
+      // Along tau of the first point (a straight zone's one tangent).
+      const auto &n0         = pair.points().front().normal;
+      state.tangential_force = forces.first * Tensor<1, 2>({-n0[1], n0[0]});
+      double lo = std::numeric_limits<double>::max(), hi = -lo;
+      for (unsigned int q = 0; q < friction.state.size(); ++q)
+        if (friction.state[q] == ContactLaw::SlipState::stick)
+        {
+          const auto  &pt = pair.points()[q];
+          const double s  = pt.x[0] * pt.normal[1] - pt.x[1] * pt.normal[0];
+          lo              = std::min(lo, s);
+          hi              = std::max(hi, s);
+        }
+      state.stick_half_width = (hi >= lo) ? 0.5 * (hi - lo) : 0.;
+    }
     double lo = std::numeric_limits<double>::max(), hi = -lo;
     for (unsigned int q = 0; q < state.sigma_n.size(); ++q)
     {

@@ -210,12 +210,26 @@ namespace ddcontact
       OutputFile  file(parameters.output_directory + "/contact_" + pair.name() +
                       suffix + ".csv");
       auto       &out = file.stream();
-      out << "x1,x2,pressure,u_1n,u_2n,gap,weight\n" << std::setprecision(12);
+      // With friction also the tangential traction t (the traction
+      // -t tau on body 1, tau = n_1 turned by +90 degrees), the slip
+      // increment and slip along tau, and the state (0 open, 1 stick, 2
+      // slip).
+      const bool friction = !state.t.empty();
+      out << "x1,x2,pressure,u_1n,u_2n,gap,weight"
+          << (friction ? ",tangential_traction,slip_increment,slip,state" : "")
+          << '\n'
+          << std::setprecision(12);
       // (0 - sigma_n: no "-0" where the pressure is zero.)
       for (unsigned int q = 0; q < pts.size(); ++q)
+      {
         out << pts[q].x[0] << ',' << pts[q].x[1] << ',' << 0. - state.sigma_n[q]
             << ',' << state.u_1n[q] << ',' << state.u_2n[q] << ',' << pts[q].gap
-            << ',' << pts[q].JxW << '\n';
+            << ',' << pts[q].JxW;
+        if (friction)
+          out << ',' << state.t[q] << ',' << state.slip_increment[q] << ','
+              << state.slip[q] << ',' << static_cast<int>(state.slip_state[q]);
+        out << '\n';
+      }
       file.commit();
     }
   }
@@ -233,7 +247,12 @@ namespace ddcontact
       if (state.max_nodal_pressure > 0)
         pcout << ", largest nodal multiplier " << state.max_nodal_pressure;
       pcout << ", half-width " << state.half_width << ", max penetration "
-            << state.max_penetration << std::endl;
+            << state.max_penetration;
+      if (!state.t.empty())
+        pcout << "; tangential force " << state.tangential_force
+              << ", stick half-width " << state.stick_half_width
+              << ", dissipated " << state.dissipation;
+      pcout << std::endl;
     }
   }
 
@@ -336,8 +355,9 @@ namespace ddcontact
           continue;
         if (contact_load.size() == 0)
           body.reinit_vector(contact_load);
-        pair.add_unconstrained_contact_load(
-          results.contact_solver->contact_state(p).sigma_n, body, contact_load);
+        const auto state = results.contact_solver->contact_state(p);
+        pair.add_unconstrained_contact_load(state.sigma_n, body, contact_load);
+        pair.add_unconstrained_friction_load(state.t, body, contact_load);
       }
     const ReactionForces<2> reactions(body, body.get_solution(), contact_load);
     const auto vector = [](const Tensor<1, 2> &f) { return Json{f[0], f[1]}; };
@@ -442,6 +462,15 @@ namespace ddcontact
       c["contact_length"]  = state.contact_length;
       c["half_width"]      = state.half_width;
       c["max_penetration"] = state.max_penetration;
+      if (!state.t.empty())
+      {
+        // Along tau = n_1 turned by +90 degrees (of the first point).
+        c["tangential_force"]  = state.tangential_force;
+        c["stick_half_width"]  = state.stick_half_width;
+        c["dissipated_energy"] = state.dissipation;
+        c["friction"] =
+          selection_name(results.contact_pairs[p]->friction_law());
+      }
       // max_penetration is the largest u_1n + u_2n - f_n (at least 0), with
       // u_an the displacement of body a along its outward normal. The
       // approach is the largest |u_1n| + |u_2n|, the measure of the AL

@@ -203,7 +203,16 @@ namespace ddcontact
     BoundaryTractionSamples samples;
     for (unsigned int p = 0; p < pairs.size(); ++p)
       if (&pairs[p]->get_body_1() == &body || &pairs[p]->get_body_2() == &body)
-        pairs[p]->add_traction_samples(last_sigma_n[p], body, samples);
+      {
+        // With friction the tangential traction too (the FEM problem's
+        // whole contact load).
+        const auto &t = problem.law(p).get_friction().t;
+        pairs[p]->add_traction_samples(
+          last_sigma_n[p],
+          body,
+          samples,
+          t.size() == last_sigma_n[p].size() ? t : std::vector<double>());
+      }
     return samples;
   }
 

@@ -280,13 +280,29 @@ namespace ddcontact
   }
 
   void
-  ContactSolverParameters::set_formulation(const bool exact)
+  ContactSolverParameters::set_formulation(const bool         exact,
+                                           const std::string &frictional_pair)
   {
     augmented_lagrangian = exact;
-    if (contact_pressure == "auto")
+    friction             = !frictional_pair.empty();
+    // Friction lives on the nodes of S_1 (a tangential multiplier beside
+    // the normal one, doc/friction.md), so far in the monolithic solver.
+    if (friction && solver != ContactSolverType::monolithic)
+      throw InputError("Contact pair " + frictional_pair +
+                       "/Friction: friction is solved by Contact "
+                       "solver/Solver = monolithic so far, not by " +
+                       selection_name(solver) +
+                       "; set Solver = monolithic or Friction = none");
+    if (friction && contact_pressure == "points")
+      throw InputError("Contact pair " + frictional_pair +
+                       "/Friction: friction needs the pressure on the nodes "
+                       "of S_1; set Contact solver/Contact pressure = nodes "
+                       "or auto");
+    if (contact_pressure == "auto" || friction)
     {
-      pressure_on_nodes = solver == ContactSolverType::dd_newton ||
-                          (solver == ContactSolverType::monolithic && !exact);
+      pressure_on_nodes =
+        solver == ContactSolverType::dd_newton ||
+        (solver == ContactSolverType::monolithic && (!exact || friction));
       return;
     }
     pressure_on_nodes = (contact_pressure == "nodes");

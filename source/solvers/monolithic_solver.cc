@@ -17,8 +17,9 @@ namespace ddcontact
     ConditionalOStream                  &pcout)
     : ContactSolver(parameters, bodies, pairs, distribution, pcout)
     , on_nodes(parameters.pressure_on_nodes)
+    , friction(parameters.friction)
     , max_iterations(parameters.monolithic.max_newton_iterations)
-    , interface(this->problem, on_nodes, false)
+    , interface(this->problem, on_nodes, parameters.exact_contact())
   {
   }
 
@@ -74,6 +75,15 @@ namespace ddcontact
     return gu - f;
   }
 
+  double
+  MonolithicContactSolver::Penetration::slip(const Vector<double> &u) const
+  {
+    double hu = 0;
+    for (unsigned int j = 0; j < h.size(); ++j)
+      hu += h[j] * u(dofs[j]);
+    return hu;
+  }
+
   void
   MonolithicContactSolver::setup_constraints()
   {
@@ -110,32 +120,49 @@ namespace ddcontact
     penetrations.assign(interface.size(), Penetration());
     for (unsigned int i = 0; i < interface.size(); ++i)
     {
-      auto &d        = penetrations[i];
-      d.weight       = interface.weight(i);
-      d.theta        = interface.penalty(i);
-      d.scale        = interface.complementarity_scale(i);
-      const auto add = [&](const types::global_dof_index dof, const double v)
+      auto &d  = penetrations[i];
+      d.weight = interface.weight(i);
+      d.theta  = interface.penalty(i);
+      d.scale  = interface.complementarity_scale(i);
+      // The normal (v) and, with friction, tangential (w) coefficient of
+      // a dof.
+      const auto add =
+        [&](const types::global_dof_index dof, const double v, const double w)
       {
         const auto it = std::find(d.dofs.begin(), d.dofs.end(), dof);
         if (it == d.dofs.end())
         {
           d.dofs.push_back(dof);
           d.g.push_back(v);
+          if (friction)
+            d.h.push_back(w);
         }
         else
+        {
           d.g[it - d.dofs.begin()] += v;
+          if (friction)
+            d.h[it - d.dofs.begin()] += w;
+        }
       };
       for (const auto &share : interface.shares(i))
       {
-        const auto        &pair = *pairs[share.pair];
-        const auto        &p    = pair.points()[share.point];
-        const double       s    = share.psi * p.JxW / d.weight;
-        const unsigned int b1   = problem.body_index(pair.get_body_1());
-        const unsigned int b2   = problem.body_index(pair.get_body_2());
+        const auto        &pair      = *pairs[share.pair];
+        const auto        &p         = pair.points()[share.point];
+        const double       s         = share.psi * p.JxW / d.weight;
+        const unsigned int b1        = problem.body_index(pair.get_body_1());
+        const unsigned int b2        = problem.body_index(pair.get_body_2());
+        const bool         with_slip = friction && pair.has_friction();
         for (unsigned int j = 0; j < p.a.size(); ++j)
-          add(p.dofs_1[j] + offset[b1], s * p.a[j]);
+          add(
+            p.dofs_1[j] + offset[b1], s * p.a[j], with_slip ? s * p.at[j] : 0.);
         for (unsigned int j = 0; j < p.b.size(); ++j)
-          add(p.dofs_2[j] + offset[b2], s * p.b[j]);
+          add(
+            p.dofs_2[j] + offset[b2], s * p.b[j], with_slip ? s * p.bt[j] : 0.);
+        if (with_slip)
+        {
+          d.law = pair.friction_law();
+          d.bound += s * p.friction;
+        }
         // lambda + g/theta = (f_n + theta lambda - u_1n - u_2n)/theta: the
         // multipliers shift the gap (not on the nodes, ContactLaw).
         d.f += s * problem.law(share.pair).shifted_gap(share.point);
@@ -149,7 +176,9 @@ namespace ddcontact
     const auto &bodies = problem.get_bodies();
     const auto  n      = offset.back();
     // On the nodes the pressures follow the displacements.
-    DynamicSparsityPattern dsp(n + (on_nodes ? penetrations.size() : 0));
+    const unsigned int n_multipliers =
+      on_nodes ? (friction ? 2 : 1) * penetrations.size() : 0;
+    DynamicSparsityPattern dsp(n + n_multipliers);
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
       const auto &K = bodies[b]->get_stiffness_matrix();
@@ -162,6 +191,8 @@ namespace ddcontact
       auto dofs = penetrations[i].dofs;
       if (on_nodes)
         dofs.push_back(n + i);
+      if (friction)
+        dofs.push_back(n + penetrations.size() + i);
       constraints.add_entries_local_to_global(dofs, dsp, false);
     }
     sparsity.copy_from(dsp);
@@ -176,27 +207,55 @@ namespace ddcontact
     return p;
   }
 
-  std::vector<bool>
-  MonolithicContactSolver::active_set(const Vector<double> &u,
-                                      const PointVector    &p) const
+  std::pair<double, double>
+  MonolithicContactSolver::trial_traction(const unsigned int    i,
+                                          const Vector<double> &u,
+                                          const PointVector    &p) const
   {
-    std::vector<bool> active(penetrations.size());
+    const auto  &d = penetrations[i];
+    const double t = p[penetrations.size() + i];
+    // t + (ds - theta (t - t_old)) / c: the traction that the slip
+    // increment would add beyond the law's elastic slip.
+    const double trial =
+      t + (d.slip(u) - d.s_old - d.theta * (t - d.t_old)) / d.scale;
+    const double bound =
+      d.law == FrictionLaw::tresca
+        ? d.bound
+        : d.bound * std::max(0., p[i] + (d(u) - d.theta * p[i]) / d.scale);
+    return {trial, bound};
+  }
+
+  std::vector<MonolithicContactSolver::NodeState>
+  MonolithicContactSolver::active_set(const Vector<double> &u,
+                                      const PointVector    &p,
+                                      const bool            stick) const
+  {
+    std::vector<NodeState> active(penetrations.size(), open);
     for (unsigned int i = 0; i < active.size(); ++i)
     {
       const auto &d = penetrations[i];
-      active[i]     = d(u) + (d.scale - d.theta) * p[i] > 0;
+      if (!(d(u) + (d.scale - d.theta) * p[i] > 0))
+        continue;
+      active[i] = closed;
+      if (d.law == FrictionLaw::none || stick)
+        continue;
+      const auto [trial, bound] = trial_traction(i, u, p);
+      if (std::abs(trial) > bound)
+        active[i] = trial > 0 ? slip_forward : slip_backward;
     }
     return active;
   }
 
   void
-  MonolithicContactSolver::solve_linearised(const std::vector<bool> &active,
-                                            Vector<double>          &u,
-                                            PointVector             &p) const
+  MonolithicContactSolver::solve_linearised(
+    const std::vector<NodeState> &active,
+    Vector<double>               &u,
+    PointVector                  &p) const
   {
     const auto          &bodies = problem.get_bodies();
     const auto           n      = offset.back();
     const unsigned int   n_p    = on_nodes ? p.size() : 0;
+    const unsigned int   n_t    = penetrations.size(); // offset of the t_i
     SparseMatrix<double> matrix(sparsity);
     Vector<double>       rhs(n + n_p);
     // blockdiag(K_a) and the bodies' condensed loads (12).
@@ -218,9 +277,10 @@ namespace ddcontact
       {
         // Row and column of p_i: m g^T u - m theta p = m f, or p_i = 0.
         dofs.push_back(n + i);
-        FullMatrix<double> local_matrix(k + 1, k + 1);
-        Vector<double>     local_rhs(k + 1);
-        if (active[i])
+        const unsigned int size = friction ? k + 2 : k + 1;
+        FullMatrix<double> local_matrix(size, size);
+        Vector<double>     local_rhs(size);
+        if (active[i] != open)
         {
           for (unsigned int j = 0; j < k; ++j)
             local_matrix(j, k) = local_matrix(k, j) = d.weight * d.g[j];
@@ -229,10 +289,38 @@ namespace ddcontact
         }
         else
           local_matrix(k, k) = 1;
+        if (friction)
+        {
+          // Column of t_i (the force m t h) and its row: stick
+          // m h^T u - m theta t = m (s_old - theta t_old), slip t = sigma g
+          // (Tresca) or t - sigma mu p = 0 (Coulomb), else t = 0.
+          const unsigned int kt = k + 1;
+          dofs.push_back(n + n_t + i);
+          for (unsigned int j = 0; j < d.h.size(); ++j)
+            local_matrix(j, kt) = d.weight * d.h[j];
+          if (active[i] == closed && d.law != FrictionLaw::none)
+          {
+            for (unsigned int j = 0; j < d.h.size(); ++j)
+              local_matrix(kt, j) = d.weight * d.h[j];
+            local_matrix(kt, kt) = -d.weight * d.theta;
+            local_rhs(kt)        = d.weight * (d.s_old - d.theta * d.t_old);
+          }
+          else
+          {
+            local_matrix(kt, kt) = 1;
+            const double sigma   = active[i] == slip_forward    ? 1.
+                                   : active[i] == slip_backward ? -1.
+                                                                : 0.;
+            if (d.law == FrictionLaw::tresca)
+              local_rhs(kt) = sigma * d.bound;
+            else
+              local_matrix(kt, k) = -sigma * d.bound;
+          }
+        }
         constraints.distribute_local_to_global(
           local_matrix, local_rhs, dofs, matrix, rhs);
       }
-      else if (active[i])
+      else if (active[i] != open)
       {
         // (m/theta) g g^T and (m/theta) f g (f shifted by theta lambda).
         FullMatrix<double> local_matrix(k, k);
@@ -280,12 +368,28 @@ namespace ddcontact
       std::copy(r_b.begin(), r_b.end(), r.begin() + offset[b]);
     }
     double sum = 0;
-    for (unsigned int i = 0; i < p.size(); ++i)
+    for (unsigned int i = 0; i < penetrations.size(); ++i)
     {
       const auto    &d = penetrations[i];
       Vector<double> local(d.g.size());
       for (unsigned int j = 0; j < d.g.size(); ++j)
         local(j) = d.weight * p[i] * d.g[j];
+      // The friction force m t h, and the law: t the trial traction cut
+      // to the bound (0 where the node is open).
+      if (friction)
+      {
+        const double t = p[penetrations.size() + i];
+        for (unsigned int j = 0; j < d.h.size(); ++j)
+          local(j) += d.weight * t * d.h[j];
+        const bool is_open = !(d(u) + (d.scale - d.theta) * p[i] > 0);
+        double     law     = t;
+        if (!is_open && d.law != FrictionLaw::none)
+        {
+          const auto [trial, bound] = trial_traction(i, u, p);
+          law                       = t - std::clamp(trial, -bound, bound);
+        }
+        sum += d.weight * law * d.weight * law;
+      }
       constraints.distribute_local_to_global(local, d.dofs, r);
       // The law, as a nodal force: m min(p, (theta p - d) / c).
       const double law =
@@ -334,21 +438,29 @@ namespace ddcontact
       for (types::global_dof_index i = 0; i < bodies[b]->n_dofs(); ++i)
         u(i + offset[b]) = bodies[b]->get_solution()(i);
     PointVector p =
-      on_nodes ? PointVector(penetrations.size(), 0.) : penalty_pressure(u);
+      on_nodes ? PointVector((friction ? 2 : 1) * penetrations.size(), 0.)
+               : penalty_pressure(u);
 
     // The active sets met so far: one met again without settling is a
     // cycle, and damping starts.
-    std::vector<std::vector<bool>> seen;
-    bool                           full_step = false, damped = false;
-    const std::string              what =
+    std::vector<std::vector<NodeState>> seen;
+    bool                                full_step = false, damped = false;
+    const std::string                   what =
       on_nodes ? " active nodes" : " active contact points";
     unsigned int iteration = 0;
     for (; iteration < max_iterations; ++iteration)
     {
-      const auto active = active_set(u, p);
+      const auto active = active_set(u, p, iteration == 0);
       pcout << "  Newton " << iteration << ": "
-            << std::count(active.begin(), active.end(), true) << what
-            << std::endl;
+            << active.size() - std::count(active.begin(), active.end(), open)
+            << what;
+      if (friction)
+        pcout << " ("
+              << active.size() -
+                   std::count(active.begin(), active.end(), open) -
+                   std::count(active.begin(), active.end(), closed)
+              << " slipping)";
+      pcout << std::endl;
       // Settled: (u, p) solves the linear system of its own active set.
       if (full_step && active == seen.back())
         break;
@@ -411,13 +523,59 @@ namespace ddcontact
     for (unsigned int b = 0; b < bodies.size(); ++b)
       for (types::global_dof_index i = 0; i < bodies[b]->n_dofs(); ++i)
         bodies[b]->get_solution()(i) = u(i + offset[b]);
-    if (on_nodes)
+    if (!on_nodes)
+      return;
+    // The pressure p(x) = sum_i p_i psi_i(x) at the points, and its peak.
+    const unsigned int n_nodes = penetrations.size();
+    const PointVector  pressure(p.begin(), p.begin() + n_nodes);
+    const auto         sigma_n = interface.normal_stresses(pressure);
+    const auto         peaks   = interface.peak_pressures(pressure);
+    for (unsigned int k = 0; k < sigma_n.size(); ++k)
+      problem.law(k).set_contact_pressure(sigma_n[k], peaks[k]);
+    if (!friction)
+      return;
+
+    // The tangential traction t(x) = sum_i t_i psi_i(x) at the points,
+    // the slip there, and the energy dissipated at the nodes,
+    // m_i t_i (ds_i - theta_i (t_i - t_i,old)): the slip beyond the
+    // penalty's elastic part (zero where a node sticks).
+    const auto &pairs = problem.get_pairs();
+    const auto  minus_t =
+      interface.normal_stresses(PointVector(p.begin() + n_nodes, p.end()));
+    std::vector<double> dissipation(pairs.size(), 0.);
+    for (unsigned int i = 0; i < n_nodes; ++i)
     {
-      // The pressure p(x) = sum_i p_i psi_i(x) at the points, and its peak.
-      const auto sigma_n = interface.normal_stresses(p);
-      const auto peaks   = interface.peak_pressures(p);
-      for (unsigned int k = 0; k < sigma_n.size(); ++k)
-        problem.law(k).set_contact_pressure(sigma_n[k], peaks[k]);
+      const auto  &d = penetrations[i];
+      const double t = p[n_nodes + i];
+      dissipation[interface.shares(i)[0].pair] +=
+        d.weight * t * (d.slip(u) - d.s_old - d.theta * (t - d.t_old));
+    }
+    for (unsigned int k = 0; k < pairs.size(); ++k)
+    {
+      const auto &pair = *pairs[k];
+      if (!pair.has_friction())
+        continue;
+      ContactLaw::Friction result;
+      result.slip = pair.slips(
+        bodies[problem.body_index(pair.get_body_1())]->get_solution(),
+        bodies[problem.body_index(pair.get_body_2())]->get_solution());
+      // One load step from the undeformed state, so far.
+      result.slip_increment = result.slip;
+      result.dissipation    = dissipation[k];
+      for (unsigned int q = 0; q < pair.points().size(); ++q)
+      {
+        const double t = -minus_t[k][q];
+        result.t.push_back(t);
+        // Slipping where |t| reaches the bound (to round-off).
+        const double bound =
+          pair.points()[q].friction *
+          (pair.friction_law() == FrictionLaw::tresca ? 1. : -sigma_n[k][q]);
+        result.state.push_back(sigma_n[k][q] == 0. ? ContactLaw::SlipState::open
+                               : std::abs(t) >= (1 - 1e-9) * bound
+                                 ? ContactLaw::SlipState::slip
+                                 : ContactLaw::SlipState::stick);
+      }
+      problem.law(k).set_friction(result);
     }
   }
 } // namespace ddcontact

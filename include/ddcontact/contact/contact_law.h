@@ -110,12 +110,46 @@ namespace ddcontact
       return peak;
     }
 
+    /** Where a point is in the frictional law (Contact pair/Friction). */
+    enum class SlipState
+    {
+      open  = 0, // no pressure
+      stick = 1, // |t| below the slip bound, no slip
+      slip  = 2  // |t| at the bound, slipping along t
+    };
+
+    /** The solver's frictional result at every point: the tangential
+     * traction t (the traction -t tau on body 1, see ContactPoint), the
+     * slip increment of the load step, the slip since the start, and the
+     * state; and over the pair the energy dissipated in the step,
+     * int_S1 t . slip increment >= 0. */
+    struct Friction
+    {
+      std::vector<double>    t, slip_increment, slip;
+      std::vector<SlipState> state;
+      double                 dissipation = 0;
+    };
+
+    void
+    set_friction(const Friction &result)
+    {
+      friction = result;
+    }
+
+    /** Empty vectors until a solver with friction has set them. */
+    const Friction &
+    get_friction() const
+    {
+      return friction;
+    }
+
   private:
     const ContactPair    &pair;
     std::vector<double>   lambda;
     std::vector<Point<2>> lambda_points;       // where lambda lives
     bool                  from_solver = false; // the solver's pressure
     double                peak        = 0;
+    Friction              friction;
   };
 } // namespace ddcontact
 

@@ -43,6 +43,13 @@ namespace ddcontact
    * face of S_1 that holds it (an index into ContactPair::zone_faces_1())
    * and the value of each shape function of dofs_1 at x (of its one
    * nonzero component), from which u_1(x) is summed.
+   *
+   * With friction (ContactPair::has_friction()) the point carries the same
+   * coefficients for the tangent tau = n_1 turned by +90 degrees: the slip
+   * s = (u_1 - u_2) . tau = sum_i at_i u_1[dofs_1[i]] + sum_i bt_i
+   * u_2[dofs_2[i]] (tau_2 = -tau, as n_2 = -n_1), the loads load_t1 and
+   * load_t2 on load_dofs_1 and load_dofs_2, and the slip bound g (Tresca)
+   * or the coefficient mu (Coulomb) at x.
    */
   struct ContactPoint
   {
@@ -57,6 +64,8 @@ namespace ddcontact
     std::vector<double>                  load_1, load_2;
     unsigned int                         face = 0;
     std::vector<double>                  values_1;
+    std::vector<double>                  at, bt, load_t1, load_t2;
+    double                               friction = 0;
   };
 
   /**
@@ -154,18 +163,57 @@ namespace ddcontact
                                    const ElasticBody<2>      &body,
                                    BodyVector                &load) const;
 
+    /** The tangential traction's share, as add_friction_loads() but on
+     * @p body alone and with no constraints applied (@p t empty: none). */
+    void
+    add_unconstrained_friction_load(const std::vector<double> &t,
+                                    const ElasticBody<2>      &body,
+                                    BodyVector                &load) const;
+
     /**
      * Append the traction sigma_n n_a that the normal stress @p sigma_n
      * (one value per contact point) exerts on @p body (either side of the
      * pair) to @p samples: at x with n_1 on body 1, at P(x) with n_2 = -n_1
      * on body 2, with the weights of S_1 -- the same points and weights
      * that add_contact_loads() uses, so that a BEM loaded by the samples
-     * sees the load of the FEM problem (20).
+     * sees the load of the FEM problem (20). With friction @p t (empty:
+     * none) adds the tangential traction -t tau on body 1, +t tau on body
+     * 2.
      */
     void
     add_traction_samples(const std::vector<double> &sigma_n,
                          const ElasticBody<2>      &body,
-                         BoundaryTractionSamples   &samples) const;
+                         BoundaryTractionSamples   &samples,
+                         const std::vector<double> &t = {}) const;
+
+    /** The friction law (Contact pair/Friction). */
+    FrictionLaw
+    friction_law() const
+    {
+      return parameters.friction;
+    }
+
+    bool
+    has_friction() const
+    {
+      return parameters.friction != FrictionLaw::none;
+    }
+
+    /** The slip s = (u_1 - u_2) . tau at every contact point (see
+     * ContactPoint; zero without friction). */
+    std::vector<double>
+    slips(const BodyVector &u_1, const BodyVector &u_2) const;
+
+    /**
+     * Add the load of the tangential traction: -@p t tau on body 1 and
+     * +@p t tau on body 2 at every contact point (t >= 0 opposes a positive
+     * slip of body 1 along tau), as add_contact_loads() does for the
+     * normal stress. Returns the forces on both bodies.
+     */
+    std::pair<Tensor<1, 2>, Tensor<1, 2>>
+    add_friction_loads(const std::vector<double> &t,
+                       BodyVector                &load_1,
+                       BodyVector                &load_2) const;
 
     /** What the contact search found at the last setup(). */
     const ContactSearchReport &
@@ -206,6 +254,7 @@ namespace ddcontact
     const ElasticBody<2>                &body_1;
     const ElasticBody<2>                &body_2;
     std::shared_ptr<Function<2>>         gap_function;
+    std::shared_ptr<Function<2>>         friction_function; // g or mu
     std::vector<ContactPoint>            contact_points;
     std::vector<std::array<Point<2>, 2>> zone_1; // faces of S_1
     double                               theta       = 0;

@@ -43,7 +43,17 @@ namespace ddcontact
     penalty
   };
 
+  /** Contact pair/Friction: frictionless (the paper), Tresca (a given slip
+   * bound g) or Coulomb (the slip bound mu p). */
+  enum class FrictionLaw
+  {
+    none,
+    tresca,
+    coulomb
+  };
+
   DDCONTACT_DECLARE_SELECTION(ContactFormulation)
+  DDCONTACT_DECLARE_SELECTION(FrictionLaw)
   DDCONTACT_DECLARE_SELECTION(GapType)
   DDCONTACT_DECLARE_SELECTION(GapEvaluation)
   DDCONTACT_DECLARE_SELECTION(PenaltyType)
@@ -58,15 +68,35 @@ namespace ddcontact
     std::string        name;
     std::string        body_1, body_2;
     unsigned int       boundary_id_1 = 0, boundary_id_2 = 0;
-    ContactFormulation formulation     = ContactFormulation::exact;
-    GapType            gap_type        = GapType::expression;
-    std::string        gap_expression  = "0";
-    GapEvaluation      gap_evaluation  = GapEvaluation::nodes;
-    PenaltyType        penalty_type    = PenaltyType::relative;
-    double             penalty         = 0.05; // c, or theta itself
-    double             thickness       = 0;    // H; 0: from body 1's mesh
-    unsigned int       n_gauss         = 3;    // Gauss points per piece
-    double             search_distance = 0;    // d of the search; 0: auto
+    ContactFormulation formulation          = ContactFormulation::exact;
+    GapType            gap_type             = GapType::expression;
+    std::string        gap_expression       = "0";
+    GapEvaluation      gap_evaluation       = GapEvaluation::nodes;
+    PenaltyType        penalty_type         = PenaltyType::relative;
+    double             penalty              = 0.05; // c, or theta itself
+    double             thickness            = 0;    // H; 0: from body 1's mesh
+    unsigned int       n_gauss              = 3;    // Gauss points per piece
+    double             search_distance      = 0;    // d of the search; 0: auto
+    FrictionLaw        friction             = FrictionLaw::none;
+    std::string        friction_bound       = "0"; // Tresca's g(x, y) [stress]
+    std::string        friction_coefficient = "0"; // Coulomb's mu(x, y)
+
+    /** The expression of the slip bound (Tresca) or of the coefficient
+     * (Coulomb), and its entry's name. */
+    const std::string &
+    friction_expression() const
+    {
+      return friction == FrictionLaw::tresca ? friction_bound
+                                             : friction_coefficient;
+    }
+
+    std::string
+    friction_entry() const
+    {
+      return "Contact pair " + name + "/" +
+             (friction == FrictionLaw::tresca ? "Friction bound"
+                                              : "Friction coefficient");
+    }
 
     static void
     declare(ParameterHandler &prm);

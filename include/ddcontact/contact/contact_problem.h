@@ -27,6 +27,16 @@ namespace ddcontact
     double contact_length            = 0;
     double half_width      = 0; // half the extent of the active set along S
     double max_penetration = 0;
+    // With friction (ContactLaw::get_friction(); empty or 0 without): the
+    // tangential traction t at the points (the traction -t tau on body 1),
+    // the slip increment and state, the tangential force on body 1 along
+    // tau (included in force_1), the half-width of the stick zone and the
+    // energy dissipated in the load step.
+    std::vector<double>                t, slip_increment, slip;
+    std::vector<ContactLaw::SlipState> slip_state;
+    double                             tangential_force = 0;
+    double                             stick_half_width = 0;
+    double                             dissipation      = 0;
   };
 
   /**

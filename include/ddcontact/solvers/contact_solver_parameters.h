@@ -127,24 +127,28 @@ namespace ddcontact
     InitialGuess      initial_guess  = InitialGuess::elastic_layer;
     /** Exact contact (Contact pair/Formulation = exact): set by the scene
      * from its pairs, not read here. */
-    bool        augmented_lagrangian  = false;
-    bool        write_every_iteration = false;
-    bool        print_every_iteration = false;  // Output/Verbosity = full
-    bool        pressure_on_nodes     = false;  // Contact pressure
-    std::string contact_pressure      = "auto"; // the entry
+    bool augmented_lagrangian  = false;
+    bool write_every_iteration = false;
+    bool print_every_iteration = false; // Output/Verbosity = full
+    bool pressure_on_nodes     = false; // Contact pressure
+    /** A pair has friction (Contact pair/Friction): set by the scene. */
+    bool        friction         = false;
+    std::string contact_pressure = "auto"; // the entry
 
     UzawaParameters               uzawa;
     DomainDecompositionParameters dd;
     DDNewtonParameters            dd_newton;
     MonolithicParameters          monolithic;
 
-    /** Exact contact (theta = 0) solved directly by dd-newton with one
-     * multiplier per node of S_1 (ContactInterface); the other solvers
-     * reach exact contact through the Uzawa loop. */
+    /** Exact contact (theta = 0) solved directly with one multiplier per
+     * node of S_1 (ContactInterface), by dd-newton and, with friction, by
+     * the monolithic solver; otherwise the Uzawa loop reaches it. */
     bool
     exact_contact() const
     {
-      return augmented_lagrangian && solver == ContactSolverType::dd_newton;
+      return augmented_lagrangian &&
+             (solver == ContactSolverType::dd_newton ||
+              (friction && solver == ContactSolverType::monolithic));
     }
 
     /** dd-newton's unknowns are one pressure per node of S_1: for exact
@@ -164,10 +168,12 @@ namespace ddcontact
 
     /** Set the formulation of the scene's pairs (exact or the penalty) and
      * with it the Contact pressure of auto: nodes wherever the solver
-     * takes them (dd-newton; monolithic with the penalty), else points.
-     * Refuses an explicit nodes that the solver cannot take. */
+     * takes them (dd-newton; monolithic with the penalty or with
+     * friction), else points. Refuses an explicit nodes that the solver
+     * cannot take, and friction (on the pair @p frictional_pair, empty:
+     * none) with a solver that has none yet or on the points. */
     void
-    set_formulation(bool exact);
+    set_formulation(bool exact, const std::string &frictional_pair = "");
   };
 
   /** The one-line error for an entry (@p entry as written there) of the

@@ -57,6 +57,27 @@ namespace ddcontact
    * tau = 1, 1/2, ... that reduces the Euclidean norm of the Newton
    * residual (K u - L + sum_i m_i p_i g_i on the unconstrained dofs, and
    * m_i min(p_i, (theta_i p_i - d_i) / c_i), both forces).
+   *
+   * **Friction** (Contact pair/Friction = tresca or coulomb, on the nodes
+   * only; doc/friction.md) adds a tangential multiplier t_i per node, the
+   * traction -t_i tau on body 1 (tau = n_1 turned by +90 degrees, t_i >= 0
+   * opposing a positive slip of body 1), with the averaged slip s_i(u) =
+   * (1/m_i) int_S1 psi_i (u_1 - u_2) . tau = h_i . u and its increment
+   * over the load step, ds_i = s_i(u) - s_i,old. Every node is open (p_i =
+   * t_i = 0), sticks (ds_i = theta_i (t_i - t_i,old): no slip for exact
+   * contact, the penalty's elastic slip otherwise) or slips (t_i =
+   * sigma_i b_i, sigma_i = +-1, with the bound b_i = g_i for Tresca and
+   * mu_i p_i for Coulomb), decided as in the primal-dual active-set
+   * method of Hueber, Stadler and Wohlmuth from the trial traction
+   *   t_i + (ds_i - theta_i (t_i - t_i,old)) / c_i
+   * against b_i (for Coulomb with the trial pressure p_i + (d_i - theta_i
+   * p_i) / c_i). The Newton step of a given set of states is one linear
+   * solve, the force rows gaining m_i t_i h_i and each node a row for t_i:
+   * symmetric for stick and Tresca's slip, the row t_i - sigma_i mu_i p_i =
+   * 0 of Coulomb's slip is not (UMFPACK takes either). The method stops,
+   * as without friction, when the states of the solution are those it was
+   * computed with: then it solves the discrete problem exactly. With
+   * friction Formulation = exact is theta = 0 on the nodes (no Uzawa loop).
    */
   class MonolithicContactSolver : public ContactSolver
   {
@@ -113,18 +134,37 @@ namespace ddcontact
     }
 
   private:
-    /** One term of J_theta: d = sum_j g[j] u(dofs[j]) - f (global dofs). */
+    /** One term of J_theta: d = sum_j g[j] u(dofs[j]) - f (global dofs);
+     * with friction the slip s = sum_j h[j] u(dofs[j]) on the same dofs,
+     * its law, the bound g_i or coefficient mu_i (averaged like d), and
+     * the slip and traction at the start of the load step. */
     struct Penetration
     {
       std::vector<types::global_dof_index> dofs;
-      std::vector<double>                  g;
+      std::vector<double>                  g, h;
       double                               f      = 0;
       double                               weight = 0; // m_i
       double                               theta  = 0;
       double                               scale  = 0; // c_i
+      FrictionLaw                          law    = FrictionLaw::none;
+      double                               bound  = 0; // g_i or mu_i
+      double                               s_old = 0, t_old = 0;
 
       double
       operator()(const Vector<double> &u) const;
+
+      double
+      slip(const Vector<double> &u) const;
+    };
+
+    /** The state of a node in the Newton step: no contact, contact
+     * (frictionless, or sticking), or slipping along +tau or -tau. */
+    enum NodeState : unsigned char
+    {
+      open,
+      closed,
+      slip_forward,
+      slip_backward
     };
 
     /** The bodies' constraints in the global numbering, and the offsets. */
@@ -144,16 +184,30 @@ namespace ddcontact
     PointVector
     penalty_pressure(const Vector<double> &u) const;
 
-    /** {d_i + (c_i - theta_i) p_i > 0}. */
-    std::vector<bool>
-    active_set(const Vector<double> &u, const PointVector &p) const;
+    /** closed where d_i + (c_i - theta_i) p_i > 0, else open; with
+     * friction closed nodes whose trial traction exceeds the bound slip
+     * (see the class), or, with @p stick, all stick (the first step,
+     * whose u and t are no Newton iterate: sticking, the zone finds the
+     * direction of every slip from its traction). @p p holds the pressures
+     * and, with friction, the tangential tractions after them. */
+    std::vector<NodeState>
+    active_set(const Vector<double> &u,
+               const PointVector    &p,
+               bool                  stick = false) const;
 
-    /** One Newton step on the active set @p active: the new @p u and, on
+    /** The trial traction of node @p i and its slip bound (see the
+     * class). */
+    std::pair<double, double>
+    trial_traction(unsigned int          i,
+                   const Vector<double> &u,
+                   const PointVector    &p) const;
+
+    /** One Newton step on the states @p active: the new @p u and, on
      * the nodes, @p p. */
     void
-    solve_linearised(const std::vector<bool> &active,
-                     Vector<double>          &u,
-                     PointVector             &p) const;
+    solve_linearised(const std::vector<NodeState> &active,
+                     Vector<double>               &u,
+                     PointVector                  &p) const;
 
     /** The Euclidean norm of the Newton residual of (@p u, @p p). */
     double
@@ -177,6 +231,7 @@ namespace ddcontact
     solve_newton();
 
     const bool                           on_nodes;
+    const bool                           friction; // tangential unknowns
     const unsigned int                   max_iterations;
     unsigned int                         n_newton_steps = 0;
     double                               final_residual = 0;
