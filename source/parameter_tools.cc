@@ -189,7 +189,8 @@ namespace ddcontact
   make_function(const std::string &expression,
                 const unsigned int n_components,
                 const Constants   &constants,
-                const std::string &what)
+                const std::string &what,
+                const bool         time_dependent)
   {
     const auto parts = Utilities::split_string_list(expression, ';');
     if (parts.size() != n_components)
@@ -205,7 +206,11 @@ namespace ddcontact
     auto *const        cerr_buffer = std::cerr.rdbuf(diagnosis.rdbuf());
     try
     {
-      function->initialize("x,y", parts, constants);
+      // The load parameter t (Loading/Steps) is 1 unless a load step sets
+      // it (Function::set_time()).
+      function->initialize(
+        time_dependent ? "x,y,t" : "x,y", parts, constants, time_dependent);
+      function->set_time(1);
       Vector<double> values(n_components);
       function->vector_value(Point<2>(0.123, 0.456), values);
     }

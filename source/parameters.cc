@@ -245,6 +245,20 @@ namespace ddcontact
     AdaptationParameters::declare(prm);
     prm.leave_subsection();
 
+    prm.enter_subsection("Loading");
+    prm.declare_entry(
+      "Steps",
+      "1",
+      Patterns::Integer(1, 100000),
+      "Quasi-static load steps: the Dirichlet, Neumann and body-force "
+      "expressions may use the load parameter t, which runs through k / "
+      "Steps, k = 1, ..., Steps (t = 1 with one step). Each step is solved "
+      "from the last (warm start); with friction the slip and the "
+      "tangential traction carry over from step to step (doc/friction.md). "
+      "Every step writes its output (bodies-<step>.vtu in the PVD time "
+      "series, contact_<pair>_step<k>.csv).");
+    prm.leave_subsection();
+
     prm.enter_subsection("Parallel");
     ParallelParameters::declare(prm);
     prm.leave_subsection();
@@ -346,6 +360,16 @@ namespace ddcontact
     prm.enter_subsection("Adaptation");
     adaptation.parse(prm);
     prm.leave_subsection();
+    prm.enter_subsection("Loading");
+    load_steps = prm.get_integer("Steps");
+    prm.leave_subsection();
+    // The history (slip, multipliers) does not move to new meshes yet.
+    if (load_steps > 1 && adaptation.enabled())
+      throw InputError("Loading/Steps: " + std::to_string(load_steps) +
+                       " load steps with Adaptation/Mode = " +
+                       selection_name(adaptation.mode) +
+                       "; adaptive meshes take one load step so far (set "
+                       "Adaptation/Mode = none, or Steps = 1)");
     // The combined algorithm (Fig. 2) interleaves single DD steps with the
     // refinement; the monolithic solver has no such steps.
     if (adaptation.mode == AdaptationMode::combined &&

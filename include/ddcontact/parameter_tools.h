@@ -126,12 +126,15 @@ namespace ddcontact
   parse_constants(const std::string &text, const std::string &what);
 
   /** A vector-valued FunctionParser in x, y, checked; `what` names the
-   * entry in the error message if the expression does not parse. */
+   * entry in the error message if the expression does not parse. With
+   * @p time_dependent also in the load parameter t (Loading/Steps), whose
+   * value is the function's time, 1 until set. */
   std::shared_ptr<Function<2>>
   make_function(const std::string &expression,
                 unsigned int       n_components,
                 const Constants   &constants,
-                const std::string &what);
+                const std::string &what,
+                bool               time_dependent = false);
 
   /** Small pieces of the parsers of the parameter structs. */
   namespace parsing

@@ -41,6 +41,9 @@ namespace ddcontact
     bool                     write_vtu         = true;
     bool                     smoothed_stresses = true;
     unsigned int             n_threads         = 0; // 0 = all cores
+    /** Loading/Steps: the load parameter t of the boundary data runs
+     * through k / Steps, k = 1, ..., Steps (quasi-static load steps). */
+    unsigned int load_steps = 1;
 
     std::vector<BodyParameters>        bodies;
     std::vector<ContactPairParameters> contact_pairs;

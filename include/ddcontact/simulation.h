@@ -129,6 +129,12 @@ namespace ddcontact
     void
     solve();
 
+    /** Load step @p k (from 1) of Loading/Steps at the load parameter
+     * @p t: the bodies' data of t, and from the second step on the
+     * solver's new step. */
+    void
+    start_load_step(unsigned int k, double t);
+
     /** After a DivergenceError or an interruption: history.csv, the
      * contact profiles, the VTU/PVD of the last iterate (if Output/Write
      * vtu) and summary.json with @p status ("diverged", "not_converged",

@@ -37,8 +37,9 @@ namespace ddcontact
   void
   FixedMeshes::solve()
   {
-    if (context.solver)
+    if (context.solver && !started)
       context.solver->initialize();
+    started = true;
     solve_on_current_mesh();
   }
 

@@ -98,7 +98,8 @@ namespace ddcontact
       d.mask = ComponentMask(
         std::vector<bool>{components.find('x') != std::string::npos,
                           components.find('y') != std::string::npos});
-      d.displacement   = make_function(item.substr(c2 + 1), 2, constants, what);
+      d.displacement =
+        make_function(item.substr(c2 + 1), 2, constants, what, true);
       bc.dirichlet[id] = d;
     }
 
@@ -113,7 +114,7 @@ namespace ddcontact
         throw InputError(what + ": boundary id " + std::to_string(id) +
                          " already has a boundary condition");
       const auto expression = item.substr(c1 + 1);
-      bc.neumann[id]        = make_function(expression, 2, constants, what);
+      bc.neumann[id] = make_function(expression, 2, constants, what, true);
       check_mixed_condition(bc, id, expression, what);
     }
 
@@ -128,8 +129,8 @@ namespace ddcontact
     }
 
     if (!Utilities::trim(body.body_force).empty())
-      bc.body_force =
-        make_function(body.body_force, 2, constants, section + "Body force");
+      bc.body_force = make_function(
+        body.body_force, 2, constants, section + "Body force", true);
 
     // A body whose Dirichlet conditions leave rigid motions free (none, or
     // one component only) is floating: ElasticBody finds its rigid modes,

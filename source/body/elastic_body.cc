@@ -186,19 +186,9 @@ namespace ddcontact
     dof_handler.reinit(get_triangulation());
     dof_handler.distribute_dofs(*fe);
 
-    // Hanging nodes first, then the Dirichlet data (5); merged in one
-    // object so that a Dirichlet node that is also hanging is handled. A
-    // distributed mesh computes the constraints of its locally relevant
-    // dofs (below, they are completed).
-    constraints.clear();
-    hanging_node_constraints.clear();
     IndexSet relevant;
     if (mesh.is_distributed())
-    {
       DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-      constraints.reinit(relevant);
-      hanging_node_constraints.reinit(relevant);
-    }
     // Distributed vectors stay distributed, with the locally relevant dofs
     // as ghosts until distribute_vectors() adds the new traces.
     if (distributed_vectors)
@@ -216,6 +206,30 @@ namespace ddcontact
         mesh.group_communicator() != MPI_COMM_NULL)
       group_layout = std::make_shared<Utilities::MPI::Partitioner>(
         dof_handler.locally_owned_dofs(), relevant, mesh.group_communicator());
+    make_constraints();
+    reinit_vector(solution);
+    if (solved_here)
+      setup_matrix();
+    is_factorized = false;
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::make_constraints()
+  {
+    // Hanging nodes first, then the Dirichlet data (5); merged in one
+    // object so that a Dirichlet node that is also hanging is handled. A
+    // distributed mesh computes the constraints of its locally relevant
+    // dofs (below, they are completed).
+    constraints.clear();
+    hanging_node_constraints.clear();
+    if (mesh.is_distributed())
+    {
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+      constraints.reinit(relevant);
+      hanging_node_constraints.reinit(relevant);
+    }
     const Utilities::MPI::Partitioner *stored =
       distributed_vectors ? partitioner.get() : nullptr;
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
@@ -232,10 +246,27 @@ namespace ddcontact
     constraints.close();
     if (mesh.is_distributed())
       share_constraints(constraints, stored);
-    reinit_vector(solution);
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::set_load_time(const double t)
+  {
+    const auto &bc = boundary_conditions;
+    for (const auto &[id, d] : bc.dirichlet)
+      d.displacement->set_time(t);
+    for (const auto &[id, traction] : bc.neumann)
+      traction->set_time(t);
+    if (bc.body_force)
+      bc.body_force->set_time(t);
+    // The Dirichlet values (5) of the new t; the same lines, so the
+    // contact points' coefficients stay valid.
+    make_constraints();
     if (solved_here)
-      setup_matrix();
-    is_factorized = false;
+    {
+      assemble_system();
+      factorize();
+    }
   }
 
   template <int dim>

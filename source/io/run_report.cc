@@ -235,6 +235,37 @@ namespace ddcontact
   }
 
   void
+  RunReport::record_load_step(const Results     &results,
+                              const unsigned int step,
+                              const double       t)
+  {
+    std::ostringstream suffix;
+    suffix << "_step" << std::setw(4) << std::setfill('0') << step;
+    write_contact_profiles(results, suffix.str());
+    Json row, pairs = Json::array();
+    row["step"] = step;
+    row["t"]    = t;
+    for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
+    {
+      const auto state = results.contact_solver->contact_state(p);
+      Json       c;
+      c["pair"]         = results.contact_pairs[p]->name();
+      c["force"]        = Json::array({state.force_1[0], state.force_1[1]});
+      c["max_pressure"] = state.max_pressure;
+      c["half_width"]   = state.half_width;
+      if (!state.t.empty())
+      {
+        c["tangential_force"]  = state.tangential_force;
+        c["stick_half_width"]  = state.stick_half_width;
+        c["dissipated_energy"] = state.dissipation;
+      }
+      pairs.push_back(c);
+    }
+    row["pairs"] = pairs;
+    load_steps.push_back(row);
+  }
+
+  void
   RunReport::print_contact_states(const Results &results) const
   {
     for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
@@ -663,6 +694,8 @@ namespace ddcontact
     json["mpi_processes"] = results.distribution.n_processes();
     json["body_owners"]   = results.distribution.describe();
     json["points"]        = points_json(results);
+    if (!load_steps.empty())
+      json["load_steps"] = load_steps;
     // The penetration is judged only where the contact iteration converged
     // (also "stalled": the DD converged, the Uzawa loop did not).
     if (!results.contact_pairs.empty())

@@ -27,7 +27,32 @@ namespace ddcontact
   MonolithicContactSolver::initialize()
   {
     ContactSolver::initialize();
+    slip_history.clear();
+    traction_history.clear();
+    point_slip_history.clear();
+    warm_start = false;
     set_initial_guess();
+  }
+
+  void
+  MonolithicContactSolver::reinit_after_refinement()
+  {
+    ContactSolver::reinit_after_refinement();
+    warm_start = false;
+  }
+
+  void
+  MonolithicContactSolver::start_load_step()
+  {
+    slip_history     = last_slip;
+    traction_history = last_traction;
+    point_slip_history.assign(problem.get_pairs().size(), {});
+    for (unsigned int k = 0; k < point_slip_history.size(); ++k)
+      point_slip_history[k] = problem.law(k).get_friction().slip;
+    ContactSolver::start_load_step();
+    // The multipliers of the last step start the Newton method: its
+    // active set is that of the last step where the data change little.
+    warm_start = true;
   }
 
   bool
@@ -166,6 +191,12 @@ namespace ddcontact
         // lambda + g/theta = (f_n + theta lambda - u_1n - u_2n)/theta: the
         // multipliers shift the gap (not on the nodes, ContactLaw).
         d.f += s * problem.law(share.pair).shifted_gap(share.point);
+      }
+      // The state at the end of the last load step (the same nodes).
+      if (slip_history.size() == penetrations.size())
+      {
+        d.s_old = slip_history[i];
+        d.t_old = traction_history[i];
       }
     }
   }
@@ -440,6 +471,8 @@ namespace ddcontact
     PointVector p =
       on_nodes ? PointVector((friction ? 2 : 1) * penetrations.size(), 0.)
                : penalty_pressure(u);
+    if (on_nodes && warm_start && last_multipliers.size() == p.size())
+      p = last_multipliers;
 
     // The active sets met so far: one met again without settling is a
     // cycle, and damping starts.
@@ -525,6 +558,7 @@ namespace ddcontact
         bodies[b]->get_solution()(i) = u(i + offset[b]);
     if (!on_nodes)
       return;
+    last_multipliers = p;
     // The pressure p(x) = sum_i p_i psi_i(x) at the points, and its peak.
     const unsigned int n_nodes = penetrations.size();
     const PointVector  pressure(p.begin(), p.begin() + n_nodes);
@@ -543,10 +577,14 @@ namespace ddcontact
     const auto  minus_t =
       interface.normal_stresses(PointVector(p.begin() + n_nodes, p.end()));
     std::vector<double> dissipation(pairs.size(), 0.);
+    last_slip.resize(n_nodes);
+    last_traction.resize(n_nodes);
     for (unsigned int i = 0; i < n_nodes; ++i)
     {
-      const auto  &d = penetrations[i];
-      const double t = p[n_nodes + i];
+      const auto  &d   = penetrations[i];
+      const double t   = p[n_nodes + i];
+      last_slip[i]     = d.slip(u);
+      last_traction[i] = t;
       dissipation[interface.shares(i)[0].pair] +=
         d.weight * t * (d.slip(u) - d.s_old - d.theta * (t - d.t_old));
     }
@@ -559,9 +597,14 @@ namespace ddcontact
       result.slip = pair.slips(
         bodies[problem.body_index(pair.get_body_1())]->get_solution(),
         bodies[problem.body_index(pair.get_body_2())]->get_solution());
-      // One load step from the undeformed state, so far.
+      // The slip since the last load step (the undeformed state at the
+      // first).
       result.slip_increment = result.slip;
-      result.dissipation    = dissipation[k];
+      if (k < point_slip_history.size() &&
+          point_slip_history[k].size() == result.slip.size())
+        for (unsigned int q = 0; q < result.slip.size(); ++q)
+          result.slip_increment[q] -= point_slip_history[k][q];
+      result.dissipation = dissipation[k];
       for (unsigned int q = 0; q < pair.points().size(); ++q)
       {
         const double t = -minus_t[k][q];

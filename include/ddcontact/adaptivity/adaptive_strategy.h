@@ -72,8 +72,13 @@ namespace ddcontact
   public:
     using AdaptiveStrategy::AdaptiveStrategy;
 
+    /** The first call starts the solver; the next ones (load steps,
+     * Loading/Steps) go on from its last iterate. */
     void
     solve() override;
+
+  private:
+    bool started = false;
   };
 
   /**

@@ -89,6 +89,14 @@ namespace ddcontact
     void
     factorize();
 
+    /** The load parameter t of the boundary data (Loading/Steps): the
+     * Dirichlet values and the loads of @p t, assembled and factorized
+     * where the body is solved (the matrix is the same; the constraints'
+     * inhomogeneities enter the load through the assembly). Collective
+     * over the body's group, as assemble_system(). */
+    void
+    set_load_time(double t);
+
     /** setup_system(), assemble_system() and factorize() in a row. */
     void
     setup_and_factorize();
@@ -473,6 +481,12 @@ namespace ddcontact
      * BodyDistribution. */
     void
     import_group_ghosts(BodyVector &u) const;
+
+    /** The hanging-node and Dirichlet constraints (5) and the fixed
+     * components of the rigid modes, completed on a distributed mesh for
+     * the stored entries. */
+    void
+    make_constraints();
 
     /** The free rigid modes (rigid_modes) and their fixed components,
      * added to the open @p constraints. */

@@ -112,6 +112,14 @@ namespace ddcontact
     void
     write_final(const Results &results);
 
+    /** After load step @p step (from 1) of Loading/Steps, at the load
+     * parameter @p t: the contact profiles contact_<pair>_step<k>.csv and
+     * a row of summary.json's load_steps (per pair the force and peak
+     * pressure, with friction the tangential force, the stick zone's
+     * half-width and the energy dissipated in the step). Collective. */
+    void
+    record_load_step(const Results &results, unsigned int step, double t);
+
     /** The reaction of every Dirichlet id of every body in the summary
      * last written, one line each. */
     void
@@ -184,6 +192,7 @@ namespace ddcontact
     const bool    writes_files;
     std::ofstream statistics;
     Json          summary_json;
+    Json          load_steps = Json::array(); // record_load_step()
   };
 } // namespace ddcontact
 

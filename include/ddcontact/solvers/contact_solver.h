@@ -139,6 +139,17 @@ namespace ddcontact
     virtual void
     reinit_after_refinement();
 
+    /** A new load step (Loading/Steps) on the same meshes, whose bodies
+     * have new data (ElasticBody::set_load_time()): the solvers' data are
+     * set up again (as after a refinement, with the same points), warm
+     * started from the last iterate; with friction the last step's slip
+     * and traction become the history. */
+    virtual void
+    start_load_step()
+    {
+      reinit_after_refinement();
+    }
+
     /**
      * The augmented Lagrangian's outer step (UzawaLoop::update()) after
      * the iteration on the current multipliers has converged; on an update

@@ -122,6 +122,15 @@ namespace ddcontact
       return "monolithic";
     }
 
+    /** The converged slip and tangential traction of every node become
+     * the history (s_i,old, t_i,old) of the next step. */
+    void
+    start_load_step() override;
+
+    /** New points: no warm start from the last multipliers. */
+    void
+    reinit_after_refinement() override;
+
     /** The Newton steps of all solves; no body solves. */
     SolverCounts
     counts() const override;
@@ -239,7 +248,12 @@ namespace ddcontact
     std::vector<types::global_dof_index> offset;
     AffineConstraints<double>            constraints;
     std::vector<Penetration>             penetrations;
-    SparsityPattern                      sparsity;
+    PointVector                          last_slip, last_traction; // nodes
+    PointVector last_multipliers;   // p and t of the last solve, on the nodes
+    bool        warm_start = false; // from last_multipliers (a load step)
+    PointVector slip_history, traction_history;
+    std::vector<std::vector<double>> point_slip_history; // per pair
+    SparsityPattern                  sparsity;
   };
 } // namespace ddcontact
 
