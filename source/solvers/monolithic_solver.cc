@@ -605,6 +605,16 @@ namespace ddcontact
         for (unsigned int q = 0; q < result.slip.size(); ++q)
           result.slip_increment[q] -= point_slip_history[k][q];
       result.dissipation = dissipation[k];
+      for (unsigned int i = 0; i < n_nodes; ++i)
+        if (interface.shares(i)[0].pair == k)
+        {
+          const auto  &d = penetrations[i];
+          const double t = p[n_nodes + i];
+          result.nodal_t.push_back(t);
+          result.nodal_slip_increment.push_back(d.slip(u) - d.s_old);
+          result.nodal_bound.push_back(
+            d.law == FrictionLaw::tresca ? d.bound : d.bound * p[i]);
+        }
       for (unsigned int q = 0; q < pair.points().size(); ++q)
       {
         const double t = -minus_t[k][q];

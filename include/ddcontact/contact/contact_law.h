@@ -128,6 +128,10 @@ namespace ddcontact
       std::vector<double>    t, slip_increment, slip;
       std::vector<SlipState> state;
       double                 dissipation = 0;
+      /** The law holds node by node for the averaged slip (doc/friction.md,
+       * section 3): the multipliers t_i, the averaged slip increments
+       * ds_i and the bounds (g_i or mu_i p_i) of the pair's nodes. */
+      std::vector<double> nodal_t, nodal_slip_increment, nodal_bound;
     };
 
     void
