@@ -279,6 +279,14 @@ mpi_case_ "distributed mesh for a body on one process" "Parallel/Mesh" "$base" -
 # loaded in the other, but no component is given twice.
 case_ "Neumann on a Dirichlet component" "Body lower/Neumann: boundary id 2 has a Dirichlet condition on y" "$base" --set "Body lower/Boundary conditions/Neumann=2: 0; -p"
 case_ "roller with a load in the fixed direction" "Body lower/Neumann: boundary id 3 has a Dirichlet condition on x" "$base" --set "Body lower/Boundary conditions/Dirichlet=2: xy: 0; 0 | 3: x: 0; 0" --set "Body lower/Boundary conditions/Neumann=3: p; -p"
+# Friction (doc/friction.md): a bound that is negative or not finite on the
+# zone, a law the solver does not have, load steps with adaptive meshes.
+friction="$src/prm/friction_patch.prm"
+case_ "negative friction coefficient" "Contact pair S/Friction coefficient: -0.3" "$friction" --set "Contact pair S/Friction coefficient=-mu"
+case_ "friction bound NaN" "Contact pair S/Friction bound" "$friction" --set "Contact pair S/Friction=tresca" --set "Contact pair S/Friction bound=sqrt(-1)"
+case_ "friction with dd-newton" "Contact pair S/Friction: friction is solved by Contact solver/Solver = monolithic" "$friction" --set "Contact solver/Solver=dd-newton"
+case_ "load steps with adaptation" "Loading/Steps: 3 load steps" "$paper" --set "Loading/Steps=3"
+case_ "load parameter in the gap" "Contact pair S/Gap" "$friction" --set "Contact pair S/Gap=t"
 
 total=$(( $(grep -c -E '^(expect_code=[0-9]+ )?(mpi_|file_)?case_ ' "$0") + 3 ))  # and three checks of outputs
 total=$((total - skipped))
