@@ -22,26 +22,6 @@ namespace
   const double R = 50, E = 1000, nu = 0.3, mu = 0.3;
   const double E_star = 1. / (2. * (1. - nu * nu) / E);
 
-  /** The least-squares line through (x^2, y^2) over the given points
-   * crosses y = 0 at x^2 = c^2: c for y = K sqrt(c^2 - x^2). */
-  double
-  zero_of_root(const std::vector<double> &x, const std::vector<double> &y)
-  {
-    double s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
-    for (unsigned int q = 0; q < x.size(); ++q)
-    {
-      const double X = x[q] * x[q], Y = y[q] * y[q];
-      s0 += 1;
-      s1 += X;
-      s2 += X * X;
-      t0 += Y;
-      t1 += X * Y;
-    }
-    const double slope     = (s0 * t1 - s1 * t0) / (s0 * s2 - s1 * s1);
-    const double intercept = (t0 - slope * s1) / s0;
-    return std::sqrt(-intercept / slope);
-  }
-
   std::unique_ptr<Simulation>
   run(const std::string &source_dir, const std::vector<std::string> &settings)
   {
@@ -125,7 +105,7 @@ main(int argc, char **argv)
         deficit.push_back(mu * -state.sigma_n[q] - std::abs(state.t[q]));
         extent = std::max(extent, std::abs(pts[q].x[0]));
       }
-    const double c       = zero_of_root(x, deficit);
+    const double c       = root_profile_half_width(x, deficit);
     const double c_exact = a * std::sqrt(1 - Q / (mu * P));
     // The cells along the zone (both blocks' meshes match there).
     const double h =

@@ -35,6 +35,28 @@ namespace ddcontact
       simulation->run();
       return simulation;
     }
+    /** The half-width c of a profile y = K sqrt(c^2 - x^2) sampled at
+     * (@p x, @p y): y^2 is linear in x^2, so a least-squares line through
+     * (x^2, y^2) gives c^2 = -intercept/slope. */
+    inline double
+    root_profile_half_width(const std::vector<double> &x,
+                            const std::vector<double> &y)
+    {
+      double s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
+      for (unsigned int q = 0; q < x.size(); ++q)
+      {
+        const double X = x[q] * x[q], Y = y[q] * y[q];
+        s0 += 1;
+        s1 += X;
+        s2 += X * X;
+        t0 += Y;
+        t1 += X * Y;
+      }
+      const double slope     = (s0 * t1 - s1 * t0) / (s0 * s2 - s1 * s1);
+      const double intercept = (t0 - slope * s1) / s0;
+      return std::sqrt(-intercept / slope);
+    }
+
     /**
      * The Hertz half-width of the pressure profile of pair @p pair, centred
      * on x1 = 0: p^2 = p0^2 (1 - x1^2/a^2) is linear in x1^2, so a
@@ -46,23 +68,16 @@ namespace ddcontact
     inline double
     hertz_half_width(const Simulation &s, const unsigned int pair = 0)
     {
-      const auto  state = s.get_contact_solver().contact_state(pair);
-      const auto &pts   = s.get_contact_pairs()[pair]->points();
-      double      s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
+      const auto          state = s.get_contact_solver().contact_state(pair);
+      const auto         &pts   = s.get_contact_pairs()[pair]->points();
+      std::vector<double> x, p;
       for (unsigned int q = 0; q < pts.size(); ++q)
         if (state.sigma_n[q] < 0)
         {
-          const double X = pts[q].x[0] * pts[q].x[0];
-          const double Y = state.sigma_n[q] * state.sigma_n[q];
-          s0 += 1;
-          s1 += X;
-          s2 += X * X;
-          t0 += Y;
-          t1 += X * Y;
+          x.push_back(pts[q].x[0]);
+          p.push_back(state.sigma_n[q]);
         }
-      const double slope     = (s0 * t1 - s1 * t0) / (s0 * s2 - s1 * s1);
-      const double intercept = (t0 - slope * s1) / s0;
-      return std::sqrt(-intercept / slope);
+      return root_profile_half_width(x, p);
     }
 
     /** The magnitude of the contact force on body 1 of pair @p pair. */

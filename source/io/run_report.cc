@@ -235,6 +235,17 @@ namespace ddcontact
   }
 
   void
+  RunReport::add_friction(const ContactState &state, Json &json)
+  {
+    if (state.t.empty())
+      return;
+    // Along tau = n_1 turned by +90 degrees (of the first point).
+    json["tangential_force"]  = state.tangential_force;
+    json["stick_half_width"]  = state.stick_half_width;
+    json["dissipated_energy"] = state.dissipation;
+  }
+
+  void
   RunReport::record_load_step(const Results     &results,
                               const unsigned int step,
                               const double       t)
@@ -253,12 +264,7 @@ namespace ddcontact
       c["force"]        = Json::array({state.force_1[0], state.force_1[1]});
       c["max_pressure"] = state.max_pressure;
       c["half_width"]   = state.half_width;
-      if (!state.t.empty())
-      {
-        c["tangential_force"]  = state.tangential_force;
-        c["stick_half_width"]  = state.stick_half_width;
-        c["dissipated_energy"] = state.dissipation;
-      }
+      add_friction(state, c);
       pairs.push_back(c);
     }
     row["pairs"] = pairs;
@@ -494,14 +500,9 @@ namespace ddcontact
       c["half_width"]      = state.half_width;
       c["max_penetration"] = state.max_penetration;
       if (!state.t.empty())
-      {
-        // Along tau = n_1 turned by +90 degrees (of the first point).
-        c["tangential_force"]  = state.tangential_force;
-        c["stick_half_width"]  = state.stick_half_width;
-        c["dissipated_energy"] = state.dissipation;
         c["friction"] =
           selection_name(results.contact_pairs[p]->friction_law());
-      }
+      add_friction(state, c);
       // max_penetration is the largest u_1n + u_2n - f_n (at least 0), with
       // u_an the displacement of body a along its outward normal. The
       // approach is the largest |u_1n| + |u_2n|, the measure of the AL

@@ -176,6 +176,11 @@ namespace ddcontact
                 bool           judge_penetration,
                 Json          &json) const;
 
+    /** With friction, a pair's tangential force, stick half-width and
+     * dissipated energy into @p json. */
+    static void
+    add_friction(const ContactState &state, Json &json);
+
     /** The estimator's settings and results per adapted body. */
     void
     add_adaptation(const Results &results, Json &json) const;

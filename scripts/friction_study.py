@@ -1,0 +1,142 @@
+#!/usr/bin/env python3
+"""Friction study (doc/friction.md, section 5.3): prm/cattaneo_mindlin.prm
+on refined meshes. For each refinement it runs:
+- the shear in one step after the pressure (2 load steps);
+- the shear in nine steps (10 load steps);
+- the frictionless pressing of the same mesh (1 step, Friction = none, the
+  nodal penalty c = 1e-8 for exact contact), the time reference.
+
+It writes doc/friction.csv with, per run: the unknowns, the Newton steps of
+the normal step and the largest per shear step, the wall time, Q/(mu P), and
+c/a fitted from the stick zone against sqrt(1 - Q/(mu P)).
+
+    scripts/friction_study.py [build/ddcontact] [--large]   (a Release build)
+
+--large adds 256 x 128 cells refined twice toward the zone (the contact
+cells of refinement 7, about 1e5 unknowns; an hour with the monolithic
+solver).
+"""
+import csv
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ARGS = [a for a in sys.argv[1:] if not a.startswith("--")]
+EXE = ARGS[0] if ARGS else os.path.join(ROOT, "build", "ddcontact")
+SCENE = os.path.join(ROOT, "prm", "cattaneo_mindlin.prm")
+MU = 0.3
+
+
+def fit_zero_of_root(xs, ys):
+    """c of y = K sqrt(c^2 - x^2): the line through (x^2, y^2) at y = 0."""
+    n = len(xs)
+    X = [x * x for x in xs]
+    Y = [y * y for y in ys]
+    s1, s2 = sum(X), sum(v * v for v in X)
+    t0, t1 = sum(Y), sum(a * b for a, b in zip(X, Y))
+    slope = (n * t1 - s1 * t0) / (n * s2 - s1 * s1)
+    intercept = (t0 - slope * s1) / n
+    return math.sqrt(-intercept / slope)
+
+
+def run(level, steps, friction, out, subdivisions=8):
+    settings = [f"Body upper/Mesh/Box refinement={level}",
+                f"Body lower/Mesh/Box refinement={level}",
+                f"Body upper/Mesh/Subdivisions={subdivisions}, {subdivisions // 2}",
+                f"Body lower/Mesh/Subdivisions={subdivisions}, {subdivisions // 2}",
+                "Output/Write vtu=false"]
+    if not friction:
+        # The same nodal multipliers without friction: the monolithic
+        # solver takes exact contact on the nodes only with friction (else
+        # by Uzawa updates on the points), so the penalty c = 1e-8 stands in.
+        settings += ["Contact pair S/Friction=none", "Loading/Steps=1",
+                     "Contact pair S/Formulation=penalty",
+                     "Contact pair S/Penalty=1e-8",
+                     "Body upper/Boundary conditions/Dirichlet=3: xy: 0; -Delta"]
+    elif steps != 2:
+        # Pressed in the first step, sheared in the others.
+        n = steps
+        settings += [f"Loading/Steps={n}",
+                     "Body upper/Boundary conditions/Dirichlet=3: xy: "
+                     f"U*max(0, ({n}*t - 1)/{n - 1}); -Delta*min(1, {n}*t)"]
+    args = [EXE, "--output", out, SCENE]
+    for s in settings:
+        args += ["--set", s]
+    log = subprocess.run(args, capture_output=True, text=True, check=True).stdout
+    summary = json.load(open(os.path.join(out, "summary.json")))
+    # Newton steps per load step: the iterations printed under each step.
+    per_step, count = [], None
+    for line in log.splitlines():
+        if line.startswith("load step"):
+            if count is not None:
+                per_step.append(count)
+            count = 0
+        m = re.match(r"\s+Newton (\d+): \d+ active", line)
+        if m and "cycles" not in line:
+            count = (count or 0) + 1
+    per_step.append(count or 0)
+    # The last Newton line of a solve checks the settled set: not a step.
+    per_step = [max(0, c - 1) for c in per_step]
+    row = {"refinement": level, "subdivisions": subdivisions, "load_steps": steps if friction else 1,
+           "friction": "coulomb" if friction else "none",
+           "unknowns": sum(b["dofs"] for b in summary["bodies"]),
+           "newton_normal_step": per_step[0],
+           "newton_max_shear_step": max(per_step[1:]) if len(per_step) > 1 else 0,
+           "newton_all": summary["newton_steps"],
+           "wall_time_s": summary["wall_time_s"],
+           "contact_solve_s": summary["timings"].get("contact solve", 0.)}
+    if friction:
+        rows = list(csv.DictReader(open(os.path.join(out, "contact_S.csv"))))
+        x = [float(r["x1"]) for r in rows]
+        p = [float(r["pressure"]) for r in rows]
+        t = [float(r["tangential_traction"]) for r in rows]
+        w = [float(r["weight"]) for r in rows]
+        state = [int(r["state"]) for r in rows]
+        P = sum(a * b for a, b in zip(p, w))
+        Q = sum(a * b for a, b in zip(t, w))
+        a = fit_zero_of_root([xi for xi, pi in zip(x, p) if pi > 0],
+                             [pi for pi in p if pi > 0])
+        stick = [i for i in range(len(x)) if state[i] == 1]
+        c = fit_zero_of_root([x[i] for i in stick],
+                             [MU * p[i] - abs(t[i]) for i in stick])
+        theory = math.sqrt(1 - Q / (MU * P))
+        row.update({"Q_over_muP": Q / (MU * P), "a": a, "c_over_a": c / a,
+                    "c_over_a_theory": theory,
+                    "c_over_a_error": c / a / theory - 1})
+    return row
+
+
+def main():
+    rows = []
+    with tempfile.TemporaryDirectory() as work:
+        # Refined toward the zone on the scene's 8 x 4 cells, and a mesh of
+        # 256 x 128 cells refined twice (the contact cells of refinement 7,
+        # about 1e5 unknowns).
+        cases = [(8, 5), (8, 6), (8, 7), (8, 8), (8, 9)]
+        if "--large" in sys.argv:
+            cases.append((256, 2))
+        for subdivisions, level in cases:
+            for steps, friction in ((1, False), (2, True), (10, True)):
+                out = os.path.join(
+                    work, f"s{subdivisions}_r{level}_{steps}_{int(friction)}")
+                row = run(level, steps, friction, out, subdivisions)
+                print(row, flush=True)
+                rows.append(row)
+    keys = ["subdivisions", "refinement", "friction", "load_steps", "unknowns",
+            "newton_normal_step", "newton_max_shear_step", "newton_all",
+            "wall_time_s", "contact_solve_s", "Q_over_muP", "a", "c_over_a", "c_over_a_theory",
+            "c_over_a_error"]
+    with open(os.path.join(ROOT, "doc", "friction.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=keys)
+        writer.writeheader()
+        for r in rows:
+            writer.writerow({k: r.get(k, "") for k in keys})
+
+
+if __name__ == "__main__":
+    main()
