@@ -14,6 +14,14 @@ needs:
                       contact_<pair>_NNNN.csv in grey when they were written
   hertz_<pair>.json   per pair with the Hertz curve: the closed form used
                       (below); a stale one is removed when no curve is drawn
+                      With friction (the CSV's tangential_traction column)
+                      a third panel draws the tangential traction t, the
+                      Coulomb bound mu p where mu is a number or a constant,
+                      and, with the Hertz curve, Cattaneo-Mindlin's
+                      partial slip for the run's Q and P:
+                      q = mu p0/a (sqrt(a^2 - x^2) - sqrt(c^2 - x^2)),
+                      c = a sqrt(1 - |Q|/(mu P)) (doc/friction.md §5.2),
+                      recorded in mindlin_<pair>.json
   convergence.png     the DD iteration (history.csv): residual and increment
                       (log scale), contact force, largest penetration
   adaptation.png      adaptive runs (statistics.csv): cells and dofs per body,
@@ -177,6 +185,17 @@ class Run:
             if not re.search(r"_\d{4}$", name):
                 found.append(name)
         return found
+
+    def constant(self, text):
+        """A number, or the value of a name in the scene's Constants."""
+        value = number(text)
+        if value is not None:
+            return value
+        for item in self.parameters.get("Constants", "").split(","):
+            name, _, v = item.partition("=")
+            if name.strip() == (text or "").strip():
+                return number(v)
+        return None
 
     def material(self, body):
         e = number(self.parameters.get(f"Body {body}/Material/Young's modulus"))
@@ -505,7 +524,13 @@ class Plotter:
                   f"{'drawn' if info else 'not drawn'} ({why})")
             self.hertz_record(pair, info)
             inside, zoom = zoom_window(points)
-            fig, (ax, bx) = self.plt.subplots(2, 1, figsize=(8, 6.4), sharex=True)
+            friction = "tangential_traction" in points[0]
+            if friction:
+                fig, (ax, bx, cx) = self.plt.subplots(3, 1, figsize=(8, 9.2),
+                                                      sharex=True)
+            else:
+                fig, (ax, bx) = self.plt.subplots(2, 1, figsize=(8, 6.4),
+                                                  sharex=True)
             shown = [p for p in points if inside(p["x1"])]
             x = [p["x1"] for p in shown]
             iterates = sorted(glob.glob(self.run.path(f"contact_{pair}_[0-9][0-9][0-9][0-9].csv")))
@@ -554,12 +579,56 @@ class Plotter:
                     label="gap after deformation $f_n - u_{1n} - u_{2n}$ "
                           f"(smallest {min(current):.3g})")
             bx.axhline(0, color="k", linewidth=0.8)
-            bx.set_xlabel(f"$x_1$ along $S_1$ {self.length}")
+            if not friction:
+                bx.set_xlabel(f"$x_1$ along $S_1$ {self.length}")
             bx.set_ylabel(f"gap {self.length} (< 0: penetration)")
             bx.ticklabel_format(axis="y", style="sci", scilimits=(-3, 3))
             bx.grid(True, alpha=0.3)
             bx.legend(fontsize=8, loc="upper center")
+            if friction:
+                self.friction(pair, points, shown, info, cx)
             self.save(fig, f"contact_{pair}.png")
+
+    def friction(self, pair, points, shown, info, cx):
+        """The tangential traction along the zone, its Coulomb bound and,
+        on a Hertz contact, Cattaneo-Mindlin's closed form."""
+        x = [p["x1"] for p in shown]
+        t = [p["tangential_traction"] for p in shown]
+        law = self.run.parameters.get(f"Contact pair {pair}/Friction", "")
+        mu = self.run.constant(self.run.parameters.get(
+            f"Contact pair {pair}/Friction coefficient"))
+        Q = sum(p["tangential_traction"] * p["weight"] for p in points)
+        P = sum(p["pressure"] * p["weight"] for p in points)
+        cx.plot(x, t, "o-", markersize=2.5, linewidth=1.2, color="tab:green",
+                label=f"computed t (Q = {Q:.4g} {self.force})")
+        sign = 1 if Q >= 0 else -1
+        if law == "coulomb" and mu is not None:
+            cx.plot(x, [sign * mu * p["pressure"] for p in shown], ":",
+                    color="0.4", label=f"slip bound $\mu p$, $\mu$ = {mu:.3g}")
+        record = os.path.join(self.out, f"mindlin_{pair}.json")
+        if law == "coulomb" and mu and info and 0 < abs(Q) < mu * P:
+            a, p0, x0 = info["a"], info["p0"], info["x0"]
+            c = a * math.sqrt(1 - abs(Q) / (mu * P))
+            xs = [x0 - a + 2 * a * i / 400 for i in range(401)]
+            q = [sign * mu * p0 / a *
+                 (math.sqrt(max(0., a * a - (v - x0) ** 2)) -
+                  math.sqrt(max(0., c * c - (v - x0) ** 2))) for v in xs]
+            cx.plot(xs, q, "k--", linewidth=1.2,
+                    label=f"Cattaneo-Mindlin: c = {c:.4g}, c/a = {c / a:.4g}")
+            print(f"mindlin {pair}: c = {c:.6g}, c/a = {c / a:.6g} "
+                  f"(Q/(mu P) = {abs(Q) / (mu * P):.6g}, a = {a:.6g})")
+            with open(record, "w") as f:
+                json.dump({"pair": pair, "mu": mu, "Q": Q, "P": P, "a": a,
+                           "c": c, "c_over_a": c / a}, f, indent=2)
+                f.write("\n")
+            self.written.append(record)
+        elif os.path.isfile(record):
+            os.remove(record)
+        cx.axhline(0, color="k", linewidth=0.8)
+        cx.set_xlabel(f"$x_1$ along $S_1$ {self.length}")
+        cx.set_ylabel(f"tangential traction t {self.stress}")
+        cx.grid(True, alpha=0.3)
+        cx.legend(fontsize=8, loc="upper right")
 
     def hertz_record(self, pair, info):
         """Print the closed form used for a pair and write it to

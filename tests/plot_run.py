@@ -1,6 +1,7 @@
 """DESCRIPTION: scripts/plot_run.py draws the output directory of a run: a
 Hertz run (VTU written) gives contact_S.png with the Hertz curve of a whole
-model, convergence.png and mesh.png (read from the VTU); the Hertz half
+model, convergence.png and mesh.png (read from the VTU); a Cattaneo-Mindlin
+run adds the tangential traction with its partial-slip curve; the Hertz half
 model prm/hertz_force.prm is found to be a half model and its curve takes
 the whole force 2P (a and p0 of hertz_S.json within 1 % of the closed form
 at P = 2 q R, a = 0.149, p0 = 8.18), and --symmetry full gives the curve
@@ -98,6 +99,26 @@ def main():
     check(used.get("model") == "full",
           f"Hertz run: taken as a whole model ({used.get('model')}: "
           f"{used.get('model_reason')})")
+
+    check(not os.path.exists(os.path.join(pictures, "mindlin_S.json")),
+          "Hertz run (frictionless): no Cattaneo-Mindlin curve")
+
+    # 1a. Cattaneo-Mindlin (Hertz's blocks, Coulomb, pressed then sheared):
+    #     the third panel with t and the partial-slip closed form, c/a =
+    #     sqrt(1 - Q/(mu P)) at the run's own Q and P, in (0, 1).
+    mindlin = os.path.join(work, "cattaneo_mindlin")
+    run_scene(exe, os.path.join(source, "prm", "cattaneo_mindlin.prm"), mindlin,
+              ["Body upper/Mesh/Box refinement=5",
+               "Body lower/Mesh/Box refinement=5", "Output/Write vtu=false"])
+    result = subprocess.run(plot + [mindlin], capture_output=True, text=True)
+    print(result.stdout + result.stderr)
+    check(result.returncode == 0 and is_png(os.path.join(mindlin, "contact_S.png")),
+          "plot_run.py on the Cattaneo-Mindlin run: contact_S.png written")
+    used = read_json(os.path.join(mindlin, "mindlin_S.json"))
+    ratio = used.get("c_over_a", float("nan"))
+    expected = math.sqrt(1 - abs(used.get("Q", 0)) / (0.3 * used.get("P", 1)))
+    check(0 < ratio < 1 and abs(ratio - expected) < 1e-12 and used.get("mu") == 0.3,
+          f"Cattaneo-Mindlin curve drawn with mu = 0.3 and c/a = {ratio:.4g}")
 
     # 1b. The Hertz half model pressed by a force (quarter cylinder R = 5 on
     #     the right half of a block, rollers u_1 = 0 on x1 = 0): the closed
