@@ -61,12 +61,17 @@ namespace ddcontact
   }
 
   std::vector<std::string>
-  ContactZoneWriter::field_names(const bool with_multipliers)
+  ContactZoneWriter::field_names(const bool with_multipliers,
+                                 const bool with_friction)
   {
     std::vector<std::string> names = {
       "pressure", "gap", "penetration", "u_1n", "u_2n", "active"};
     if (with_multipliers)
       names.emplace_back("multiplier");
+    if (with_friction)
+      for (const auto *name :
+           {"tangential_traction", "slip_increment", "slip", "slip_state"})
+        names.emplace_back(name);
     names.insert(names.end(), 2, "displacement");
     return names;
   }
@@ -82,7 +87,9 @@ namespace ddcontact
            ExcDimensionMismatch(multipliers.size(), points.size()));
     const auto        &body_1   = pair.get_body_1();
     const auto        &u_1      = body_1.get_solution();
-    const unsigned int n_fields = field_names(!multipliers.empty()).size();
+    const bool         friction = !state.t.empty();
+    const unsigned int n_fields =
+      field_names(!multipliers.empty(), friction).size();
 
     // The fields of point q, in the order of field_names().
     const auto fields = [&](const unsigned int q)
@@ -96,6 +103,13 @@ namespace ddcontact
                                state.sigma_n[q] < 0 ? 1. : 0.};
       if (!multipliers.empty())
         v.push_back(-multipliers[q]);
+      if (friction)
+      {
+        v.push_back(state.t[q]);
+        v.push_back(state.slip_increment[q]);
+        v.push_back(state.slip[q]);
+        v.push_back(static_cast<double>(state.slip_state[q]));
+      }
       Tensor<1, 2> u;
       for (unsigned int i = 0; i < p.values_1.size(); ++i)
         u[body_1.get_fe().system_to_component_index(i).first] +=
@@ -133,7 +147,7 @@ namespace ddcontact
                                 const ContactState        &state,
                                 const std::vector<double> &multipliers)
   {
-    const auto names = field_names(!multipliers.empty());
+    const auto names = field_names(!multipliers.empty(), !state.t.empty());
     const std::vector<
       std::tuple<unsigned int,
                  unsigned int,

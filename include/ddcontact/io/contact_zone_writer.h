@@ -64,7 +64,7 @@ namespace ddcontact
 
     /** The names of the fields of build_patches(), in their order. */
     static std::vector<std::string>
-    field_names(bool with_multipliers);
+    field_names(bool with_multipliers, bool with_friction = false);
 
   private:
     const std::string directory;
