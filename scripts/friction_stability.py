@@ -23,6 +23,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from friction_study import fit_zero_of_root  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXE = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "ddcontact")
 PATCH = os.path.join(ROOT, "prm", "friction_patch.prm")
@@ -117,16 +120,8 @@ def cm_case(work, name, mu, lower_E=1000, U=0.0015):
                     "verdict": "ok" if abs(Q / (mu * P) - 1) < 1e-8 else "WRONG"})
         return row
     # c/a from the stick zone, as tests/cattaneo_mindlin.cc.
-    def half_width(xs, ys):
-        n = len(xs)
-        X = [v * v for v in xs]
-        Y = [v * v for v in ys]
-        s1, s2 = sum(X), sum(v * v for v in X)
-        t0, t1 = sum(Y), sum(a * b for a, b in zip(X, Y))
-        slope = (n * t1 - s1 * t0) / (n * s2 - s1 * s1)
-        return math.sqrt(-((t0 - slope * s1) / n) / slope)
-    a = half_width([xi for xi, pi in zip(x, p) if pi > 0], [pi for pi in p if pi > 0])
-    c = half_width([x[i] for i in stick], [mu * p[i] - abs(t[i]) for i in stick])
+    a = fit_zero_of_root([xi for xi, pi in zip(x, p) if pi > 0], [pi for pi in p if pi > 0])
+    c = fit_zero_of_root([x[i] for i in stick], [mu * p[i] - abs(t[i]) for i in stick])
     theory = math.sqrt(1 - Q / (mu * P))
     h = 20 / 8 / 2 ** 6  # the zone's cells
     row.update({"reference": "c/a = sqrt(1 - Q/(mu P)), to half a cell",
