@@ -15,7 +15,6 @@ Writes doc/friction-stability.csv.
 
     scripts/friction_stability.py [build/ddcontact]   (a Release build)
 """
-import csv
 import json
 import math
 import os
@@ -24,7 +23,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from friction_study import fit_zero_of_root  # noqa: E402
+from friction_study import fit_zero_of_root, read_profile, write_csv  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXE = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "ddcontact")
@@ -50,11 +49,6 @@ def run(scene, settings, out):
     return done.returncode, summary, error[-1] if error else ""
 
 
-def profile(out):
-    rows = list(csv.DictReader(open(os.path.join(out, "contact_S.csv"))))
-    return {k: [float(r[k]) for r in rows] for k in rows[0]}
-
-
 def patch_case(work, name, law, bound, c, U):
     theta = c * H / E
     P = DELTA / (2 * H / M + theta)
@@ -73,7 +67,7 @@ def patch_case(work, name, law, bound, c, U):
            "newton_steps": summary["newton_steps"] if summary else "",
            "message": error if code else ""}
     if code == 0:
-        f = profile(out)
+        f = read_profile(out)
         t_error = max(abs(t - S) for t in f["tangential_traction"]) / abs(S) if S else \
             max(abs(t) for t in f["tangential_traction"])
         p_error = max(abs(p - P) for p in f["pressure"]) / P
@@ -99,7 +93,7 @@ def cm_case(work, name, mu, lower_E=1000, U=0.0015):
     if code != 0:
         row["verdict"] = "refused" if code in (1, 4) else "FAIL"
         return row
-    f = profile(out)
+    f = read_profile(out)
     x, p, t, w, st = (f["x1"], f["pressure"], f["tangential_traction"],
                       f["weight"], f["state"])
     P = sum(a * b for a, b in zip(p, w))
@@ -152,11 +146,7 @@ def main():
                                          "error", "Q_over_muP", "message")}, flush=True)
     keys = ["case", "scene", "law", "bound", "penalty_c", "exit", "newton_steps",
             "reference", "Q_over_muP", "error", "law_excess", "verdict", "message"]
-    with open(os.path.join(ROOT, "doc", "friction-stability.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=keys)
-        writer.writeheader()
-        for r in rows:
-            writer.writerow({k: r.get(k, "") for k in keys})
+    write_csv("friction-stability.csv", keys, rows)
 
 
 if __name__ == "__main__":

@@ -44,6 +44,21 @@ def fit_zero_of_root(xs, ys):
     return math.sqrt(-intercept / slope)
 
 
+def read_profile(out):
+    """contact_S.csv of a run: its columns as lists of numbers."""
+    rows = list(csv.DictReader(open(os.path.join(out, "contact_S.csv"))))
+    return {k: [float(r[k]) for r in rows] for k in rows[0]}
+
+
+def write_csv(name, keys, rows):
+    """The rows (dicts) with the columns keys into doc/<name>."""
+    with open(os.path.join(ROOT, "doc", name), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=keys)
+        writer.writeheader()
+        for r in rows:
+            writer.writerow({k: r.get(k, "") for k in keys})
+
+
 def run(level, steps, friction, out, subdivisions=8):
     settings = [f"Body upper/Mesh/Box refinement={level}",
                 f"Body lower/Mesh/Box refinement={level}",
@@ -91,12 +106,9 @@ def run(level, steps, friction, out, subdivisions=8):
            "wall_time_s": summary["wall_time_s"],
            "contact_solve_s": summary["timings"].get("contact solve", 0.)}
     if friction:
-        rows = list(csv.DictReader(open(os.path.join(out, "contact_S.csv"))))
-        x = [float(r["x1"]) for r in rows]
-        p = [float(r["pressure"]) for r in rows]
-        t = [float(r["tangential_traction"]) for r in rows]
-        w = [float(r["weight"]) for r in rows]
-        state = [int(r["state"]) for r in rows]
+        f = read_profile(out)
+        x, p, t, w = f["x1"], f["pressure"], f["tangential_traction"], f["weight"]
+        state = [int(s) for s in f["state"]]
         P = sum(a * b for a, b in zip(p, w))
         Q = sum(a * b for a, b in zip(t, w))
         a = fit_zero_of_root([xi for xi, pi in zip(x, p) if pi > 0],
@@ -131,11 +143,7 @@ def main():
             "newton_normal_step", "newton_max_shear_step", "newton_all",
             "wall_time_s", "contact_solve_s", "Q_over_muP", "a", "c_over_a", "c_over_a_theory",
             "c_over_a_error"]
-    with open(os.path.join(ROOT, "doc", "friction.csv"), "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=keys)
-        writer.writeheader()
-        for r in rows:
-            writer.writerow({k: r.get(k, "") for k in keys})
+    write_csv("friction.csv", keys, rows)
 
 
 if __name__ == "__main__":

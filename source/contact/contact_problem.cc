@@ -192,6 +192,28 @@ namespace ddcontact
     return by_body;
   }
 
+  namespace
+  {
+    /** Half the extent along the tangent of S of the points @p q of
+     * @p pair for which @p selected(q) holds (0 for none): the half-width
+     * of the active set or of the stick zone. */
+    template <typename Selected>
+    double
+    half_extent(const ContactPair &pair, const Selected &selected)
+    {
+      double lo = std::numeric_limits<double>::max(), hi = -lo;
+      for (unsigned int q = 0; q < pair.points().size(); ++q)
+        if (selected(q))
+        {
+          const auto  &pt = pair.points()[q];
+          const double s  = pt.x[0] * pt.normal[1] - pt.x[1] * pt.normal[0];
+          lo              = std::min(lo, s);
+          hi              = std::max(hi, s);
+        }
+      return (hi >= lo) ? 0.5 * (hi - lo) : 0.;
+    }
+  } // namespace
+
   ContactState
   ContactProblem::contact_state(const unsigned int p, const Iterate &u) const
   {
@@ -222,34 +244,23 @@ namespace ddcontact
       // Along tau of the first point (a straight zone's one tangent).
       const auto &n0         = pair.points().front().normal;
       state.tangential_force = forces.first * Tensor<1, 2>({-n0[1], n0[0]});
-      double lo = std::numeric_limits<double>::max(), hi = -lo;
-      for (unsigned int q = 0; q < friction.state.size(); ++q)
-        if (friction.state[q] == ContactLaw::SlipState::stick)
-        {
-          const auto  &pt = pair.points()[q];
-          const double s  = pt.x[0] * pt.normal[1] - pt.x[1] * pt.normal[0];
-          lo              = std::min(lo, s);
-          hi              = std::max(hi, s);
-        }
-      state.stick_half_width = (hi >= lo) ? 0.5 * (hi - lo) : 0.;
+      state.stick_half_width =
+        half_extent(pair,
+                    [&](const unsigned int q) {
+                      return friction.state[q] == ContactLaw::SlipState::stick;
+                    });
     }
-    double lo = std::numeric_limits<double>::max(), hi = -lo;
     for (unsigned int q = 0; q < state.sigma_n.size(); ++q)
     {
       const auto &pt     = pair.points()[q];
       state.max_pressure = std::max(state.max_pressure, -state.sigma_n[q]);
       if (state.sigma_n[q] < 0)
-      {
         state.contact_length += pt.JxW;
-        // Position along the tangent of S, for the half-width.
-        const double s = pt.x[0] * pt.normal[1] - pt.x[1] * pt.normal[0];
-        lo             = std::min(lo, s);
-        hi             = std::max(hi, s);
-      }
       state.max_penetration =
         std::max(state.max_penetration, state.u_1n[q] + state.u_2n[q] - pt.gap);
     }
-    state.half_width = (hi >= lo) ? 0.5 * (hi - lo) : 0.;
+    state.half_width = half_extent(
+      pair, [&](const unsigned int q) { return state.sigma_n[q] < 0; });
     // The peak is that of the field written to the CSV and the VTU, at the
     // contact points; the largest nodal multiplier (exact contact, Contact
     // pressure = nodes) lies at a node of S_1 and is kept beside it.

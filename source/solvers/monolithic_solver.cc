@@ -44,8 +44,10 @@ namespace ddcontact
   void
   MonolithicContactSolver::start_load_step()
   {
-    slip_history     = last_slip;
-    traction_history = last_traction;
+    // The last solve's slips, and its tractions (after the pressures).
+    slip_history = last_slip;
+    traction_history.assign(last_multipliers.begin() + last_slip.size(),
+                            last_multipliers.end());
     point_slip_history.assign(problem.get_pairs().size(), {});
     for (unsigned int k = 0; k < point_slip_history.size(); ++k)
       point_slip_history[k] = problem.law(k).get_friction().slip;
@@ -265,7 +267,7 @@ namespace ddcontact
     for (unsigned int i = 0; i < active.size(); ++i)
     {
       const auto &d = penetrations[i];
-      if (!(d(u) + (d.scale - d.theta) * p[i] > 0))
+      if (!d.closed(u, p[i]))
         continue;
       active[i] = closed;
       if (d.law == FrictionLaw::none || stick)
@@ -412,9 +414,8 @@ namespace ddcontact
         const double t = p[penetrations.size() + i];
         for (unsigned int j = 0; j < d.h.size(); ++j)
           local(j) += d.weight * t * d.h[j];
-        const bool is_open = !(d(u) + (d.scale - d.theta) * p[i] > 0);
-        double     law     = t;
-        if (!is_open && d.law != FrictionLaw::none)
+        double law = t;
+        if (d.closed(u, p[i]) && d.law != FrictionLaw::none)
         {
           const auto [trial, bound] = trial_traction(i, u, p);
           law                       = t - std::clamp(trial, -bound, bound);
@@ -578,15 +579,13 @@ namespace ddcontact
       interface.normal_stresses(PointVector(p.begin() + n_nodes, p.end()));
     std::vector<double> dissipation(pairs.size(), 0.);
     last_slip.resize(n_nodes);
-    last_traction.resize(n_nodes);
     for (unsigned int i = 0; i < n_nodes; ++i)
     {
-      const auto  &d   = penetrations[i];
-      const double t   = p[n_nodes + i];
-      last_slip[i]     = d.slip(u);
-      last_traction[i] = t;
+      const auto  &d = penetrations[i];
+      const double t = p[n_nodes + i];
+      last_slip[i]   = d.slip(u);
       dissipation[interface.shares(i)[0].pair] +=
-        d.weight * t * (d.slip(u) - d.s_old - d.theta * (t - d.t_old));
+        d.weight * t * (last_slip[i] - d.s_old - d.theta * (t - d.t_old));
     }
     for (unsigned int k = 0; k < pairs.size(); ++k)
     {
@@ -611,7 +610,7 @@ namespace ddcontact
           const auto  &d = penetrations[i];
           const double t = p[n_nodes + i];
           result.nodal_t.push_back(t);
-          result.nodal_slip_increment.push_back(d.slip(u) - d.s_old);
+          result.nodal_slip_increment.push_back(last_slip[i] - d.s_old);
           result.nodal_bound.push_back(
             d.law == FrictionLaw::tresca ? d.bound : d.bound * p[i]);
         }

@@ -164,6 +164,14 @@ namespace ddcontact
 
       double
       slip(const Vector<double> &u) const;
+
+      /** Whether the node is in contact at (@p u, @p p): d + (c - theta) p
+       * > 0, the active set of the normal law. */
+      bool
+      closed(const Vector<double> &u, const double p) const
+      {
+        return (*this)(u) + (scale - theta) * p > 0;
+      }
     };
 
     /** The state of a node in the Newton step: no contact, contact
@@ -248,7 +256,7 @@ namespace ddcontact
     std::vector<types::global_dof_index> offset;
     AffineConstraints<double>            constraints;
     std::vector<Penetration>             penetrations;
-    PointVector                          last_slip, last_traction; // nodes
+    PointVector                          last_slip; // s_i(u) of the last solve
     PointVector last_multipliers;   // p and t of the last solve, on the nodes
     bool        warm_start = false; // from last_multipliers (a load step)
     PointVector slip_history, traction_history;
