@@ -1,20 +1,25 @@
 #!/usr/bin/env python3
 """Friction study (doc/friction.md, section 5.3): prm/cattaneo_mindlin.prm
-on refined meshes. For each refinement it runs:
+on refined meshes. For each refinement and solver (monolithic, dd-newton)
+it runs:
 - the shear in one step after the pressure (2 load steps);
 - the shear in nine steps (10 load steps);
-- the frictionless pressing of the same mesh (1 step, Friction = none, the
-  nodal penalty c = 1e-8 for exact contact), the time reference.
+- the frictionless pressing of the same mesh (1 step, Friction = none), the
+  time reference. dd-newton takes its exact contact; the monolithic solver
+  takes exact contact on the nodes only with friction, so the nodal penalty
+  c = 1e-8 stands in.
 
 It writes doc/friction.csv with, per run: the unknowns, the Newton steps of
-the normal step and the largest per shear step, the wall time, Q/(mu P), and
-c/a fitted from the stick zone against sqrt(1 - Q/(mu P)).
+the normal step and the largest per shear step, the sets of body solves
+(dd-newton), the wall time, Q/(mu P), and c/a fitted from the stick zone
+against sqrt(1 - Q/(mu P)).
 
-    scripts/friction_study.py [build/ddcontact] [--large]   (a Release build)
+    scripts/friction_study.py [build/ddcontact] [--large] [--dd-newton-only]
+                                                         (a Release build)
 
 --large adds 256 x 128 cells refined twice toward the zone (the contact
 cells of refinement 7, about 1e5 unknowns; an hour with the monolithic
-solver).
+solver). --dd-newton-only leaves the monolithic runs out.
 """
 import csv
 import json
@@ -59,8 +64,9 @@ def write_csv(name, keys, rows):
             writer.writerow({k: r.get(k, "") for k in keys})
 
 
-def run(level, steps, friction, out, subdivisions=8):
-    settings = [f"Body upper/Mesh/Box refinement={level}",
+def run(level, steps, friction, out, subdivisions=8, solver="monolithic"):
+    settings = [f"Contact solver/Solver={solver}",
+                f"Body upper/Mesh/Box refinement={level}",
                 f"Body lower/Mesh/Box refinement={level}",
                 f"Body upper/Mesh/Subdivisions={subdivisions}, {subdivisions // 2}",
                 f"Body lower/Mesh/Subdivisions={subdivisions}, {subdivisions // 2}",
@@ -70,9 +76,10 @@ def run(level, steps, friction, out, subdivisions=8):
         # solver takes exact contact on the nodes only with friction (else
         # by Uzawa updates on the points), so the penalty c = 1e-8 stands in.
         settings += ["Contact pair S/Friction=none", "Loading/Steps=1",
-                     "Contact pair S/Formulation=penalty",
-                     "Contact pair S/Penalty=1e-8",
                      "Body upper/Boundary conditions/Dirichlet=3: xy: 0; -Delta"]
+        if solver == "monolithic":
+            settings += ["Contact pair S/Formulation=penalty",
+                         "Contact pair S/Penalty=1e-8"]
     elif steps != 2:
         # Pressed in the first step, sheared in the others.
         n = steps
@@ -91,18 +98,24 @@ def run(level, steps, friction, out, subdivisions=8):
             if count is not None:
                 per_step.append(count)
             count = 0
-        m = re.match(r"\s+Newton (\d+): \d+ active", line)
+        # monolithic: "Newton 3: 40 active ..."; dd-newton: "Newton   3
+        # residual ...".
+        m = re.match(r"\s+Newton\s+(\d+)(: \d+ active|\s+residual)", line)
         if m and "cycles" not in line:
             count = (count or 0) + 1
     per_step.append(count or 0)
-    # The last Newton line of a solve checks the settled set: not a step.
-    per_step = [max(0, c - 1) for c in per_step]
-    row = {"refinement": level, "subdivisions": subdivisions, "load_steps": steps if friction else 1,
+    # The monolithic solver's last Newton line of a solve checks the
+    # settled set: not a step.
+    if solver == "monolithic":
+        per_step = [max(0, c - 1) for c in per_step]
+    row = {"solver": solver, "refinement": level, "subdivisions": subdivisions,
+           "load_steps": steps if friction else 1,
            "friction": "coulomb" if friction else "none",
            "unknowns": sum(b["dofs"] for b in summary["bodies"]),
            "newton_normal_step": per_step[0],
            "newton_max_shear_step": max(per_step[1:]) if len(per_step) > 1 else 0,
            "newton_all": summary["newton_steps"],
+           "body_solve_sets": summary.get("dd_iterations", 0),
            "wall_time_s": summary["wall_time_s"],
            "contact_solve_s": summary["timings"].get("contact solve", 0.)}
     if friction:
@@ -132,15 +145,19 @@ def main():
         cases = [(8, 5), (8, 6), (8, 7), (8, 8), (8, 9)]
         if "--large" in sys.argv:
             cases.append((256, 2))
+        solvers = ["dd-newton"] if "--dd-newton-only" in sys.argv \
+            else ["monolithic", "dd-newton"]
         for subdivisions, level in cases:
-            for steps, friction in ((1, False), (2, True), (10, True)):
-                out = os.path.join(
-                    work, f"s{subdivisions}_r{level}_{steps}_{int(friction)}")
-                row = run(level, steps, friction, out, subdivisions)
-                print(row, flush=True)
-                rows.append(row)
-    keys = ["subdivisions", "refinement", "friction", "load_steps", "unknowns",
-            "newton_normal_step", "newton_max_shear_step", "newton_all",
+            for solver in solvers:
+                for steps, friction in ((1, False), (2, True), (10, True)):
+                    out = os.path.join(
+                        work,
+                        f"{solver}_s{subdivisions}_r{level}_{steps}_{int(friction)}")
+                    row = run(level, steps, friction, out, subdivisions, solver)
+                    print(row, flush=True)
+                    rows.append(row)
+    keys = ["solver", "subdivisions", "refinement", "friction", "load_steps", "unknowns",
+            "newton_normal_step", "newton_max_shear_step", "newton_all", "body_solve_sets",
             "wall_time_s", "contact_solve_s", "Q_over_muP", "a", "c_over_a", "c_over_a_theory",
             "c_over_a_error"]
     write_csv("friction.csv", keys, rows)

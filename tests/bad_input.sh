@@ -284,7 +284,7 @@ case_ "roller with a load in the fixed direction" "Body lower/Neumann: boundary 
 friction="$src/prm/friction_patch.prm"
 case_ "negative friction coefficient" "Contact pair S/Friction coefficient: -0.3" "$friction" --set "Contact pair S/Friction coefficient=-mu"
 case_ "friction bound NaN" "Contact pair S/Friction bound" "$friction" --set "Contact pair S/Friction=tresca" --set "Contact pair S/Friction bound=sqrt(-1)"
-case_ "friction with dd-newton" "Contact pair S/Friction: friction is solved by Contact solver/Solver = monolithic" "$friction" --set "Contact solver/Solver=dd-newton"
+case_ "friction with the paper's dd" "Contact pair S/Friction: friction is solved by Contact solver/Solver = dd-newton or monolithic" "$friction" --set "Contact solver/Solver=dd"
 case_ "load steps with adaptation" "Loading/Steps: 3 load steps" "$paper" --set "Loading/Steps=3"
 case_ "load parameter in the gap" "Contact pair S/Gap" "$friction" --set "Contact pair S/Gap=t"
 

@@ -1,11 +1,12 @@
 // DESCRIPTION: Cattaneo-Mindlin partial slip (prm/cattaneo_mindlin.prm,
-// Coulomb, exact contact, monolithic): the Hertz blocks pressed first, then
-// sheared in a second load step. The normal solution stays Hertz's and
-// does not change with the shear (elastically similar bodies); the stick
-// zone's half-width c gives c/a = sqrt(1 - Q/(mu P)) to within half a cell
-// on two meshes; |t| <= mu p, the slip goes along t and the dissipation is
+// Coulomb, exact contact, monolithic and dd-newton): the Hertz blocks
+// pressed first, then sheared in a second load step. The normal solution stays
+// Hertz's and does not change with the shear (elastically similar bodies); the
+// stick zone's half-width c gives c/a = sqrt(1 - Q/(mu P)) to within half a
+// cell on two meshes; |t| <= mu p, the slip goes along t and the dissipation is
 // >= 0 at every point; loading in proportion (shear and pressure growing
-// together) sticks nearly everywhere instead (path dependence)
+// together) sticks nearly everywhere instead (path dependence); dd-newton's
+// body-by-body solution agrees with the monolithic one at every point
 #include <ddcontact/simulation.h>
 
 #include "scene_tools.h"
@@ -22,12 +23,51 @@ namespace
   const double R = 50, E = 1000, nu = 0.3, mu = 0.3;
   const double E_star = 1. / (2. * (1. - nu * nu) / E);
 
+  /** The scene with @p settings, solved by @p solver. */
   std::unique_ptr<Simulation>
-  run(const std::string &source_dir, const std::vector<std::string> &settings)
+  run(const std::string              &source_dir,
+      const std::string              &solver,
+      const std::vector<std::string> &settings)
   {
+    auto all = settings;
+    all.push_back("Contact solver/Solver=" + solver);
     return run_scene(source_dir + "/prm/cattaneo_mindlin.prm",
                      {"Output directory=cattaneo_mindlin_output"},
-                     settings);
+                     all);
+  }
+
+  /** The largest difference of p and of t at the points between the two
+   * solvers' runs, relative to the peak pressure. */
+  void
+  check_agreement(const Simulation  &monolithic,
+                  const Simulation  &dd_newton,
+                  const std::string &name)
+  {
+    const auto a = monolithic.get_contact_solver().contact_state(0);
+    const auto b = dd_newton.get_contact_solver().contact_state(0);
+    check(a.sigma_n.size() == b.sigma_n.size(),
+          name + ": both solvers on the same points");
+    double p_difference = 0, t_difference = 0;
+    for (unsigned int q = 0; q < a.sigma_n.size(); ++q)
+    {
+      p_difference =
+        std::max(p_difference, std::abs(a.sigma_n[q] - b.sigma_n[q]));
+      t_difference = std::max(t_difference, std::abs(a.t[q] - b.t[q]));
+    }
+    std::cout << name << ": dd-newton against monolithic, largest difference "
+              << "of p " << p_difference / a.max_pressure << ", of t "
+              << t_difference / a.max_pressure << " (of the peak pressure)"
+              << std::endl;
+    // Both solve the same discrete problem; dd-newton stops at Tolerance
+    // (1e-10) of the data, which bounds the multipliers' error by about
+    // 1e-10 times the condition of S on the zone (~ a/h, the zone's
+    // elements): 1e-6 of the peak leaves a margin of 100.
+    check(name + ": dd-newton's p agrees with the monolithic solver's",
+          p_difference / a.max_pressure,
+          1e-6);
+    check(name + ": dd-newton's t agrees with the monolithic solver's",
+          t_difference / a.max_pressure,
+          1e-6);
   }
 
   /** The invariants of the law at every node of the last step (the law
@@ -56,29 +96,20 @@ namespace
     for (unsigned int q = 0; q < points.t.size(); ++q)
       excess = std::max(
         excess, (std::abs(points.t[q]) + mu * points.sigma_n[q]) / t_scale);
-    // Round-off of the direct solve: the states hold exactly.
+    // Round-off of the direct solve (monolithic), or a sticking node's
+    // slip of the order of dd-newton's Tolerance (1e-10 of the data)
+    // against its t: the states hold exactly.
     check(name + ": |t| <= mu p at every node and point", excess, 1e-9);
     check(name + ": the slip goes along t at every node", against, 1e-9);
   }
-} // namespace
 
-int
-main(int argc, char **argv)
-{
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::string                source_dir = (argc > 1) ? argv[1] : "..";
-
-  // 1. Normal load, then shear (two load steps), on two meshes.
-  for (const unsigned int level : {6u, 7u})
+  /** Part 1's checks of the run @p sim (normal load, then shear). */
+  void
+  check_partial_slip(const Simulation &sim, const std::string &name)
   {
-    const std::string levels = std::to_string(level);
-    const std::string name   = "refinement " + levels;
-    const auto        sim    = run(source_dir,
-                         {"Body upper/Mesh/Box refinement=" + levels,
-                                    "Body lower/Mesh/Box refinement=" + levels});
-    const auto        state  = sim->get_contact_solver().contact_state(0);
-    const auto       &pts    = sim->get_contact_pairs()[0]->points();
-    const auto       &steps  = sim->summary().at("load_steps");
+    const auto  state = sim.get_contact_solver().contact_state(0);
+    const auto &pts   = sim.get_contact_pairs()[0]->points();
+    const auto &steps = sim.summary().at("load_steps");
 
     // The force on the upper body: P up, and -Q along tau = e_1 (the
     // traction -t tau, t > 0 against the upper body's slip along e_1).
@@ -92,7 +123,7 @@ main(int argc, char **argv)
 
     // Hertz at the computed force; a from the whole profile.
     const double a_hertz = std::sqrt(4. * P * R / (M_PI * E_star));
-    const double a       = hertz_half_width(*sim);
+    const double a       = hertz_half_width(sim);
 
     // The stick zone: mu p - |t| = mu p0/a sqrt(c^2 - x^2) there
     // (Mindlin), fitted over the points that stick; and its extent.
@@ -109,12 +140,12 @@ main(int argc, char **argv)
     const double c_exact = a * std::sqrt(1 - Q / (mu * P));
     // The cells along the zone (both blocks' meshes match there).
     const double h =
-      sim->get_bodies()[0]->get_mesh().min_cell_diameter() / std::sqrt(2.);
+      sim.get_bodies()[0]->get_mesh().min_cell_diameter() / std::sqrt(2.);
     std::cout << name << ": P " << P << ", Q/(mu P) " << Q / (mu * P) << ", a "
               << a << " (Hertz " << a_hertz << "), a/h " << a / h << "; c/a "
               << c / a << " fitted, " << extent / a
               << " from the extent, against " << c_exact / a << "; "
-              << sim->summary().at("newton_steps") << " Newton steps"
+              << sim.summary().at("newton_steps") << " Newton steps"
               << std::endl;
 
     check(name + ": a against Hertz's", relative(a, a_hertz), 0.02);
@@ -137,18 +168,43 @@ main(int argc, char **argv)
     check(name + ": c/a from the extent of the stick points, to a cell",
           std::abs(extent - c_exact) / a,
           h / a);
-    check_invariants(*sim, name);
+    check_invariants(sim, name);
     check(steps[1].at("pairs")[0].at("dissipated_energy").get<double>() > 0,
           name + ": the shear step dissipates");
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string                source_dir = (argc > 1) ? argv[1] : "..";
+
+  // 1. Normal load, then shear (two load steps), on two meshes, by both
+  //    solvers.
+  for (const unsigned int level : {6u, 7u})
+  {
+    const std::string              levels = std::to_string(level);
+    const std::vector<std::string> mesh   = {
+        "Body upper/Mesh/Box refinement=" + levels,
+        "Body lower/Mesh/Box refinement=" + levels};
+    const auto monolithic = run(source_dir, "monolithic", mesh);
+    const auto dd_newton  = run(source_dir, "dd-newton", mesh);
+    check_partial_slip(*monolithic, "monolithic, refinement " + levels);
+    check_partial_slip(*dd_newton, "dd-newton, refinement " + levels);
+    check_agreement(*monolithic, *dd_newton, "refinement " + levels);
   }
 
   // 2. Path dependence: pressure and shear grown together in ten steps to
   //    the same end. Mindlin and Deresiewicz: with Q/P < mu at every step
   //    no point slips (the traction follows mu-times-smaller multiples of
   //    the pressure); loaded in this order the zone keeps c/a ~ 0.57.
+  for (const std::string solver : {"monolithic", "dd-newton"})
   {
-    const auto sim =
+    const std::string name = solver + ", proportional loading";
+    const auto        sim =
       run(source_dir,
+          solver,
           {"Body upper/Mesh/Box refinement=6",
            "Body lower/Mesh/Box refinement=6",
            "Loading/Steps=10",
@@ -162,16 +218,16 @@ main(int argc, char **argv)
       n_stick += (s == ContactLaw::SlipState::stick);
     }
     const double fraction = double(n_stick) / n_contact;
-    std::cout << "proportional loading: Q/(mu P) " << Q / (mu * P) << ", "
-              << n_stick << " of " << n_contact
+    std::cout << name << ": Q/(mu P) " << Q / (mu * P) << ", " << n_stick
+              << " of " << n_contact
               << " points in contact stick; the stick half-width "
               << state.stick_half_width << " of " << state.half_width
               << std::endl;
-    check(Q < mu * P, "proportional loading: Q < mu P");
+    check(Q < mu * P, name + ": Q < mu P");
     check(fraction > 0.9,
-          "proportional loading: (nearly) every point sticks (Cattaneo: "
-          "about 57 %)");
-    check_invariants(*sim, "proportional loading");
+          name + ": (nearly) every point sticks (Cattaneo: "
+                 "about 57 %)");
+    check_invariants(*sim, name);
   }
   return report();
 }

@@ -147,11 +147,25 @@ namespace ddcontact
                                const bool     homogeneous,
                                const Exchange exchange) const
   {
+    solve_bodies(sigma_n, {}, u, homogeneous, exchange);
+  }
+
+  void
+  ContactProblem::solve_bodies(const std::vector<std::vector<double>> &sigma_n,
+                               const std::vector<std::vector<double>> &t,
+                               Iterate                                &u,
+                               const bool     homogeneous,
+                               const Exchange exchange) const
+  {
     Iterate loads = zero_iterate();
     for (unsigned int p = 0; p < pairs.size(); ++p)
-      pairs[p]->add_contact_loads(sigma_n[p],
-                                  loads[body_index(pairs[p]->get_body_1())],
-                                  loads[body_index(pairs[p]->get_body_2())]);
+    {
+      auto &load_1 = loads[body_index(pairs[p]->get_body_1())];
+      auto &load_2 = loads[body_index(pairs[p]->get_body_2())];
+      pairs[p]->add_contact_loads(sigma_n[p], load_1, load_2);
+      if (!t.empty())
+        pairs[p]->add_friction_loads(t[p], load_1, load_2);
+    }
     solve_all(loads, u, homogeneous, exchange);
   }
 

@@ -9,11 +9,15 @@ namespace ddcontact
 {
   ContactInterface::ContactInterface(const ContactProblem &problem,
                                      const bool            on_nodes,
-                                     const bool            exact_contact)
+                                     const bool            exact_contact,
+                                     const bool            friction)
     : problem(problem)
     , nodal(on_nodes)
     , exact(exact_contact)
+    , tangential(friction)
   {
+    Assert(on_nodes || !friction,
+           ExcMessage("friction lives on the nodes of S_1"));
   }
 
   void
@@ -23,6 +27,8 @@ namespace ddcontact
     thetas.clear();
     scales.clear();
     references.clear();
+    bounds.clear();
+    laws.clear();
     points.clear();
     point_shares.clear();
     const auto &pairs = problem.get_pairs();
@@ -45,13 +51,19 @@ namespace ddcontact
       const double reference = reference_of_pair(k);
       for (unsigned int i = first; i < point_shares.size(); ++i)
       {
-        double m = 0;
+        double m = 0, bound = 0;
         for (const auto &share : point_shares[i])
-          m += share.psi * pairs[k]->points()[share.point].JxW;
+        {
+          const auto &point = pairs[k]->points()[share.point];
+          m += share.psi * point.JxW;
+          bound += share.psi * point.JxW * point.friction;
+        }
         weights.push_back(m);
         thetas.push_back(theta);
         scales.push_back(m * c);
         references.push_back(reference);
+        bounds.push_back(bound / m);
+        laws.push_back(pairs[k]->friction_law());
       }
     }
   }
@@ -116,11 +128,14 @@ namespace ddcontact
   double
   ContactInterface::inner(const PointVector &x, const PointVector &y) const
   {
-    AssertDimension(x.size(), size());
-    AssertDimension(y.size(), size());
+    // The normal unknowns alone, or all (the tangential ones have the
+    // weights of their nodes).
+    Assert(x.size() == size() || x.size() == n_unknowns(),
+           ExcDimensionMismatch(x.size(), n_unknowns()));
+    AssertDimension(y.size(), x.size());
     double sum = 0;
     for (unsigned int q = 0; q < x.size(); ++q)
-      sum += weights[q] * x[q] * y[q];
+      sum += weight(q) * x[q] * y[q];
     return sum;
   }
 
@@ -133,23 +148,39 @@ namespace ddcontact
   std::vector<std::vector<double>>
   ContactInterface::normal_stresses(const PointVector &p) const
   {
-    AssertDimension(p.size(), size());
+    Assert(p.size() == size() || p.size() == n_unknowns(),
+           ExcDimensionMismatch(p.size(), size()));
     const auto                      &pairs = problem.get_pairs();
     std::vector<std::vector<double>> sigma_n(pairs.size());
     for (unsigned int k = 0; k < pairs.size(); ++k)
       sigma_n[k].assign(pairs[k]->points().size(), 0.);
-    for (unsigned int i = 0; i < p.size(); ++i)
+    for (unsigned int i = 0; i < size(); ++i)
       for (const auto &share : point_shares[i])
         sigma_n[share.pair][share.point] -= share.psi * p[i];
     return sigma_n;
   }
 
+  std::vector<std::vector<double>>
+  ContactInterface::tangential_tractions(const PointVector &x) const
+  {
+    AssertDimension(x.size(), 2 * size());
+    const auto                      &pairs = problem.get_pairs();
+    std::vector<std::vector<double>> t(pairs.size());
+    for (unsigned int k = 0; k < pairs.size(); ++k)
+      t[k].assign(pairs[k]->points().size(), 0.);
+    for (unsigned int i = 0; i < size(); ++i)
+      for (const auto &share : point_shares[i])
+        t[share.pair][share.point] += share.psi * x[size() + i];
+    return t;
+  }
+
   std::vector<double>
   ContactInterface::peak_pressures(const PointVector &p) const
   {
-    AssertDimension(p.size(), size());
+    Assert(p.size() == size() || p.size() == n_unknowns(),
+           ExcDimensionMismatch(p.size(), size()));
     std::vector<double> peak(problem.get_pairs().size(), 0.);
-    for (unsigned int i = 0; i < p.size(); ++i)
+    for (unsigned int i = 0; i < size(); ++i)
     {
       auto &largest = peak[point_shares[i][0].pair];
       largest       = std::max(largest, p[i]);
@@ -207,7 +238,23 @@ namespace ddcontact
     for (unsigned int k = 0; k < d.size(); ++k)
       for (unsigned int q = 0; q < d[k].size(); ++q)
         d[k][q] -= problem.law(k).shifted_gap(q);
-    return average(d);
+    PointVector averages = average(d);
+    if (tangential)
+    {
+      const PointVector s = slip_average(u);
+      averages.insert(averages.end(), s.begin(), s.end());
+    }
+    return averages;
+  }
+
+  PointVector
+  ContactInterface::slip_average(const ContactProblem::Iterate &u) const
+  {
+    std::vector<std::vector<double>> s;
+    for (const auto *pair : problem.get_pairs())
+      s.push_back(pair->slips(u[problem.body_index(pair->get_body_1())],
+                              u[problem.body_index(pair->get_body_2())]));
+    return average(s);
   }
 
   void
@@ -215,11 +262,25 @@ namespace ddcontact
                           ContactProblem::Iterate &u,
                           PointVector             &Sx) const
   {
+    AssertDimension(x.size(), n_unknowns());
     // Only S x is read: the other processes need the traces alone.
-    problem.solve_bodies(
-      normal_stresses(x), u, true, ContactProblem::Exchange::traces);
-    // A pressure pushes the bodies apart: the jump is -S x.
+    if (tangential)
+      problem.solve_bodies(normal_stresses(x),
+                           tangential_tractions(x),
+                           u,
+                           true,
+                           ContactProblem::Exchange::traces);
+    else
+      problem.solve_bodies(
+        normal_stresses(x), u, true, ContactProblem::Exchange::traces);
+    // A pressure pushes the bodies apart: the jump is -S x; a traction t
+    // (-t tau on body 1) slips body 1 back: the slip is -S_t x.
     Sx = average(jump(u));
+    if (tangential)
+    {
+      const PointVector s = slip_average(u);
+      Sx.insert(Sx.end(), s.begin(), s.end());
+    }
     for (double &v : Sx)
       v = -v;
     ++applications;

@@ -286,13 +286,14 @@ namespace ddcontact
     augmented_lagrangian = exact;
     friction             = !frictional_pair.empty();
     // Friction lives on the nodes of S_1 (a tangential multiplier beside
-    // the normal one, doc/friction.md), so far in the monolithic solver.
-    if (friction && solver != ContactSolverType::monolithic)
+    // the normal one, doc/friction.md): dd-newton and the monolithic
+    // solver; the paper's DD iterates on the pressure at the points.
+    if (friction && solver == ContactSolverType::dd)
       throw InputError("Contact pair " + frictional_pair +
                        "/Friction: friction is solved by Contact "
-                       "solver/Solver = monolithic so far, not by " +
-                       selection_name(solver) +
-                       "; set Solver = monolithic or Friction = none");
+                       "solver/Solver = dd-newton or monolithic, not by the "
+                       "paper's dd; set Solver = dd-newton or Friction = "
+                       "none");
     if (friction && contact_pressure == "points")
       throw InputError("Contact pair " + frictional_pair +
                        "/Friction: friction needs the pressure on the nodes "

@@ -122,6 +122,23 @@ namespace ddcontact
   } // namespace
 
   void
+  DDNewtonSolver::check_scene(const ContactSolverParameters       &parameters,
+                              const std::vector<ElasticBody<2> *> &bodies)
+  {
+    if (!parameters.friction)
+      return;
+    for (const auto *body : bodies)
+      if (body->is_floating())
+        throw InputError("Body " + body->name() +
+                         "/Dirichlet: the body is floating (its Dirichlet "
+                         "conditions leave its " +
+                         body->get_rigid_modes().description() +
+                         "), and dd-newton solves floating bodies without "
+                         "friction only; hold the body by a Dirichlet "
+                         "condition, or set Contact pair/Friction = none");
+  }
+
+  void
   DDNewtonSolver::initialize()
   {
     problem.set_pressure_from_solver(parameters.multipliers_on_nodes());
@@ -130,7 +147,9 @@ namespace ddcontact
     interface.reinit();
     interface.set_reference_lengths({});
     continuation_pending = parameters.dd_newton.penalty_continuation;
-    p.assign(interface.size(), 0.);
+    p.assign(interface.n_unknowns(), 0.);
+    history.clear();
+    history.set_nodes(interface.size());
     mesh_ready = false;
     setup_mesh();
   }
@@ -143,7 +162,7 @@ namespace ddcontact
     // its own length.
     std::vector<double>       lengths(problem.get_pairs().size(), 0.);
     std::vector<unsigned int> overlapping(lengths.size(), 0);
-    for (unsigned int q = 0; q < d_0.size(); ++q)
+    for (unsigned int q = 0; q < interface.size(); ++q)
       if (d_0[q] > 0)
       {
         lengths[interface.shares(q)[0].pair] += interface.weight(q);
@@ -207,8 +226,10 @@ namespace ddcontact
     // the stage's springs in units of an element's compliance e: such a
     // soft stage does not pay for the Robin factorization (paper scene,
     // refinement 5: the stage t = 1 in 6 sets without factorization).
+    // With friction the sticking nodes' tangential unknowns have no
+    // continuation: the Robin problems precondition them.
     const double t = interface.get_continuation();
-    if (t == 0)
+    if (t == 0 || interface.has_friction())
       return false;
     double ratio = 0;
     for (unsigned int q = 0; q < interface.size(); ++q)
@@ -235,11 +256,33 @@ namespace ddcontact
   {
     ContactSolver::reinit_after_refinement();
     const std::vector<Point<2>> old_positions = interface.positions();
+    const unsigned int          n_old         = old_positions.size();
     interface.reinit();
-    p          = interface.on_nodes()
-                   ? interpolated_node_values(old_positions, p, interface.positions())
-                   : nearest_point_values(old_positions, p, interface.positions());
+    const auto move = [&](const PointVector &values)
+    {
+      return interface.on_nodes()
+               ? interpolated_node_values(
+                   old_positions, values, interface.positions())
+               : nearest_point_values(
+                   old_positions, values, interface.positions());
+    };
+    // The pressure, and with friction the tangential multipliers after it.
+    const PointVector old = p;
+    p                     = move(PointVector(old.begin(), old.begin() + n_old));
+    if (interface.has_friction())
+    {
+      const PointVector t = move(PointVector(old.begin() + n_old, old.end()));
+      p.insert(p.end(), t.begin(), t.end());
+    }
+    history.set_nodes(interface.size());
     mesh_ready = false;
+  }
+
+  void
+  DDNewtonSolver::start_load_step()
+  {
+    history.start_load_step(problem);
+    ContactSolver::start_load_step();
   }
 
   void
@@ -248,13 +291,14 @@ namespace ddcontact
     ContactSolver::start_phase();
     phase_ready = false;
     last_active.clear();
+    last_slip_values.clear();
     alpha_stale = !coarse.empty();
   }
 
   void
   DDNewtonSolver::setup_mesh()
   {
-    AssertDimension(p.size(), interface.size());
+    AssertDimension(p.size(), interface.n_unknowns());
     preconditioner.setup(interface);
     coarse.reinit();
     alpha.assign(coarse.size(), 0.);
@@ -279,35 +323,93 @@ namespace ddcontact
                                   const PointVector &Sx,
                                   const PointVector &Gx) const
   {
-    PointVector F(x.size());
-    for (unsigned int q = 0; q < x.size(); ++q)
+    PointVector        F(x.size());
+    const unsigned int n = interface.size();
+    for (unsigned int q = 0; q < n; ++q)
     {
       const double theta = interface.penalty(q);
       F[q]               = std::min(interface.complementarity_scale(q) * x[q],
                       theta * x[q] - (d_0[q] - Sx[q] + Gx[q]));
     }
+    // Friction: c (t - the trial traction cut to the bound) at the closed
+    // nodes, c t at the others (as MonolithicContactSolver's residual).
+    for (unsigned int q = n; q < x.size(); ++q)
+    {
+      const unsigned int i = q - n;
+      double             t = x[q];
+      if (interface.friction_law(i) != FrictionLaw::none &&
+          closed(i, x, Sx, Gx))
+      {
+        const auto [trial, bound] = trial_traction(i, x, Sx, Gx);
+        t -= std::clamp(trial, -bound, bound);
+      }
+      F[q] = interface.complementarity_scale(q) * t;
+    }
     return F;
   }
 
+  bool
+  DDNewtonSolver::closed(const unsigned int i,
+                         const PointVector &x,
+                         const PointVector &Sx,
+                         const PointVector &Gx) const
+  {
+    const double d = d_0[i] - Sx[i] + Gx[i];
+    return d + (interface.complementarity_scale(i) - interface.penalty(i)) *
+                 x[i] >
+           0;
+  }
+
+  std::pair<double, double>
+  DDNewtonSolver::trial_traction(const unsigned int i,
+                                 const PointVector &x,
+                                 const PointVector &Sx,
+                                 const PointVector &Gx) const
+  {
+    // d_0 holds s_0 - s_old + theta t_old at the tangential unknown j, so
+    // that d_0,j - (S x)_j - theta t_j = ds - theta (t - t_old).
+    const unsigned int j = interface.size() + i;
+    const double trial = x[j] + (d_0[j] - Sx[j] - interface.penalty(j) * x[j]) /
+                                  interface.complementarity_scale(j);
+    double bound = interface.friction_bound(i);
+    if (interface.friction_law(i) == FrictionLaw::coulomb)
+    {
+      const double d = d_0[i] - Sx[i] + Gx[i];
+      bound *= std::max(0.,
+                        x[i] + (d - interface.penalty(i) * x[i]) /
+                                 interface.complementarity_scale(i));
+    }
+    return {trial, bound};
+  }
+
   std::vector<bool>
-  DDNewtonSolver::active_set(unsigned int &n_changed)
+  DDNewtonSolver::active_set(unsigned int &n_changed, const bool stick)
   {
     // The active set of the semismooth Newton step on min(c p, lambda):
     // lambda < c p, i.e. d(p) + (c - theta) p > 0.
-    const unsigned int n = p.size();
-    std::vector<bool>  active(n);
+    const unsigned int n = interface.size();
+    std::vector<bool>  active(p.size(), false);
     PointVector        d(n);
     for (unsigned int q = 0; q < n; ++q)
     {
-      d[q] = d_0[q] - Sp[q] + Ga[q];
-      active[q] =
-        d[q] +
-          (interface.complementarity_scale(q) - interface.penalty(q)) * p[q] >
-        0;
+      d[q]      = d_0[q] - Sp[q] + Ga[q];
+      active[q] = closed(q, p, Sp, Ga);
     }
+    // Friction: a closed node sticks while its trial traction is within
+    // the bound, else it slips with t = sigma b.
+    slip_values.assign(interface.has_friction() ? n : 0, 0.);
+    for (unsigned int i = 0; i < slip_values.size(); ++i)
+      if (active[i] && interface.friction_law(i) != FrictionLaw::none)
+      {
+        const auto [trial, bound] = trial_traction(i, p, Sp, Ga);
+        if (stick || std::abs(trial) <= bound)
+          active[n + i] = true;
+        else
+          slip_values[i] = (trial > 0 ? 1. : -1.) * bound;
+      }
     // Floating bodies need active unknowns that hold their rigid modes:
     // add those nearest to contact (largest d) until they do.
-    forced.assign(n, false);
+    forced.assign(p.size(), false);
     if (!coarse.holds(active))
     {
       std::vector<unsigned int> order(n);
@@ -327,8 +429,13 @@ namespace ddcontact
         }
     }
     n_changed = 0;
-    for (unsigned int q = 0; q < n; ++q)
+    for (unsigned int q = 0; q < active.size(); ++q)
       n_changed += last_active.empty() || (active[q] != last_active[q]);
+    // A node that slips the other way changes too.
+    if (last_slip_values.size() == slip_values.size())
+      for (unsigned int i = 0; i < slip_values.size(); ++i)
+        n_changed += (slip_values[i] > 0) != (last_slip_values[i] > 0) ||
+                     (slip_values[i] < 0) != (last_slip_values[i] < 0);
     return active;
   }
 
@@ -467,6 +574,16 @@ namespace ddcontact
       for (unsigned int k = 0; k < last_sigma_n.size(); ++k)
         problem.law(k).set_contact_pressure(last_sigma_n[k], peak[k]);
     }
+    if (interface.has_friction())
+    {
+      const unsigned int n = interface.size();
+      history.publish(problem,
+                      interface,
+                      PointVector(p.begin(), p.begin() + n),
+                      PointVector(p.begin() + n, p.end()),
+                      interface.slip_average(last_u_tilde),
+                      last_sigma_n);
+    }
   }
 
   void
@@ -492,6 +609,16 @@ namespace ddcontact
       PointVector overlap(d_0.size());
       for (unsigned int q = 0; q < d_0.size(); ++q)
         overlap[q] = std::max(0., d_0[q]);
+      // Friction: the data of a sticking node's row are the slip of u_0
+      // less the history's, s_0 - s_old + theta t_old (the residual is
+      // measured against the whole slip of the data).
+      for (unsigned int q = interface.size(); q < d_0.size(); ++q)
+      {
+        const unsigned int i = interface.node(q);
+        d_0[q] +=
+          interface.penalty(q) * history.old_traction(i) - history.old_slip(i);
+        overlap[q] = std::abs(d_0[q]);
+      }
       scale       = interface.norm(overlap);
       phase_ready = true;
     }
@@ -506,8 +633,12 @@ namespace ddcontact
         parameters.dd_newton.max_newton_iterations)
       stop_at_iteration_limit("the Newton method of dd-newton");
 
+    // The first step of a phase lets every closed node stick: its iterate
+    // is no Newton iterate of these data, and sticking, the zone finds
+    // the direction of every slip from its traction.
+    const bool        first     = records.size() == phase_start;
     unsigned int      n_changed = 0;
-    std::vector<bool> active    = active_set(n_changed);
+    std::vector<bool> active    = active_set(n_changed, first);
     // Penalty continuation: once the active set of a stage has settled,
     // the next, stiffer one starts from it. A stage has settled when at most 1
     // % of its active set changes (the last changes of a stage are the
@@ -517,11 +648,14 @@ namespace ddcontact
     {
       enter_stage(
         continuation_stage(continuation_factor * interface.get_continuation()));
-      active = active_set(n_changed);
+      active = active_set(n_changed, first);
     }
-    const double       psi = interface.norm(newton_residual(p, Sp, Ga));
+    const double psi = interface.norm(newton_residual(p, Sp, Ga));
+    // The closed nodes (with friction: and the sticking ones).
     const unsigned int n_active =
-      std::count(active.begin(), active.end(), true);
+      std::count(active.begin(), active.begin() + interface.size(), true);
+    const unsigned int n_sticking =
+      std::count(active.begin() + interface.size(), active.end(), true);
     // The same active set again, completed by unknowns that pull (p < 0):
     // only tension holds the floating modes, and the Newton method would
     // repeat this step for ever.
@@ -536,26 +670,31 @@ namespace ddcontact
         "about its axis, or a punch without a load toward its support); "
         "prescribe that displacement component on a boundary, or load the "
         "body toward the contact");
-    // Warm start: p off the new active set is set to zero, and S p with it.
+    // Warm start: x off the new active set takes its fixed value (zero,
+    // or sigma b at a slipping node), and S x with it.
     PointVector             x = p, Sx = Sp;
     ContactProblem::Iterate u_x;
     ContactProblem::assign(u_x, u_p);
-    PointVector dropped(p.size(), 0.);
-    bool        any_dropped = false;
+    PointVector fixing(p.size(), 0.);
+    bool        any_fixed = false;
     for (unsigned int q = 0; q < p.size(); ++q)
-      if (!active[q] && p[q] != 0.)
-      {
-        dropped[q]  = p[q];
-        x[q]        = 0.;
-        any_dropped = true;
-      }
-    if (any_dropped)
     {
-      PointVector             S_dropped;
-      ContactProblem::Iterate u_dropped;
-      interface.apply(dropped, u_dropped, S_dropped);
-      add(Sx, -1., S_dropped);
-      add(u_x, -1., u_dropped);
+      const double fixed =
+        interface.is_tangential(q) ? slip_values[interface.node(q)] : 0.;
+      if (!active[q] && p[q] != fixed)
+      {
+        fixing[q] = fixed - p[q];
+        x[q]      = fixed;
+        any_fixed = true;
+      }
+    }
+    if (any_fixed)
+    {
+      PointVector             S_fixing;
+      ContactProblem::Iterate u_fixing;
+      interface.apply(fixing, u_fixing, S_fixing);
+      add(Sx, 1., S_fixing);
+      add(u_x, 1., u_fixing);
     }
     // Inexact Newton: 0.1 of the residual while the active set moves, the
     // final tolerance (with a margin) once it has settled.
@@ -568,7 +707,8 @@ namespace ddcontact
     const unsigned int cg = solve_active_system(active, tolerance, x, Sx, u_x);
     n_factorizations += preconditioner.factorizations() - factorizations;
     krylov_iterations += cg;
-    last_active = active;
+    last_active      = active;
+    last_slip_values = slip_values;
     // The floating modes' amplitudes: (Theta + S) x - d_0 = G alpha on the
     // active set (projected CG leaves only that part of the residual).
     std::vector<double> alpha_x;
@@ -639,12 +779,15 @@ namespace ddcontact
                            psi_new <= stopping_tolerance(p);
     pcout << "  Newton " << std::setw(3) << record.iteration << std::scientific
           << std::setprecision(3) << "  residual " << record.residual
-          << "  active " << n_active << " (" << n_changed << " changed)  CG "
-          << cg << "  tau " << std::defaultfloat << tau << std::scientific
-          << "  force " << record.force << "  penetration "
-          << record.max_penetration << std::defaultfloat << "  body solve sets "
-          << n_dd_iterations() << "  factorizations " << n_factorizations
-          << std::fixed << std::setprecision(2) << "  t " << record.time << "s"
+          << "  active " << n_active;
+    if (interface.has_friction())
+      pcout << " (" << n_sticking << " stick)";
+    pcout << " (" << n_changed << " changed)  CG " << cg << "  tau "
+          << std::defaultfloat << tau << std::scientific << "  force "
+          << record.force << "  penetration " << record.max_penetration
+          << std::defaultfloat << "  body solve sets " << n_dd_iterations()
+          << "  factorizations " << n_factorizations << std::fixed
+          << std::setprecision(2) << "  t " << record.time << "s"
           << std::defaultfloat << std::endl;
     if (!std::isfinite(record.residual))
       throw DivergenceError("the Newton method of dd-newton produced a "

@@ -27,9 +27,7 @@ namespace ddcontact
   MonolithicContactSolver::initialize()
   {
     ContactSolver::initialize();
-    slip_history.clear();
-    traction_history.clear();
-    point_slip_history.clear();
+    history.clear();
     warm_start = false;
     set_initial_guess();
   }
@@ -44,13 +42,8 @@ namespace ddcontact
   void
   MonolithicContactSolver::start_load_step()
   {
-    // The last solve's slips, and its tractions (after the pressures).
-    slip_history = last_slip;
-    traction_history.assign(last_multipliers.begin() + last_slip.size(),
-                            last_multipliers.end());
-    point_slip_history.assign(problem.get_pairs().size(), {});
-    for (unsigned int k = 0; k < point_slip_history.size(); ++k)
-      point_slip_history[k] = problem.law(k).get_friction().slip;
+    // The last solve's slips and tractions.
+    history.start_load_step(problem);
     ContactSolver::start_load_step();
     // The multipliers of the last step start the Newton method: its
     // active set is that of the last step where the data change little.
@@ -145,6 +138,7 @@ namespace ddcontact
     interface.reinit();
     const auto &pairs = problem.get_pairs();
     penetrations.assign(interface.size(), Penetration());
+    history.set_nodes(interface.size());
     for (unsigned int i = 0; i < interface.size(); ++i)
     {
       auto &d  = penetrations[i];
@@ -195,11 +189,8 @@ namespace ddcontact
         d.f += s * problem.law(share.pair).shifted_gap(share.point);
       }
       // The state at the end of the last load step (the same nodes).
-      if (slip_history.size() == penetrations.size())
-      {
-        d.s_old = slip_history[i];
-        d.t_old = traction_history[i];
-      }
+      d.s_old = history.old_slip(i);
+      d.t_old = history.old_traction(i);
     }
   }
 
@@ -570,64 +561,16 @@ namespace ddcontact
     if (!friction)
       return;
 
-    // The tangential traction t(x) = sum_i t_i psi_i(x) at the points,
-    // the slip there, and the energy dissipated at the nodes,
-    // m_i t_i (ds_i - theta_i (t_i - t_i,old)): the slip beyond the
-    // penalty's elastic part (zero where a node sticks).
-    const auto &pairs = problem.get_pairs();
-    const auto  minus_t =
-      interface.normal_stresses(PointVector(p.begin() + n_nodes, p.end()));
-    std::vector<double> dissipation(pairs.size(), 0.);
-    last_slip.resize(n_nodes);
+    // The averaged slips of the nodes, for the laws' results and the
+    // history.
+    PointVector slips(n_nodes);
     for (unsigned int i = 0; i < n_nodes; ++i)
-    {
-      const auto  &d = penetrations[i];
-      const double t = p[n_nodes + i];
-      last_slip[i]   = d.slip(u);
-      dissipation[interface.shares(i)[0].pair] +=
-        d.weight * t * (last_slip[i] - d.s_old - d.theta * (t - d.t_old));
-    }
-    for (unsigned int k = 0; k < pairs.size(); ++k)
-    {
-      const auto &pair = *pairs[k];
-      if (!pair.has_friction())
-        continue;
-      ContactLaw::Friction result;
-      result.slip = pair.slips(
-        bodies[problem.body_index(pair.get_body_1())]->get_solution(),
-        bodies[problem.body_index(pair.get_body_2())]->get_solution());
-      // The slip since the last load step (the undeformed state at the
-      // first).
-      result.slip_increment = result.slip;
-      if (k < point_slip_history.size() &&
-          point_slip_history[k].size() == result.slip.size())
-        for (unsigned int q = 0; q < result.slip.size(); ++q)
-          result.slip_increment[q] -= point_slip_history[k][q];
-      result.dissipation = dissipation[k];
-      for (unsigned int i = 0; i < n_nodes; ++i)
-        if (interface.shares(i)[0].pair == k)
-        {
-          const auto  &d = penetrations[i];
-          const double t = p[n_nodes + i];
-          result.nodal_t.push_back(t);
-          result.nodal_slip_increment.push_back(last_slip[i] - d.s_old);
-          result.nodal_bound.push_back(
-            d.law == FrictionLaw::tresca ? d.bound : d.bound * p[i]);
-        }
-      for (unsigned int q = 0; q < pair.points().size(); ++q)
-      {
-        const double t = -minus_t[k][q];
-        result.t.push_back(t);
-        // Slipping where |t| reaches the bound (to round-off).
-        const double bound =
-          pair.points()[q].friction *
-          (pair.friction_law() == FrictionLaw::tresca ? 1. : -sigma_n[k][q]);
-        result.state.push_back(sigma_n[k][q] == 0. ? ContactLaw::SlipState::open
-                               : std::abs(t) >= (1 - 1e-9) * bound
-                                 ? ContactLaw::SlipState::slip
-                                 : ContactLaw::SlipState::stick);
-      }
-      problem.law(k).set_friction(result);
-    }
+      slips[i] = penetrations[i].slip(u);
+    history.publish(problem,
+                    interface,
+                    pressure,
+                    PointVector(p.begin() + n_nodes, p.end()),
+                    slips,
+                    sigma_n);
   }
 } // namespace ddcontact

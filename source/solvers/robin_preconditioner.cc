@@ -30,9 +30,10 @@ namespace ddcontact
                                 const double       alpha,
                                 const double       beta) const
   {
-    const auto  &shares = interface->shares(i);
-    const auto  &pair   = *problem.get_pairs()[shares[0].pair];
-    const double m      = interface->weight(i);
+    const auto  &shares     = interface->shares(i);
+    const auto  &pair       = *problem.get_pairs()[shares[0].pair];
+    const double m          = interface->weight(i);
+    const bool   tangential = interface->is_tangential(i);
     Row          row;
     row.unknown = i;
     row.alpha   = alpha;
@@ -44,7 +45,10 @@ namespace ddcontact
     {
       const auto &point = pair.points()[share.point];
       const auto &dofs  = body_1 ? point.load_dofs_1 : point.load_dofs_2;
-      const auto &c     = body_1 ? point.load_1 : point.load_2;
+      // A tangential multiplier loads and reads along tau as a pressure
+      // does along n (the same load and dofs, ContactPoint).
+      const auto &c = tangential ? (body_1 ? point.load_t1 : point.load_t2)
+                                 : (body_1 ? point.load_1 : point.load_2);
       // psi w / m: exactly 1 for a point's own unknown.
       const double factor = (share.psi * point.JxW) / m;
       if (shares.size() == 1)
@@ -145,8 +149,13 @@ namespace ddcontact
 
     rows.assign(bodies.size(), {});
     std::vector<std::tuple<unsigned int, unsigned int, double>> held;
-    for (unsigned int i = 0; i < interface->size(); ++i)
+    // With friction the tangential multipliers of the frictional pairs get
+    // their rows too: springs along tau at the sticking nodes.
+    for (unsigned int i = 0; i < interface->n_unknowns(); ++i)
     {
+      if (interface->is_tangential(i) &&
+          interface->friction_law(interface->node(i)) == FrictionLaw::none)
+        continue;
       const unsigned int k    = interface->shares(i)[0].pair;
       const auto        &pair = *pairs[k];
       const double       c_1 =

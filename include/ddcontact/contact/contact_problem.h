@@ -153,6 +153,16 @@ namespace ddcontact
                  bool                                    homogeneous = false,
                  Exchange exchange = Exchange::whole) const;
 
+    /** The same with the tangential tractions @p t as well (the traction
+     * -t tau on body 1 and +t tau on body 2, ContactPair's friction
+     * loads; one vector per pair). */
+    void
+    solve_bodies(const std::vector<std::vector<double>> &sigma_n,
+                 const std::vector<std::vector<double>> &t,
+                 Iterate                                &u,
+                 bool                                    homogeneous = false,
+                 Exchange exchange = Exchange::whole) const;
+
     /** Per body, the dofs (sorted) that the contact evaluations read:
      * those of the pairs' points, for the normal displacements and for the
      * loads with the constraints resolved. Exchange::traces sends these. */

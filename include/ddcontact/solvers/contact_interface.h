@@ -52,15 +52,29 @@ namespace ddcontact
    * product (x, y)_M = sum_i m_i x_i y_i. Every application of S is one set
    * of body solves (all bodies at once, each reusing its factorization),
    * counted here.
+   *
+   * **Friction** (constructed with friction, doc/friction.md section 7):
+   * every node i also carries a tangential multiplier t_i, the unknown
+   * size() + i, with the traction -t(x) tau on body 1 (t(x) = sum_i t_i
+   * psi_i(x)) and the averaged slip s_i = (1/m_i) int_S1 psi_i (u_1 - u_2)
+   * . tau in the place of the penetration. The tangential load and the
+   * slip use the same coefficients as the normal load and the approach
+   * (ContactPoint::load_t1, at), so S = M^{-1} Psi W B K^{-1} B^T W Psi^T
+   * with B = (B_n; B_t) stays self-adjoint and positive semidefinite in
+   * (.,.)_M on the 2 size() unknowns (p, t): d(p, t) = d_0 - S_nn p -
+   * S_nt t, s(p, t) = s_0 - S_tn p - S_tt t. A tangential unknown has the
+   * pair's own theta (no continuation) and the weight of its node.
    */
   class ContactInterface
   {
   public:
     /** With @p on_nodes the nodal space, otherwise the points; theta = 0
-     * with @p exact_contact, otherwise the pairs' penalties. */
+     * with @p exact_contact, otherwise the pairs' penalties; with
+     * @p friction (on the nodes) a tangential multiplier per node. */
     ContactInterface(const ContactProblem &problem,
                      bool                  on_nodes,
-                     bool                  exact_contact);
+                     bool                  exact_contact,
+                     bool                  friction = false);
 
     /** The share psi_i(x_q) of point @p point of pair @p pair in an
      * unknown. */
@@ -76,11 +90,56 @@ namespace ddcontact
     void
     reinit();
 
-    /** The number of unknowns of all pairs. */
+    /** The number of nodes (or points) of all pairs: the normal
+     * unknowns. */
     unsigned int
     size() const
     {
       return weights.size();
+    }
+
+    /** All unknowns: size(), and as many tangential ones with friction. */
+    unsigned int
+    n_unknowns() const
+    {
+      return (tangential ? 2 : 1) * size();
+    }
+
+    /** Whether the unknowns include the tangential multipliers. */
+    bool
+    has_friction() const
+    {
+      return tangential;
+    }
+
+    /** Whether unknown @p q is a tangential multiplier. */
+    bool
+    is_tangential(const unsigned int q) const
+    {
+      return q >= size();
+    }
+
+    /** The node (or point) of unknown @p q. */
+    unsigned int
+    node(const unsigned int q) const
+    {
+      return is_tangential(q) ? q - size() : q;
+    }
+
+    /** The friction law of the pair of node @p i (none without
+     * friction). */
+    FrictionLaw
+    friction_law(const unsigned int i) const
+    {
+      return laws[i];
+    }
+
+    /** The slip bound g_i (Tresca) or coefficient mu_i (Coulomb) of node
+     * @p i, averaged like the gap: (1/m_i) sum_q w_q psi_i(x_q) g(x_q). */
+    double
+    friction_bound(const unsigned int i) const
+    {
+      return bounds[i];
     }
 
     /** Whether the unknowns are the nodal multipliers of exact contact. */
@@ -94,14 +153,14 @@ namespace ddcontact
     double
     weight(const unsigned int i) const
     {
-      return weights[i];
+      return weights[node(i)];
     }
 
     /** The points that unknown @p i spreads to, with psi_i there. */
     const std::vector<PointShare> &
     shares(const unsigned int i) const
     {
-      return point_shares[i];
+      return point_shares[node(i)];
     }
 
     /** (x, y)_M, summed in index order. */
@@ -113,11 +172,12 @@ namespace ddcontact
     norm(const PointVector &x) const;
 
     /** theta of the pair of unknown q (0 for exact contact), plus the
-     * continuation's t theta_ref,q. */
+     * continuation's t theta_ref,q on a normal unknown. */
     double
     penalty(const unsigned int q) const
     {
-      return thetas[q] + continuation * references[q];
+      return is_tangential(q) ? thetas[node(q)]
+                              : thetas[q] + continuation * references[q];
     }
 
     /** The pair's own theta of unknown @p q (0 for exact contact), without
@@ -125,7 +185,7 @@ namespace ddcontact
     double
     target_penalty(const unsigned int q) const
     {
-      return thetas[q];
+      return thetas[node(q)];
     }
 
     /** theta_ref,q = sum_a (1 - nu_a^2) min(H_a, L) / E_a over both bodies
@@ -136,7 +196,7 @@ namespace ddcontact
     double
     reference_penalty(const unsigned int q) const
     {
-      return references[q];
+      return references[node(q)];
     }
 
     /** The lengths L of theta_ref, one per pair (infinite if not set),
@@ -149,7 +209,7 @@ namespace ddcontact
     double
     element_compliance(const unsigned int q) const
     {
-      return scales[q];
+      return scales[node(q)];
     }
 
     /** Penalty continuation (DDNewtonSolver): theta_q + @p t theta_ref,q
@@ -174,7 +234,7 @@ namespace ddcontact
     double
     complementarity_scale(const unsigned int q) const
     {
-      return penalty(q) + scales[q];
+      return penalty(q) + scales[node(q)];
     }
 
     /** Position of every unknown on S_1 (to move a pressure to new
@@ -186,9 +246,15 @@ namespace ddcontact
     }
 
     /** The normal stresses sigma_n = -Psi^T p at the points, one vector
-     * per pair (the loads of ContactProblem::solve_bodies()). */
+     * per pair (the loads of ContactProblem::solve_bodies()), from the
+     * first size() values of @p p. */
     std::vector<std::vector<double>>
     normal_stresses(const PointVector &p) const;
+
+    /** The tangential tractions t = Psi^T t at the points, one vector per
+     * pair, from the tangential unknowns of @p x (n_unknowns() values). */
+    std::vector<std::vector<double>>
+    tangential_tractions(const PointVector &x) const;
 
     /** The largest value of @p p on every pair (the peak of the piecewise
      * linear pressure of the nodes, which the points between them miss; 0
@@ -197,9 +263,15 @@ namespace ddcontact
     peak_pressures(const PointVector &p) const;
 
     /** The penetration d = M^{-1} Psi W (u_1n + u_2n - f~_n) of the
-     * displacements @p u (f~_n with the current multipliers). */
+     * displacements @p u (f~_n with the current multipliers); with
+     * friction followed by the slips (slip_average()). */
     PointVector
     penetration(const ContactProblem::Iterate &u) const;
+
+    /** The averaged slips s_i = M^{-1} Psi W (u_1 - u_2) . tau of @p u at
+     * the nodes (zero on a pair without friction). */
+    PointVector
+    slip_average(const ContactProblem::Iterate &u) const;
 
     /** The averaged approach M^{-1} Psi W (u_1n + u_2n) of @p u, without
      * the gap: the linear part of penetration(). */
@@ -210,7 +282,8 @@ namespace ddcontact
     }
 
     /** Sx = S @p x, and the displacements @p u of the bodies loaded by the
-     * pressure @p x alone: one set of homogeneous body solves. */
+     * pressure @p x alone (with friction: and its tangential traction,
+     * n_unknowns() values): one set of homogeneous body solves. */
     void
     apply(const PointVector       &x,
           ContactProblem::Iterate &u,
@@ -247,8 +320,10 @@ namespace ddcontact
     add_nodes(unsigned int k);
 
     const ContactProblem                &problem;
-    const bool                           nodal, exact;
+    const bool                           nodal, exact, tangential;
     PointVector                          weights, thetas, scales, references;
+    PointVector                          bounds; // per node, friction_bound()
+    std::vector<FrictionLaw>             laws;   // per node
     std::vector<double>                  reference_lengths; // per pair
     double                               continuation = 0;
     std::vector<Point<2>>                points;

@@ -3,6 +3,7 @@
 
 #include <ddcontact/solvers/contact_interface.h>
 #include <ddcontact/solvers/contact_solver.h>
+#include <ddcontact/solvers/friction_history.h>
 #include <ddcontact/solvers/rigid_mode_coarse_space.h>
 #include <ddcontact/solvers/robin_preconditioner.h>
 
@@ -79,19 +80,39 @@ namespace ddcontact
    * alpha with the bodies' equilibrium as a constraint, by projected CG
    * (FETI). An active set too small to hold the modes is completed by the
    * unknowns nearest to contact.
+   *
+   * **Friction** (Contact pair/Friction = tresca or coulomb,
+   * doc/friction.md section 7): a tangential multiplier t_i per node
+   * beside p_i (ContactInterface with friction: the unknowns (p, t), S
+   * the response of the normal approach and of the slip to both). Every
+   * node is open, sticks or slips, decided from the trial traction as in
+   * MonolithicContactSolver: a sticking node's row is
+   * S_tn p + (Theta + S_tt) t = s_0 - s_old + theta t_old (the slip
+   * increment is the penalty's elastic slip, zero for exact contact), a
+   * slipping node's t_i is fixed at sigma_i times its bound. On a set of
+   * states the step is again (Theta + S_AA) x_A = b_A - (Theta + S)_AF x_F
+   * on the active unknowns A (closed normals and sticking tangentials),
+   * x_F fixed: symmetric, solved by the same preconditioned CG (the Robin
+   * problems get springs along tau at the sticking nodes), one set of body
+   * solves per iteration. Tresca's bound g_i is a datum. Coulomb's
+   * mu_i p_i is taken at the current iterate's trial pressure and updated
+   * at every Newton step (a fixed point on the slip bound inside the
+   * semismooth Newton method): the operator stays symmetric, and for
+   * elastically similar bodies (S_nt = 0) p does not depend on t, so the
+   * fixed point is exact once p has converged. The first step of a load
+   * step lets every closed node stick. Floating bodies are refused with
+   * friction (the coarse space carries the normal approach only).
    */
   class DDNewtonSolver : public ContactSolver
   {
   public:
     using ContactSolver::ContactSolver;
 
-    /** dd-newton solves floating bodies too (its coarse space): no
-     * check beyond the parameters'. */
+    /** dd-newton solves floating bodies too (its coarse space), but not
+     * with friction: InputError then. */
     static void
-    check_scene(const ContactSolverParameters &,
-                const std::vector<ElasticBody<2> *> &)
-    {
-    }
+    check_scene(const ContactSolverParameters       &parameters,
+                const std::vector<ElasticBody<2> *> &bodies);
 
     /** Zero pressure; resets the history and the multipliers. */
     void
@@ -110,6 +131,11 @@ namespace ddcontact
      * preconditioner and the data are set up again at the next step. */
     void
     reinit_after_refinement() override;
+
+    /** With friction the converged slip and traction of every node
+     * become the history of the next step; then as after a refinement. */
+    void
+    start_load_step() override;
 
     std::string
     name() const override
@@ -142,7 +168,10 @@ namespace ddcontact
     setup_mesh();
 
     /** Phi(p) = min(c p, Theta p - d) with the penetration d = d_0 - S p +
-     * G alpha, for @p p, @p Sp = S p and @p Ga = G alpha. */
+     * G alpha, for @p p, @p Sp = S p and @p Ga = G alpha; with friction
+     * followed by c t - clamp(c t + ds - theta (t - t_old), -c b, c b) at
+     * closed nodes of frictional pairs (the trial traction cut to the
+     * bound b), c t elsewhere. */
     PointVector
     newton_residual(const PointVector &p,
                     const PointVector &Sp,
@@ -179,9 +208,29 @@ namespace ddcontact
 
     /** The unknowns A of the Newton step, from the current iterate;
      * @p n_changed counts those that changed since the last step;
-     * `forced` marks those added only to hold the floating modes. */
+     * `forced` marks those added only to hold the floating modes. With
+     * friction the sticking nodes' tangential unknowns are active (all
+     * closed ones with @p stick: the first step of a load step), and
+     * `slip_values` holds sigma_i b_i of the slipping ones. */
     std::vector<bool>
-    active_set(unsigned int &n_changed);
+    active_set(unsigned int &n_changed, bool stick = false);
+
+    /** Whether node @p i is in contact at (@p x, @p Sx, @p Gx):
+     * d_i + (c_i - theta_i) x_i > 0. */
+    bool
+    closed(unsigned int       i,
+           const PointVector &x,
+           const PointVector &Sx,
+           const PointVector &Gx) const;
+
+    /** The trial traction t_i + (ds_i - theta_i (t_i - t_i,old)) / c_i of
+     * node @p i at (@p x, @p Sx, @p Gx), and its slip bound: g_i, or mu_i
+     * times the trial pressure x_i + (d_i - theta_i x_i) / c_i. */
+    std::pair<double, double>
+    trial_traction(unsigned int       i,
+                   const PointVector &x,
+                   const PointVector &Sx,
+                   const PointVector &Gx) const;
 
     /** For floating bodies: the amplitudes alpha that fit the gaps where
      * the pressure is positive, for the pressure of another mesh or
@@ -227,8 +276,10 @@ namespace ddcontact
     bool iterate_complete = true;
 
     ContactInterface interface {
-      problem, parameters.multipliers_on_nodes(), parameters.exact_contact()
+      problem, parameters.multipliers_on_nodes(), parameters.exact_contact(),
+        parameters.friction
     };
+    FrictionHistory      history;
     RobinPreconditioner  preconditioner{problem};
     RigidModeCoarseSpace coarse{problem, interface};
     bool                 mesh_ready  = false; // interface, u_0, S p
@@ -240,6 +291,8 @@ namespace ddcontact
     PointVector             p, Sp;     // the pressure and S p
     ContactProblem::Iterate u_p;       // the bodies' response to p
     std::vector<bool>       last_active;
+    PointVector             slip_values; // sigma_i b_i, 0: not slipping
+    PointVector             last_slip_values;
     std::vector<bool>       forced; // active only to hold floating modes
     std::vector<double>     alpha;  // floating modes' amplitudes
     PointVector             Ga;     // G alpha

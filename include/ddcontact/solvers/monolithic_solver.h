@@ -9,6 +9,7 @@
 
 #include <ddcontact/solvers/contact_interface.h>
 #include <ddcontact/solvers/contact_solver.h>
+#include <ddcontact/solvers/friction_history.h>
 
 #include <vector>
 
@@ -256,12 +257,10 @@ namespace ddcontact
     std::vector<types::global_dof_index> offset;
     AffineConstraints<double>            constraints;
     std::vector<Penetration>             penetrations;
-    PointVector                          last_slip; // s_i(u) of the last solve
-    PointVector last_multipliers;   // p and t of the last solve, on the nodes
-    bool        warm_start = false; // from last_multipliers (a load step)
-    PointVector slip_history, traction_history;
-    std::vector<std::vector<double>> point_slip_history; // per pair
-    SparsityPattern                  sparsity;
+    PointVector     last_multipliers;   // p and t of the last solve, on nodes
+    bool            warm_start = false; // from last_multipliers (a load step)
+    FrictionHistory history;
+    SparsityPattern sparsity;
   };
 } // namespace ddcontact
 

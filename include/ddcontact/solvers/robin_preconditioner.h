@@ -62,6 +62,13 @@ namespace ddcontact
    * first: the other body of that pair is the stiff side of the series.
    * Three bodies: 57 to 59 sets of body solves down to 34 to 39.
    *
+   * With friction (ContactInterface::has_friction()) the tangential
+   * multiplier of a node of a frictional pair has a row of its own, with
+   * the tangential load coefficients (ContactPoint::load_t1, load_t2):
+   * on the sticking nodes the bodies get springs along tau beside those
+   * along n, and the same formulas precondition (Theta + S_AA) on the
+   * unknowns (p, t).
+   *
    * One application is one set of body solves with these factorizations,
    * concurrently and on the bodies' processes, like the DD's solves.
    */

@@ -1,0 +1,84 @@
+#ifndef ddcontact_friction_history_h
+#define ddcontact_friction_history_h
+
+#include <ddcontact/contact/contact_problem.h>
+#include <ddcontact/solvers/contact_interface.h>
+
+#include <vector>
+
+namespace ddcontact
+{
+  using namespace dealii;
+
+  /**
+   * The frictional state that a load step hands to the next (friction is
+   * path dependent, doc/friction.md section 2): the averaged slip s_i,old
+   * and the tangential multiplier t_i,old of every node of S_1 at the end
+   * of the last step, and the slip at the pairs' points. It also turns an
+   * iterate of nodal multipliers into the frictional results of the
+   * pairs' laws (ContactLaw::set_friction()): the traction, slip and state
+   * at the points, the nodal values and the dissipated energy. Shared by
+   * the monolithic solver and dd-newton, whose nodes are the same
+   * (ContactInterface).
+   */
+  class FrictionHistory
+  {
+  public:
+    /** No history: the undeformed, traction-free state (a new run). */
+    void
+    clear();
+
+    /** The last published iterate (publish()) becomes the history of the
+     * next load step. */
+    void
+    start_load_step(const ContactProblem &problem);
+
+    /** s_i,old, 0 without history (the first step, or a node set that is
+     * no longer the one of the history). */
+    double
+    old_slip(const unsigned int i) const
+    {
+      return i < slips.size() && slips.size() == n_nodes ? slips[i] : 0.;
+    }
+
+    /** t_i,old, 0 without history. */
+    double
+    old_traction(const unsigned int i) const
+    {
+      return i < tractions.size() && tractions.size() == n_nodes ? tractions[i]
+                                                                 : 0.;
+    }
+
+    /** The nodes of the current mesh (interface.size()): a history of
+     * another node set is not used (old_slip() and old_traction() give 0). */
+    void
+    set_nodes(const unsigned int n)
+    {
+      n_nodes = n;
+    }
+
+    /**
+     * Hand the frictional results of the nodal pressures @p p, tangential
+     * multipliers @p t and averaged slips @p nodal_slips (interface.size()
+     * values each) to the laws of the frictional pairs; @p sigma_n is the
+     * normal stress at the points (per pair). The energy dissipated at
+     * node i is m_i t_i (ds_i - theta_i (t_i - t_i,old)): the slip beyond
+     * the penalty's elastic part, zero where the node sticks.
+     */
+    void
+    publish(ContactProblem                         &problem,
+            const ContactInterface                 &interface,
+            const PointVector                      &p,
+            const PointVector                      &t,
+            const PointVector                      &nodal_slips,
+            const std::vector<std::vector<double>> &sigma_n);
+
+  private:
+    unsigned int                     n_nodes = 0;
+    PointVector                      slips, tractions; // of the last step
+    PointVector                      last_slips, last_tractions; // published
+    std::vector<std::vector<double>> point_slips; // per pair, last step
+  };
+} // namespace ddcontact
+
+#endif
