@@ -363,13 +363,6 @@ namespace ddcontact
     prm.enter_subsection("Loading");
     load_steps = prm.get_integer("Steps");
     prm.leave_subsection();
-    // The history (slip, multipliers) does not move to new meshes yet.
-    if (load_steps > 1 && adaptation.enabled())
-      throw InputError("Loading/Steps: " + std::to_string(load_steps) +
-                       " load steps with Adaptation/Mode = " +
-                       selection_name(adaptation.mode) +
-                       "; adaptive meshes take one load step so far (set "
-                       "Adaptation/Mode = none, or Steps = 1)");
     // The combined algorithm (Fig. 2) interleaves single DD steps with the
     // refinement; the monolithic solver has no such steps.
     if (adaptation.mode == AdaptationMode::combined &&

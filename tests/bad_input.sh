@@ -285,7 +285,8 @@ friction="$src/prm/friction_patch.prm"
 case_ "negative friction coefficient" "Contact pair S/Friction coefficient: -0.3" "$friction" --set "Contact pair S/Friction coefficient=-mu"
 case_ "friction bound NaN" "Contact pair S/Friction bound" "$friction" --set "Contact pair S/Friction=tresca" --set "Contact pair S/Friction bound=sqrt(-1)"
 case_ "friction with the paper's dd" "Contact pair S/Friction: friction is solved by Contact solver/Solver = dd-newton or monolithic" "$friction" --set "Contact solver/Solver=dd"
-case_ "load steps with adaptation" "Loading/Steps: 3 load steps" "$paper" --set "Loading/Steps=3"
+case_ "friction with a floating body" "Body omega1/Dirichlet: the body is floating" "$friction" --set "Contact solver/Solver=dd-newton" --set "Body omega1/Boundary conditions/Dirichlet="
+case_ "no load step" "Steps" "$paper" --set "Loading/Steps=0"
 case_ "load parameter in the gap" "Contact pair S/Gap" "$friction" --set "Contact pair S/Gap=t"
 
 total=$(( $(grep -c -E '^(expect_code=[0-9]+ )?(mpi_|file_)?case_ ' "$0") + 3 ))  # and three checks of outputs

@@ -35,11 +35,17 @@ namespace ddcontact
   }
 
   void
-  FixedMeshes::solve()
+  AdaptiveStrategy::start_solver()
   {
     if (context.solver && !started)
       context.solver->initialize();
     started = true;
+  }
+
+  void
+  FixedMeshes::solve()
+  {
+    start_solver();
     solve_on_current_mesh();
   }
 
@@ -47,8 +53,7 @@ namespace ddcontact
   NestedAdaptation::solve()
   {
     auto &adaptation = *context.adaptation;
-    if (context.solver)
-      context.solver->initialize();
+    start_solver();
     for (unsigned int cycle = 0;; ++cycle)
     {
       solve_on_current_mesh();
@@ -73,7 +78,9 @@ namespace ddcontact
   {
     auto &solver     = *context.solver;
     auto &adaptation = *context.adaptation;
-    solver.initialize();
+    start_solver();
+    // Max cycles counts the adaptation steps of this call (load step).
+    const unsigned int first_step = adaptation.n_steps();
     // A step that marks no cell freezes the mesh: the estimate is skipped
     // until the DD has converged, when it is checked once more (the
     // indicator only moves with the data then, so this saves a BEM solve
@@ -89,7 +96,8 @@ namespace ddcontact
       }
       // A frozen mesh, or one that may not be refined any more (Max
       // cycles), is only checked again once the DD has converged.
-      const bool may_refine = adaptation.n_steps() < parameters.max_cycles;
+      const bool may_refine =
+        adaptation.n_steps() - first_step < parameters.max_cycles;
       if ((frozen || !may_refine) && !converged)
         continue;
 

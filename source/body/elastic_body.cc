@@ -262,10 +262,13 @@ namespace ddcontact
     // The Dirichlet values (5) of the new t; the same lines, so the
     // contact points' coefficients stay valid.
     make_constraints();
+    // The matrix does not change with t (the same constraint lines; only
+    // their inhomogeneities and the loads do): the factorization stays.
     if (solved_here)
     {
       assemble_system();
-      factorize();
+      if (!is_factorized)
+        factorize();
     }
   }
 

@@ -45,63 +45,6 @@ namespace ddcontact
         u[b].sadd(1 - tau, tau, v[b]);
     }
 
-    /**
-     * The nodal multipliers of exact contact (hat functions on S_1) on the
-     * nodes @p to of a refined zone from their values on the old nodes
-     * @p from: linear between the two nearest old nodes where the new node
-     * lies between them (a bisected face of S_1), else the nearest node's
-     * value. The piecewise constant transfer left every new node with its
-     * neighbour's value, and the first Newton step on the new mesh had to
-     * be damped to 1/8.
-     */
-    std::vector<double>
-    interpolated_node_values(const std::vector<Point<2>> &from,
-                             const std::vector<double>   &values,
-                             const std::vector<Point<2>> &to)
-    {
-      if (from.size() < 2 || values.size() != from.size())
-        return nearest_point_values(from, values, to);
-      std::vector<double> moved(to.size());
-      for (unsigned int q = 0; q < to.size(); ++q)
-      {
-        // The nearest old node a and the second nearest b, in one pass.
-        unsigned int a = 0, b = 1;
-        double       da = to[q].distance_square(from[0]),
-               db       = to[q].distance_square(from[1]);
-        if (db < da)
-        {
-          std::swap(a, b);
-          std::swap(da, db);
-        }
-        for (unsigned int i = 2; i < from.size(); ++i)
-        {
-          const double di = to[q].distance_square(from[i]);
-          if (di < da)
-          {
-            b  = a;
-            db = da;
-            a  = i;
-            da = di;
-          }
-          else if (di < db)
-          {
-            b  = i;
-            db = di;
-          }
-        }
-        // Between a and b: its projection on the chord falls inside it, and
-        // it lies near the chord (a curved zone bows by ~ h^2 / (8 R)).
-        const Tensor<1, 2> ab = from[b] - from[a];
-        const double       t  = ((to[q] - from[a]) * ab) / ab.norm_square();
-        const double       off =
-          (to[q] - (from[a] + t * ab)).norm() / std::sqrt(ab.norm_square());
-        moved[q] = (t > 0 && t < 1 && off < 0.1)
-                     ? (1 - t) * values[a] + t * values[b]
-                     : values[a];
-      }
-      return moved;
-    }
-
     /** The continuation's stages: t = 1, 1e-2, 1e-4, ... (with 1, 0.1,
      * 0.01: 30 and 32 sets at paper refinements 4 and 5, against 24 and
      * 25; the stage t = 0.1 costs more steps than it saves). */
@@ -135,7 +78,8 @@ namespace ddcontact
                          body->get_rigid_modes().description() +
                          "), and dd-newton solves floating bodies without "
                          "friction only; hold the body by a Dirichlet "
-                         "condition, or set Contact pair/Friction = none");
+                         "condition, or set Friction = none on its contact "
+                         "pairs");
   }
 
   void
@@ -149,6 +93,7 @@ namespace ddcontact
     continuation_pending = parameters.dd_newton.penalty_continuation;
     p.assign(interface.n_unknowns(), 0.);
     history.clear();
+    step_slip_directions.clear();
     history.set_nodes(interface.size());
     mesh_ready = false;
     setup_mesh();
@@ -274,15 +219,26 @@ namespace ddcontact
       const PointVector t = move(PointVector(old.begin() + n_old, old.end()));
       p.insert(p.end(), t.begin(), t.end());
     }
-    history.set_nodes(interface.size());
+    // The load-step history moves with the nodes; the states of the last
+    // step do not (the first step on the new mesh sticks).
+    history.transfer(problem, interface);
+    step_slip_directions.clear();
     mesh_ready = false;
   }
 
   void
   DDNewtonSolver::start_load_step()
   {
-    history.start_load_step(problem);
+    // The states of the last step start the next (monotonic loading keeps
+    // most of them; from sticking everywhere the stick zone would shrink
+    // back by about a node at each end per Newton step).
+    const auto directions = last_slip_directions;
+    history.start_load_step(problem, interface);
     ContactSolver::start_load_step();
+    step_slip_directions = directions;
+    // The same points and stiffness: the preconditioner's rows and its
+    // last factorization stay valid.
+    same_mesh = true;
   }
 
   void
@@ -291,7 +247,7 @@ namespace ddcontact
     ContactSolver::start_phase();
     phase_ready = false;
     last_active.clear();
-    last_slip_values.clear();
+    last_slip_directions.clear();
     alpha_stale = !coarse.empty();
   }
 
@@ -299,7 +255,9 @@ namespace ddcontact
   DDNewtonSolver::setup_mesh()
   {
     AssertDimension(p.size(), interface.n_unknowns());
-    preconditioner.setup(interface);
+    if (!same_mesh)
+      preconditioner.setup(interface);
+    same_mesh = false;
     coarse.reinit();
     alpha.assign(coarse.size(), 0.);
     Ga.assign(p.size(), 0.);
@@ -396,16 +354,25 @@ namespace ddcontact
       active[q] = closed(q, p, Sp, Ga);
     }
     // Friction: a closed node sticks while its trial traction is within
-    // the bound, else it slips with t = sigma b.
+    // the bound, else it slips with t = sigma b. With @p stick, it keeps
+    // its state of the last load step (slipping the same way), or sticks.
     slip_values.assign(interface.has_friction() ? n : 0, 0.);
+    slip_directions.assign(slip_values.size(), 0);
+    const bool last_step = step_slip_directions.size() == slip_values.size();
     for (unsigned int i = 0; i < slip_values.size(); ++i)
       if (active[i] && interface.friction_law(i) != FrictionLaw::none)
       {
         const auto [trial, bound] = trial_traction(i, p, Sp, Ga);
-        if (stick || std::abs(trial) <= bound)
+        const double direction    = !stick      ? trial
+                                    : last_step ? step_slip_directions[i]
+                                                : 0.;
+        if (direction == 0 || (!stick && std::abs(trial) <= bound))
           active[n + i] = true;
         else
-          slip_values[i] = (trial > 0 ? 1. : -1.) * bound;
+        {
+          slip_directions[i] = direction > 0 ? 1 : -1;
+          slip_values[i]     = slip_directions[i] * bound;
+        }
       }
     // Floating bodies need active unknowns that hold their rigid modes:
     // add those nearest to contact (largest d) until they do.
@@ -432,10 +399,9 @@ namespace ddcontact
     for (unsigned int q = 0; q < active.size(); ++q)
       n_changed += last_active.empty() || (active[q] != last_active[q]);
     // A node that slips the other way changes too.
-    if (last_slip_values.size() == slip_values.size())
-      for (unsigned int i = 0; i < slip_values.size(); ++i)
-        n_changed += (slip_values[i] > 0) != (last_slip_values[i] > 0) ||
-                     (slip_values[i] < 0) != (last_slip_values[i] < 0);
+    if (last_slip_directions.size() == slip_directions.size())
+      for (unsigned int i = 0; i < slip_directions.size(); ++i)
+        n_changed += slip_directions[i] != last_slip_directions[i];
     return active;
   }
 
@@ -576,12 +542,16 @@ namespace ddcontact
     }
     if (interface.has_friction())
     {
-      const unsigned int n = interface.size();
+      // The states of the step: a sticking node's t is active.
+      const unsigned int      n = interface.size();
+      const std::vector<bool> sticking(last_active.begin() + n,
+                                       last_active.end());
       history.publish(problem,
                       interface,
                       PointVector(p.begin(), p.begin() + n),
                       PointVector(p.begin() + n, p.end()),
                       interface.slip_average(last_u_tilde),
+                      sticking,
                       last_sigma_n);
     }
   }
@@ -633,9 +603,12 @@ namespace ddcontact
         parameters.dd_newton.max_newton_iterations)
       stop_at_iteration_limit("the Newton method of dd-newton");
 
-    // The first step of a phase lets every closed node stick: its iterate
-    // is no Newton iterate of these data, and sticking, the zone finds
-    // the direction of every slip from its traction.
+    // The first step of a phase lets every closed node stick, or keep its
+    // state of the last load step: its iterate is no Newton iterate of
+    // these data (a trial traction t + ds / c with c an element's
+    // compliance would throw every node with a slip increment into slip),
+    // and sticking, the zone finds the direction of every slip from its
+    // traction.
     const bool        first     = records.size() == phase_start;
     unsigned int      n_changed = 0;
     std::vector<bool> active    = active_set(n_changed, first);
@@ -707,8 +680,8 @@ namespace ddcontact
     const unsigned int cg = solve_active_system(active, tolerance, x, Sx, u_x);
     n_factorizations += preconditioner.factorizations() - factorizations;
     krylov_iterations += cg;
-    last_active      = active;
-    last_slip_values = slip_values;
+    last_active          = active;
+    last_slip_directions = slip_directions;
     // The floating modes' amplitudes: (Theta + S) x - d_0 = G alpha on the
     // active set (projected CG leaves only that part of the residual).
     std::vector<double> alpha_x;
@@ -722,10 +695,15 @@ namespace ddcontact
     // Damping: the largest tau = 1, 1/2, ... that reduces ||Phi||_W (d is
     // affine in p, so every trial is free); the full step if none does.
     // With floating bodies only between two pressures in equilibrium, so
-    // that the damped one is in equilibrium too.
-    double tau     = 1;
-    double psi_new = interface.norm(newton_residual(x, Sx, Gx));
-    if (psi_new >= psi && psi > 0 && balanced)
+    // that the damped one is in equilibrium too. Not the first step with
+    // friction, where every closed node sticks: it may raise the residual
+    // (the sticking traction exceeds the bound at the zone's ends), and a
+    // damped stick step leaves slip increments whose trial tractions
+    // (ds / c, c an element's compliance) throw every node into slip.
+    double     tau             = 1;
+    double     psi_new         = interface.norm(newton_residual(x, Sx, Gx));
+    const bool full_stick_step = first && interface.has_friction();
+    if (psi_new >= psi && psi > 0 && balanced && !full_stick_step)
       for (double t = 0.5; t > 1e-3; t /= 2)
       {
         PointVector p_t = p, Sp_t = Sp, Ga_t = Ga;

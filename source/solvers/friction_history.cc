@@ -7,21 +7,61 @@ namespace ddcontact
   void
   FrictionHistory::clear()
   {
+    nodes.clear();
     slips.clear();
     tractions.clear();
     last_slips.clear();
     last_tractions.clear();
     point_slips.clear();
+    points.clear();
   }
 
-  void
-  FrictionHistory::start_load_step(const ContactProblem &problem)
+  namespace
   {
+    /** The positions of pair @p k's contact points. */
+    std::vector<Point<2>>
+    positions(const ContactProblem &problem, const unsigned int k)
+    {
+      std::vector<Point<2>> x;
+      for (const auto &point : problem.get_pairs()[k]->points())
+        x.push_back(point.x);
+      return x;
+    }
+  } // namespace
+
+  void
+  FrictionHistory::start_load_step(const ContactProblem   &problem,
+                                   const ContactInterface &interface)
+  {
+    nodes     = interface.positions();
     slips     = last_slips;
     tractions = last_tractions;
     point_slips.assign(problem.get_pairs().size(), {});
+    points.assign(problem.get_pairs().size(), {});
     for (unsigned int k = 0; k < point_slips.size(); ++k)
+    {
       point_slips[k] = problem.law(k).get_friction().slip;
+      points[k]      = positions(problem, k);
+    }
+  }
+
+  void
+  FrictionHistory::transfer(const ContactProblem   &problem,
+                            const ContactInterface &interface)
+  {
+    n_nodes = interface.size();
+    if (slips.size() != nodes.size() || slips.empty())
+      return;
+    const auto &to = interface.positions();
+    slips          = interpolated_node_values(nodes, slips, to);
+    tractions      = interpolated_node_values(nodes, tractions, to);
+    nodes          = to;
+    for (unsigned int k = 0; k < point_slips.size(); ++k)
+    {
+      auto x         = positions(problem, k);
+      point_slips[k] = nearest_point_values(points[k], point_slips[k], x);
+      points[k]      = std::move(x);
+    }
   }
 
   void
@@ -30,16 +70,27 @@ namespace ddcontact
                            const PointVector                      &p,
                            const PointVector                      &t,
                            const PointVector                      &nodal_slips,
+                           const std::vector<bool>                &sticking,
                            const std::vector<std::vector<double>> &sigma_n)
   {
     const unsigned int n = interface.size();
     AssertDimension(t.size(), n);
     AssertDimension(nodal_slips.size(), n);
+    AssertDimension(sticking.size(), n);
     last_slips          = nodal_slips;
     last_tractions      = t;
     const auto &pairs   = problem.get_pairs();
     const auto &bodies  = problem.get_bodies();
     const auto  minus_t = interface.normal_stresses(t);
+    // The points with a sticking node.
+    std::vector<std::vector<bool>> sticks(pairs.size());
+    for (unsigned int k = 0; k < pairs.size(); ++k)
+      sticks[k].assign(pairs[k]->points().size(), false);
+    for (unsigned int i = 0; i < n; ++i)
+      if (sticking[i])
+        for (const auto &share : interface.shares(i))
+          if (share.psi > 0)
+            sticks[share.pair][share.point] = true;
     for (unsigned int k = 0; k < pairs.size(); ++k)
     {
       const auto &pair = *pairs[k];
@@ -70,16 +121,10 @@ namespace ddcontact
         }
       for (unsigned int q = 0; q < pair.points().size(); ++q)
       {
-        const double t_q = -minus_t[k][q];
-        result.t.push_back(t_q);
-        // Slipping where |t| reaches the bound (to round-off).
-        const double bound =
-          pair.points()[q].friction *
-          (pair.friction_law() == FrictionLaw::tresca ? 1. : -sigma_n[k][q]);
+        result.t.push_back(-minus_t[k][q]);
         result.state.push_back(sigma_n[k][q] == 0. ? ContactLaw::SlipState::open
-                               : std::abs(t_q) >= (1 - 1e-9) * bound
-                                 ? ContactLaw::SlipState::slip
-                                 : ContactLaw::SlipState::stick);
+                               : sticks[k][q] ? ContactLaw::SlipState::stick
+                                              : ContactLaw::SlipState::slip);
       }
       problem.law(k).set_friction(result);
     }

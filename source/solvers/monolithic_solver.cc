@@ -36,6 +36,9 @@ namespace ddcontact
   MonolithicContactSolver::reinit_after_refinement()
   {
     ContactSolver::reinit_after_refinement();
+    // The load-step history moves to the new nodes.
+    interface.reinit();
+    history.transfer(problem, interface);
     warm_start = false;
   }
 
@@ -43,7 +46,7 @@ namespace ddcontact
   MonolithicContactSolver::start_load_step()
   {
     // The last solve's slips and tractions.
-    history.start_load_step(problem);
+    history.start_load_step(problem, interface);
     ContactSolver::start_load_step();
     // The multipliers of the last step start the Newton method: its
     // active set is that of the last step where the data change little.
@@ -563,14 +566,21 @@ namespace ddcontact
 
     // The averaged slips of the nodes, for the laws' results and the
     // history.
-    PointVector slips(n_nodes);
+    PointVector       slips(n_nodes);
+    std::vector<bool> sticking(n_nodes);
+    const auto        states = active_set(u, p);
     for (unsigned int i = 0; i < n_nodes; ++i)
+    {
       slips[i] = penetrations[i].slip(u);
+      sticking[i] =
+        states[i] == closed && penetrations[i].law != FrictionLaw::none;
+    }
     history.publish(problem,
                     interface,
                     pressure,
                     PointVector(p.begin() + n_nodes, p.end()),
                     slips,
+                    sticking,
                     sigma_n);
   }
 } // namespace ddcontact

@@ -62,8 +62,17 @@ namespace ddcontact
     void
     solve_on_current_mesh();
 
+    /** Start the contact solver at the first solve(); the next calls (the
+     * load steps of Loading/Steps) go on from its last iterate and
+     * history, on the meshes the last step left. */
+    void
+    start_solver();
+
     const AdaptationParameters parameters;
     Context                    context;
+
+  private:
+    bool started = false;
   };
 
   /** Adaptation/Mode = none: one solve on the meshes of the input. */
@@ -72,19 +81,15 @@ namespace ddcontact
   public:
     using AdaptiveStrategy::AdaptiveStrategy;
 
-    /** The first call starts the solver; the next ones (load steps,
-     * Loading/Steps) go on from its last iterate. */
     void
     solve() override;
-
-  private:
-    bool started = false;
   };
 
   /**
    * The classical nested loop (Mode = nested) and uniform refinement
    * (Mode = uniform): solve on each mesh to convergence, then estimate,
    * mark, refine and transfer, until nothing is marked or Max cycles.
+   * With load steps every step adapts so, from the meshes of the last.
    */
   class NestedAdaptation : public AdaptiveStrategy
   {
@@ -98,7 +103,9 @@ namespace ddcontact
   /**
    * The combined algorithm of Fig. 2 (Mode = combined): one DD step
    * (20)-(21) (or one Newton step), then one adaptation step, until the
-   * DD has converged on a mesh that marks no cell. See solve().
+   * DD has converged on a mesh that marks no cell. See solve(). With
+   * load steps every step adapts so (Max cycles per step), from the
+   * meshes of the last.
    */
   class CombinedAlgorithm : public AdaptiveStrategy
   {

@@ -22,6 +22,21 @@ namespace ddcontact
                        const std::vector<Point<2>> &to);
 
   /**
+   * The nodal multipliers of exact contact, or another function on S_1
+   * in its hat functions (the slip history of friction), on the
+   * nodes @p to of a refined zone from their values on the old nodes
+   * @p from: linear between the two nearest old nodes where the new node
+   * lies between them (a bisected face of S_1), else the nearest node's
+   * value. The piecewise constant transfer left every new node with its
+   * neighbour's value, and the first Newton step on the new mesh had to
+   * be damped to 1/8.
+   */
+  std::vector<double>
+  interpolated_node_values(const std::vector<Point<2>> &from,
+                           const std::vector<double>   &values,
+                           const std::vector<Point<2>> &to);
+
+  /**
    * The contact law (20) of one pair, at its contact points:
    *   sigma_n = min(0, lambda + g / theta),  g = f_n - u_1n - u_2n,
    * with theta the pair's penalty and lambda the augmented Lagrangian's

@@ -53,7 +53,7 @@ namespace ddcontact
    * of body solves (all bodies at once, each reusing its factorization),
    * counted here.
    *
-   * **Friction** (constructed with friction, doc/friction.md section 7):
+   * **Friction** (constructed with friction, doc/friction.md section 4.2):
    * every node i also carries a tangential multiplier t_i, the unknown
    * size() + i, with the traction -t(x) tau on body 1 (t(x) = sum_i t_i
    * psi_i(x)) and the averaged slip s_i = (1/m_i) int_S1 psi_i (u_1 - u_2)

@@ -82,7 +82,7 @@ namespace ddcontact
    * unknowns nearest to contact.
    *
    * **Friction** (Contact pair/Friction = tresca or coulomb,
-   * doc/friction.md section 7): a tangential multiplier t_i per node
+   * doc/friction.md section 4.2): a tangential multiplier t_i per node
    * beside p_i (ContactInterface with friction: the unknowns (p, t), S
    * the response of the normal approach and of the slip to both). Every
    * node is open, sticks or slips, decided from the trial traction as in
@@ -209,9 +209,10 @@ namespace ddcontact
     /** The unknowns A of the Newton step, from the current iterate;
      * @p n_changed counts those that changed since the last step;
      * `forced` marks those added only to hold the floating modes. With
-     * friction the sticking nodes' tangential unknowns are active (all
-     * closed ones with @p stick: the first step of a load step), and
-     * `slip_values` holds sigma_i b_i of the slipping ones. */
+     * friction the sticking nodes' tangential unknowns are active (with
+     * @p stick, the first step of a phase: all closed ones, or those that
+     * stuck at the end of the last load step), `slip_directions` holds
+     * sigma_i of the slipping ones and `slip_values` sigma_i b_i. */
     std::vector<bool>
     active_set(unsigned int &n_changed, bool stick = false);
 
@@ -282,8 +283,9 @@ namespace ddcontact
     FrictionHistory      history;
     RobinPreconditioner  preconditioner{problem};
     RigidModeCoarseSpace coarse{problem, interface};
-    bool                 mesh_ready  = false; // interface, u_0, S p
-    bool                 phase_ready = false; // d_0 with the multipliers
+    bool                 mesh_ready = false; // interface, u_0, S p
+    bool same_mesh   = false; // a load step: the preconditioner is kept
+    bool phase_ready = false; // d_0 with the multipliers
 
     ContactProblem::Iterate u_0;       // the bodies under their data alone
     PointVector             d_0;       // its penetration
@@ -291,8 +293,10 @@ namespace ddcontact
     PointVector             p, Sp;     // the pressure and S p
     ContactProblem::Iterate u_p;       // the bodies' response to p
     std::vector<bool>       last_active;
-    PointVector             slip_values; // sigma_i b_i, 0: not slipping
-    PointVector             last_slip_values;
+    PointVector             slip_values;     // sigma_i b_i, 0: not slipping
+    std::vector<int>        slip_directions; // sigma_i, 0: not slipping
+    std::vector<int>        last_slip_directions;
+    std::vector<int>        step_slip_directions; // end of the last step
     std::vector<bool>       forced; // active only to hold floating modes
     std::vector<double>     alpha;  // floating modes' amplitudes
     PointVector             Ga;     // G alpha

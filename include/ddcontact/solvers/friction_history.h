@@ -29,9 +29,18 @@ namespace ddcontact
     clear();
 
     /** The last published iterate (publish()) becomes the history of the
-     * next load step. */
+     * next load step, on the nodes of @p interface and the pairs' points. */
     void
-    start_load_step(const ContactProblem &problem);
+    start_load_step(const ContactProblem   &problem,
+                    const ContactInterface &interface);
+
+    /** After a refinement (@p interface reinitialised on the new nodes):
+     * the history moves to the new nodes, linearly between the old ones
+     * (interpolated_node_values(): exact for the hat functions of a
+     * bisected face), and the slip at the points to the new points (the
+     * nearest old one). */
+    void
+    transfer(const ContactProblem &problem, const ContactInterface &interface);
 
     /** s_i,old, 0 without history (the first step, or a node set that is
      * no longer the one of the history). */
@@ -61,9 +70,13 @@ namespace ddcontact
      * Hand the frictional results of the nodal pressures @p p, tangential
      * multipliers @p t and averaged slips @p nodal_slips (interface.size()
      * values each) to the laws of the frictional pairs; @p sigma_n is the
-     * normal stress at the points (per pair). The energy dissipated at
-     * node i is m_i t_i (ds_i - theta_i (t_i - t_i,old)): the slip beyond
-     * the penalty's elastic part, zero where the node sticks.
+     * normal stress at the points (per pair), @p sticking the nodes that
+     * stick in the solver's states. A point in contact sticks where one of
+     * its nodes does, else it slips (between slipping or open nodes, where
+     * t = sigma b): the solver's states, not a comparison of |t| with the
+     * bound, which an iterative solver meets only to its tolerance. The energy
+     * dissipated at node i is m_i t_i (ds_i - theta_i (t_i - t_i,old)): the
+     * slip beyond the penalty's elastic part, zero where the node sticks.
      */
     void
     publish(ContactProblem                         &problem,
@@ -71,13 +84,16 @@ namespace ddcontact
             const PointVector                      &p,
             const PointVector                      &t,
             const PointVector                      &nodal_slips,
+            const std::vector<bool>                &sticking,
             const std::vector<std::vector<double>> &sigma_n);
 
   private:
-    unsigned int                     n_nodes = 0;
-    PointVector                      slips, tractions; // of the last step
-    PointVector                      last_slips, last_tractions; // published
-    std::vector<std::vector<double>> point_slips; // per pair, last step
+    unsigned int                       n_nodes = 0;
+    std::vector<Point<2>>              nodes; // where slips and tractions live
+    PointVector                        slips, tractions; // of the last step
+    PointVector                        last_slips, last_tractions; // published
+    std::vector<std::vector<double>>   point_slips; // per pair, last step
+    std::vector<std::vector<Point<2>>> points;      // where point_slips live
   };
 } // namespace ddcontact
 
