@@ -123,6 +123,10 @@ def cm_case(work, name, mu, solver, lower_E=1000, U=0.0015):
     # The law at the points: |t| <= mu p (the nodes satisfy it exactly).
     excess = max(abs(ti) - mu * pi for ti, pi in zip(t, p)) / max(abs(ti) for ti in t)
     row["law_excess"] = excess
+    # The monolithic solver meets the law to round-off; dd-newton to its
+    # iterate's accuracy, 1e-6 of the peak as in tests/cattaneo_mindlin.cc
+    # (a slipping node's t is mu times the last step's trial pressure).
+    limit = 1e-9 if solver == "monolithic" else 1e-6
     stick = [i for i in range(len(x)) if st[i] == 1]
     if lower_E != 1000:
         # No closed form: the law's invariants, and for dd-newton the
@@ -130,7 +134,7 @@ def cm_case(work, name, mu, solver, lower_E=1000, U=0.0015):
         # tests/cattaneo_mindlin.cc).
         row.update({"reference": "invariants (no closed form)",
                     "Q_over_muP": Q / (mu * P),
-                    "verdict": "ok" if excess < 1e-9 else "WRONG"})
+                    "verdict": "ok" if excess < limit else "WRONG"})
         if solver != "monolithic":
             difference = agreement(out, os.path.join(work, f"monolithic_{name}"))
             row["reference"] = "invariants and the monolithic solution"
@@ -151,7 +155,7 @@ def cm_case(work, name, mu, solver, lower_E=1000, U=0.0015):
     h = 20 / 8 / 2 ** 6  # the zone's cells
     row.update({"reference": "c/a = sqrt(1 - Q/(mu P)), to half a cell",
                 "Q_over_muP": Q / (mu * P), "error": abs(c / a - theory),
-                "verdict": "ok" if abs(c - theory * a) < 0.5 * h and excess < 1e-9
+                "verdict": "ok" if abs(c - theory * a) < 0.5 * h and excess < limit
                 else "WRONG"})
     return row
 

@@ -703,7 +703,11 @@ namespace ddcontact
     double     tau             = 1;
     double     psi_new         = interface.norm(newton_residual(x, Sx, Gx));
     const bool full_stick_step = first && interface.has_friction();
-    if (psi_new >= psi && psi > 0 && balanced && !full_stick_step)
+    // Nor a step from an iterate that already meets the tolerance: there
+    // the residual is round-off, which no step reduces, and damping would
+    // keep the active set from being confirmed by a full step.
+    if (psi_new >= psi && psi > stopping_tolerance(p) && balanced &&
+        !full_stick_step)
       for (double t = 0.5; t > 1e-3; t /= 2)
       {
         PointVector p_t = p, Sp_t = Sp, Ga_t = Ga;
