@@ -146,32 +146,33 @@ namespace ddcontact
   }
 
   std::vector<std::vector<double>>
+  ContactInterface::at_points(const PointVector &x,
+                              const unsigned int first,
+                              const double       factor) const
+  {
+    const auto                      &pairs = problem.get_pairs();
+    std::vector<std::vector<double>> values(pairs.size());
+    for (unsigned int k = 0; k < pairs.size(); ++k)
+      values[k].assign(pairs[k]->points().size(), 0.);
+    for (unsigned int i = 0; i < size(); ++i)
+      for (const auto &share : point_shares[i])
+        values[share.pair][share.point] += factor * share.psi * x[first + i];
+    return values;
+  }
+
+  std::vector<std::vector<double>>
   ContactInterface::normal_stresses(const PointVector &p) const
   {
     Assert(p.size() == size() || p.size() == n_unknowns(),
            ExcDimensionMismatch(p.size(), size()));
-    const auto                      &pairs = problem.get_pairs();
-    std::vector<std::vector<double>> sigma_n(pairs.size());
-    for (unsigned int k = 0; k < pairs.size(); ++k)
-      sigma_n[k].assign(pairs[k]->points().size(), 0.);
-    for (unsigned int i = 0; i < size(); ++i)
-      for (const auto &share : point_shares[i])
-        sigma_n[share.pair][share.point] -= share.psi * p[i];
-    return sigma_n;
+    return at_points(p, 0, -1.);
   }
 
   std::vector<std::vector<double>>
   ContactInterface::tangential_tractions(const PointVector &x) const
   {
     AssertDimension(x.size(), 2 * size());
-    const auto                      &pairs = problem.get_pairs();
-    std::vector<std::vector<double>> t(pairs.size());
-    for (unsigned int k = 0; k < pairs.size(); ++k)
-      t[k].assign(pairs[k]->points().size(), 0.);
-    for (unsigned int i = 0; i < size(); ++i)
-      for (const auto &share : point_shares[i])
-        t[share.pair][share.point] += share.psi * x[size() + i];
-    return t;
+    return at_points(x, size(), 1.);
   }
 
   std::vector<double>

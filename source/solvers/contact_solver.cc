@@ -73,15 +73,22 @@ namespace ddcontact
     // A floating body's equilibrium is a constraint on the contact
     // pressure that only dd-newton's coarse problem imposes (DDNewtonSolver
     // does not call this).
+    refuse_floating_bodies(bodies,
+                           "; only Contact solver/Solver = dd-newton solves "
+                           "floating bodies, not " +
+                             selection_name(parameters.solver));
+  }
+
+  void
+  ContactSolver::refuse_floating_bodies(
+    const std::vector<ElasticBody<2> *> &bodies, const std::string &reason)
+  {
     for (const auto *body : bodies)
       if (body->is_floating())
         throw InputError("Body " + body->name() +
                          "/Dirichlet: the body is floating (its Dirichlet "
                          "conditions leave its " +
-                         body->get_rigid_modes().description() +
-                         "); only Contact solver/Solver = dd-newton "
-                         "solves floating bodies, not " +
-                         selection_name(parameters.solver));
+                         body->get_rigid_modes().description() + ")" + reason);
   }
 
   void

@@ -68,18 +68,12 @@ namespace ddcontact
   DDNewtonSolver::check_scene(const ContactSolverParameters       &parameters,
                               const std::vector<ElasticBody<2> *> &bodies)
   {
-    if (!parameters.friction)
-      return;
-    for (const auto *body : bodies)
-      if (body->is_floating())
-        throw InputError("Body " + body->name() +
-                         "/Dirichlet: the body is floating (its Dirichlet "
-                         "conditions leave its " +
-                         body->get_rigid_modes().description() +
-                         "), and dd-newton solves floating bodies without "
-                         "friction only; hold the body by a Dirichlet "
-                         "condition, or set Friction = none on its contact "
-                         "pairs");
+    if (parameters.friction)
+      refuse_floating_bodies(bodies,
+                             ", and dd-newton solves floating bodies without "
+                             "friction only; hold the body by a Dirichlet "
+                             "condition, or set Friction = none on its "
+                             "contact pairs");
   }
 
   void

@@ -306,6 +306,11 @@ namespace ddcontact
     std::vector<std::vector<double>>
     jump(const ContactProblem::Iterate &u) const;
 
+    /** @p factor Psi^T of the size() values of @p x from index @p first:
+     * the field sum_i x_i psi_i at the points, one vector per pair. */
+    std::vector<std::vector<double>>
+    at_points(const PointVector &x, unsigned int first, double factor) const;
+
     /** M^{-1} Psi W @p values (values at the points, per pair). */
     PointVector
     average(const std::vector<std::vector<double>> &values) const;

@@ -101,6 +101,12 @@ namespace ddcontact
     check_scene(const ContactSolverParameters       &parameters,
                 const std::vector<ElasticBody<2> *> &bodies);
 
+    /** InputError naming the first floating body of @p bodies (its free
+     * rigid motions), followed by @p reason. */
+    static void
+    refuse_floating_bodies(const std::vector<ElasticBody<2> *> &bodies,
+                           const std::string                   &reason);
+
     /** A new run on the current meshes: resets the history and the
      * multipliers (derived classes then set up their iterate). Call after
      * the bodies and pairs have been set up. */
