@@ -51,18 +51,22 @@ namespace ddcontact
       const double reference = reference_of_pair(k);
       for (unsigned int i = first; i < point_shares.size(); ++i)
       {
-        double m = 0, bound = 0;
+        double m = 0;
+        for (const auto &share : point_shares[i])
+          m += share.psi * pairs[k]->points()[share.point].JxW;
+        // The friction bound averaged like the gap (the weights of the
+        // points in the node's average, psi w / m).
+        double bound = 0;
         for (const auto &share : point_shares[i])
         {
           const auto &point = pairs[k]->points()[share.point];
-          m += share.psi * point.JxW;
-          bound += share.psi * point.JxW * point.friction;
+          bound += share.psi * point.JxW / m * point.friction;
         }
         weights.push_back(m);
         thetas.push_back(theta);
         scales.push_back(m * c);
         references.push_back(reference);
-        bounds.push_back(bound / m);
+        bounds.push_back(bound);
         laws.push_back(pairs[k]->friction_law());
       }
     }
@@ -239,13 +243,19 @@ namespace ddcontact
     for (unsigned int k = 0; k < d.size(); ++k)
       for (unsigned int q = 0; q < d[k].size(); ++q)
         d[k][q] -= problem.law(k).shifted_gap(q);
-    PointVector averages = average(d);
+    return with_slips(average(d), u);
+  }
+
+  PointVector
+  ContactInterface::with_slips(PointVector                    normal,
+                               const ContactProblem::Iterate &u) const
+  {
     if (tangential)
     {
       const PointVector s = slip_average(u);
-      averages.insert(averages.end(), s.begin(), s.end());
+      normal.insert(normal.end(), s.begin(), s.end());
     }
-    return averages;
+    return normal;
   }
 
   PointVector
@@ -276,12 +286,7 @@ namespace ddcontact
         normal_stresses(x), u, true, ContactProblem::Exchange::traces);
     // A pressure pushes the bodies apart: the jump is -S x; a traction t
     // (-t tau on body 1) slips body 1 back: the slip is -S_t x.
-    Sx = average(jump(u));
-    if (tangential)
-    {
-      const PointVector s = slip_average(u);
-      Sx.insert(Sx.end(), s.begin(), s.end());
-    }
+    Sx = with_slips(average(jump(u)), u);
     for (double &v : Sx)
       v = -v;
     ++applications;

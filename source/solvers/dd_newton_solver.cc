@@ -88,7 +88,6 @@ namespace ddcontact
     p.assign(interface.n_unknowns(), 0.);
     history.clear();
     step_slip_directions.clear();
-    history.set_nodes(interface.size());
     mesh_ready = false;
     setup_mesh();
   }

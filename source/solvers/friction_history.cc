@@ -49,9 +49,9 @@ namespace ddcontact
   FrictionHistory::transfer(const ContactProblem   &problem,
                             const ContactInterface &interface)
   {
-    n_nodes = interface.size();
-    if (slips.size() != nodes.size() || slips.empty())
+    if (slips.empty())
       return;
+    AssertDimension(slips.size(), nodes.size());
     const auto &to = interface.positions();
     slips          = interpolated_node_values(nodes, slips, to);
     tractions      = interpolated_node_values(nodes, tractions, to);

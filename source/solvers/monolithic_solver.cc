@@ -141,13 +141,18 @@ namespace ddcontact
     interface.reinit();
     const auto &pairs = problem.get_pairs();
     penetrations.assign(interface.size(), Penetration());
-    history.set_nodes(interface.size());
     for (unsigned int i = 0; i < interface.size(); ++i)
     {
       auto &d  = penetrations[i];
       d.weight = interface.weight(i);
       d.theta  = interface.penalty(i);
       d.scale  = interface.complementarity_scale(i);
+      // The friction law and its bound g_i or mu_i, averaged like d.
+      if (friction)
+      {
+        d.law   = interface.friction_law(i);
+        d.bound = interface.friction_bound(i);
+      }
       // The normal (v) and, with friction, tangential (w) coefficient of
       // a dof.
       const auto add =
@@ -182,11 +187,6 @@ namespace ddcontact
         for (unsigned int j = 0; j < p.b.size(); ++j)
           add(
             p.dofs_2[j] + offset[b2], s * p.b[j], with_slip ? s * p.bt[j] : 0.);
-        if (with_slip)
-        {
-          d.law = pair.friction_law();
-          d.bound += s * p.friction;
-        }
         // lambda + g/theta = (f_n + theta lambda - u_1n - u_2n)/theta: the
         // multipliers shift the gap (not on the nodes, ContactLaw).
         d.f += s * problem.law(share.pair).shifted_gap(share.point);

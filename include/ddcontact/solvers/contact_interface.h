@@ -306,6 +306,11 @@ namespace ddcontact
     std::vector<std::vector<double>>
     jump(const ContactProblem::Iterate &u) const;
 
+    /** @p normal (normal values of the nodes), followed with friction by
+     * the averaged slips of @p u. */
+    PointVector
+    with_slips(PointVector normal, const ContactProblem::Iterate &u) const;
+
     /** @p factor Psi^T of the size() values of @p x from index @p first:
      * the field sum_i x_i psi_i at the points, one vector per pair. */
     std::vector<std::vector<double>>

@@ -42,28 +42,25 @@ namespace ddcontact
     void
     transfer(const ContactProblem &problem, const ContactInterface &interface);
 
-    /** s_i,old, 0 without history (the first step, or a node set that is
-     * no longer the one of the history). */
+    /** s_i,old of node @p i of the current nodes (transfer() keeps the
+     * history on them), 0 without history (the first load step). */
     double
     old_slip(const unsigned int i) const
     {
-      return i < slips.size() && slips.size() == n_nodes ? slips[i] : 0.;
+      if (slips.empty())
+        return 0.;
+      AssertIndexRange(i, slips.size());
+      return slips[i];
     }
 
     /** t_i,old, 0 without history. */
     double
     old_traction(const unsigned int i) const
     {
-      return i < tractions.size() && tractions.size() == n_nodes ? tractions[i]
-                                                                 : 0.;
-    }
-
-    /** The nodes of the current mesh (interface.size()): a history of
-     * another node set is not used (old_slip() and old_traction() give 0). */
-    void
-    set_nodes(const unsigned int n)
-    {
-      n_nodes = n;
+      if (tractions.empty())
+        return 0.;
+      AssertIndexRange(i, tractions.size());
+      return tractions[i];
     }
 
     /**
@@ -88,7 +85,6 @@ namespace ddcontact
             const std::vector<std::vector<double>> &sigma_n);
 
   private:
-    unsigned int                       n_nodes = 0;
     std::vector<Point<2>>              nodes; // where slips and tractions live
     PointVector                        slips, tractions; // of the last step
     PointVector                        last_slips, last_tractions; // published
