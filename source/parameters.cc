@@ -397,14 +397,13 @@ namespace ddcontact
       // The BEM's basis is the trace of the FEM basis (26): linear or
       // quadratic boundary elements (degree 3 is refused with the Degree).
       if (adaptation.enabled() && adaptation.mode != AdaptationMode::uniform &&
-          adaptation.estimator != EstimatorType::kelly &&
-          body_parameters(b).degree > 2)
+          is_fem_bem(adaptation.estimator) && body_parameters(b).degree > 2)
         throw InputError(
           "Adaptation/Estimator: " + to_string(adaptation.estimator) +
           " builds a BEM with linear or quadratic elements, but body '" + b +
           "' has Element/Degree = " +
           std::to_string(body_parameters(b).degree) +
-          "; use Estimator = kelly or Degree = 1 or 2");
+          "; use Estimator = kelly or residual, or Degree = 1 or 2");
     }
 
     contact_pairs.clear();

@@ -9,6 +9,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <ddcontact/adaptivity/residual_estimator.h>
 #include <ddcontact/body/elastic_body.h>
 
 #include "test_tools.h"
@@ -286,6 +287,19 @@ namespace
       table.add_value("L2", l2);
       table.add_value("H1", h1);
 
+      // The residual estimator (Adaptation/Estimator = residual) bounds
+      // the energy error from above and below (Verfuerth), so it converges
+      // at the H1 rate with a bounded ratio eta/H1. Every term is tested:
+      // without the tractions of sides 1 and 3 its boundary terms would be
+      // |sigma(u_h) n|, which does not vanish, without the body force f
+      // the cell term would not either, and without the cell term the
+      // degree-2 estimate converges faster than the error.
+      ResidualEstimator residual(body);
+      residual.estimate(body.get_solution(), {});
+      const double eta = residual.indicators().l2_norm();
+      table.add_value("eta", eta);
+      table.add_value("eta/H1", eta / h1);
+
       if (c.local_refinement)
         check(n_hanging > 0,
               "cycle " + std::to_string(cycle) + " has hanging nodes");
@@ -302,9 +316,14 @@ namespace
     table.set_precision("H1", 3);
     table.set_scientific("L2", true);
     table.set_scientific("H1", true);
+    table.set_precision("eta", 3);
+    table.set_scientific("eta", true);
+    table.set_precision("eta/H1", 3);
     table.evaluate_convergence_rates("L2",
                                      ConvergenceTable::reduction_rate_log2);
     table.evaluate_convergence_rates("H1",
+                                     ConvergenceTable::reduction_rate_log2);
+    table.evaluate_convergence_rates("eta",
                                      ConvergenceTable::reduction_rate_log2);
     table.write_text(std::cout, TableHandler::org_mode_table);
 
@@ -312,7 +331,7 @@ namespace
     // within 0.1 of the theoretical one: the levels are chosen to be in the
     // asymptotic range.
     const std::vector<std::pair<std::string, double>> expected = {
-      {"L2", c.degree + 1.}, {"H1", 1. * c.degree}};
+      {"L2", c.degree + 1.}, {"H1", 1. * c.degree}, {"eta", 1. * c.degree}};
     for (const auto &[key, rate] : expected)
     {
       const auto rates = table.log2_rates(key);

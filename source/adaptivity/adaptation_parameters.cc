@@ -10,7 +10,8 @@ namespace ddcontact
   DDCONTACT_SELECTION(EstimatorType,
                       {"fem-bem", EstimatorType::fem_bem},
                       {"fem-bem-scaled", EstimatorType::fem_bem_scaled},
-                      {"kelly", EstimatorType::kelly})
+                      {"kelly", EstimatorType::kelly},
+                      {"residual", EstimatorType::residual})
   DDCONTACT_SELECTION(MarkingType,
                       {"threshold", MarkingType::threshold},
                       {"fraction", MarkingType::fraction},
@@ -60,7 +61,12 @@ namespace ddcontact
       "||sigma_B||/|Omega|; fem-bem-scaled: the same with square roots of "
       "the areas (local RMS stress error over global RMS stress, which "
       "decreases with h); kelly: the Kelly gradient-jump estimator (no "
-      "BEM), on quadrilaterals and triangles.");
+      "BEM), on quadrilaterals and triangles; residual: the explicit residual "
+      "estimator of elasticity, Kelly's face jumps of the traction "
+      "sigma(u_h) n, the residual g - sigma(u_h) n on the faces with "
+      "traction data (Neumann, traction free, and the contact zone with "
+      "the whole contact traction) and the cell residual f + div "
+      "sigma(u_h) (no BEM).");
     prm.declare_entry("Marking",
                       "threshold",
                       selection_pattern<MarkingType>(),
@@ -127,7 +133,7 @@ namespace ddcontact
         throw InputError("Adaptation/Target error: " + target +
                          " is not in (0, 1); give a relative error such as "
                          "0.01, or none");
-      if (estimator == EstimatorType::kelly || mode == AdaptationMode::uniform)
+      if (!is_fem_bem(estimator) || mode == AdaptationMode::uniform)
         throw InputError("Adaptation/Target error: needs Estimator = "
                          "fem-bem or fem-bem-scaled and Mode = combined or "
                          "nested (only the FEM-BEM estimate is a relative "

@@ -74,7 +74,8 @@ namespace ddcontact
         !estimator->comparable_with_delta())
       throw InputError("Adaptation/Marking: threshold compares eta with the "
                        "dimensionless delta of (27) and needs a fem-bem "
-                       "estimator; use fraction or doerfler with kelly");
+                       "estimator; use fraction or doerfler with kelly or "
+                       "residual");
   }
 
   void

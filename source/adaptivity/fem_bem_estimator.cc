@@ -14,7 +14,7 @@ namespace ddcontact
     , scaled(variant == EstimatorType::fem_bem_scaled)
     , bem(body.get_material(), body.get_boundary_conditions())
   {
-    Assert(variant != EstimatorType::kelly, ExcInternalError());
+    Assert(is_fem_bem(variant), ExcInternalError());
     // The boundary mesh (25) follows the FEM mesh: any refinement makes
     // the BEM stale, and it is rebuilt at the next estimate.
     mesh_changed = body.get_triangulation().signals.any_change.connect(

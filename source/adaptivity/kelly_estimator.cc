@@ -1,7 +1,5 @@
 #include <deal.II/base/quadrature_lib.h>
 
-#include <deal.II/distributed/tria_base.h>
-
 #include <deal.II/fe/fe_values.h>
 
 #include <deal.II/numerics/error_estimator.h>
@@ -65,16 +63,38 @@ namespace ddcontact
     }
   } // namespace
 
+  Tensor<1, 2>
+  face_flux(const std::vector<Tensor<1, 2>> &gradient,
+            const Tensor<1, 2>              &normal,
+            const Material                  *material)
+  {
+    Tensor<1, 2> f;
+    if (material == nullptr)
+    {
+      for (unsigned int c = 0; c < gradient.size(); ++c)
+        f[c] = gradient[c] * normal;
+      return f;
+    }
+    SymmetricTensor<2, 2> strain;
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = i; j < 2; ++j)
+        strain[i][j] = 0.5 * (gradient[i][j] + gradient[j][i]);
+    return material->stress(strain) * normal / (2. * material->mu());
+  }
+
   void
-  face_jump_indicators(const Mapping<2>    &mapping,
-                       const DoFHandler<2> &dof_handler,
-                       const Quadrature<1> &face_quadrature,
-                       const BodyVector    &solution,
-                       Vector<double>      &eta)
+  face_jump_integrals(const Mapping<2>    &mapping,
+                      const DoFHandler<2> &dof_handler,
+                      const Quadrature<1> &face_quadrature,
+                      const BodyVector    &solution,
+                      const Material      *material,
+                      Vector<double>      &jumps)
   {
     const auto        &fe           = dof_handler.get_fe();
     const unsigned int n_components = fe.n_components();
-    const unsigned int n_q          = face_quadrature.size();
+    Assert(n_components <= 2, ExcNotImplemented());
+    Assert(material == nullptr || n_components == 2, ExcNotImplemented());
+    const unsigned int n_q = face_quadrature.size();
     FEFaceValues<2>    fine(mapping,
                          fe,
                          face_quadrature,
@@ -91,7 +111,7 @@ namespace ddcontact
     // interior face, or sub-face of a coarse cell's face, is integrated
     // once from its finer side (between equals, from the lower index), on
     // exactly the points deal.II's FESubfaceValues would use.
-    Vector<double> jumps(dof_handler.get_triangulation().n_active_cells());
+    jumps.reinit(dof_handler.get_triangulation().n_active_cells());
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
       {
@@ -119,15 +139,28 @@ namespace ddcontact
                      grad_other);
         double integral = 0;
         for (unsigned int q = 0; q < n_q; ++q)
-          for (unsigned int c = 0; c < n_components; ++c)
-            integral +=
-              std::pow((grad[q][c] - grad_other[q][c]) * fine.normal_vector(q),
-                       2) *
-              fine.JxW(q);
+        {
+          const Tensor<1, 2> &n = fine.normal_vector(q);
+          integral += (face_flux(grad[q], n, material) -
+                       face_flux(grad_other[q], n, material))
+                        .norm_square() *
+                      fine.JxW(q);
+        }
         jumps(cell->active_cell_index()) += integral;
         jumps(neighbor->active_cell_index()) += integral;
       }
+  }
 
+  void
+  face_jump_indicators(const Mapping<2>    &mapping,
+                       const DoFHandler<2> &dof_handler,
+                       const Quadrature<1> &face_quadrature,
+                       const BodyVector    &solution,
+                       Vector<double>      &eta)
+  {
+    Vector<double> jumps;
+    face_jump_integrals(
+      mapping, dof_handler, face_quadrature, solution, nullptr, jumps);
     eta.reinit(jumps.size());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -159,17 +192,6 @@ namespace ddcontact
                                        kelly);
       eta = kelly;
     }
-    // On a partitioned mesh every process estimates only its own cells;
-    // each cell has one owner, so on a shared mesh the sum is the whole
-    // estimate (triangle meshes are never distributed). A distributed one
-    // keeps the owned cells' values.
-    if (const auto *tria = dynamic_cast<const parallel::TriangulationBase<2> *>(
-          &body.get_triangulation());
-        tria && !body.is_mesh_distributed())
-      Utilities::MPI::sum(eta, tria->get_communicator(), eta);
-    if (body.is_mesh_distributed())
-      for (const auto &cell : body.get_triangulation().active_cell_iterators())
-        if (!cell->is_locally_owned())
-          eta(cell->active_cell_index()) = 0.;
+    combine_process_values(body, eta);
   }
 } // namespace ddcontact

@@ -25,13 +25,23 @@ namespace ddcontact
   };
 
   /** Adaptation/Estimator: eta_FB of (27) as printed; the local RMS stress
-   * error relative to the global RMS stress; Kelly's, the baseline. */
+   * error relative to the global RMS stress; Kelly's, the baseline; the
+   * explicit residual estimator, with the Neumann and contact data. */
   enum class EstimatorType
   {
     fem_bem,
     fem_bem_scaled,
-    kelly
+    kelly,
+    residual
   };
+
+  /** Whether @p type compares FEM with BEM stresses (and builds a BEM). */
+  inline bool
+  is_fem_bem(const EstimatorType type)
+  {
+    return type == EstimatorType::fem_bem ||
+           type == EstimatorType::fem_bem_scaled;
+  }
 
   /** Adaptation/Marking: eta > delta as in (27), a fixed fraction, or
    * Doerfler's bulk criterion. */

@@ -58,6 +58,15 @@ namespace ddcontact
     virtual bool
     comparable_with_delta() const = 0;
   };
+
+  /**
+   * Turns @p eta, computed by every process on its locally owned cells
+   * only, into the convention of ErrorEstimator: on a serial or shared
+   * mesh every cell's value (the sum over the processes), on a
+   * distributed one the owned cells' values and zero elsewhere.
+   */
+  void
+  combine_process_values(const ElasticBody<2> &body, Vector<double> &eta);
 } // namespace ddcontact
 
 #endif

@@ -8,6 +8,7 @@
 #include <deal.II/fe/mapping.h>
 
 #include <ddcontact/adaptivity/error_estimator.h>
+#include <ddcontact/body/material.h>
 
 namespace ddcontact
 {
@@ -38,6 +39,32 @@ namespace ddcontact
                        const Quadrature<1> &face_quadrature,
                        const BodyVector    &solution,
                        Vector<double>      &eta);
+
+  /**
+   * The flux across a face at one point, from the gradients of the
+   * components: each component's normal derivative (Kelly's), or with a
+   * @p material the traction sigma(u_h) n / (2 mu) of Hooke's law (2),
+   * elasticity's own flux, scaled to the units of a strain.
+   */
+  Tensor<1, 2>
+  face_flux(const std::vector<Tensor<1, 2>> &gradient,
+            const Tensor<1, 2>              &normal,
+            const Material                  *material);
+
+  /**
+   * The face integrals of face_jump_indicators() per active cell, before
+   * the factor h_K/24: the sum over the interior (sub-)faces F of K of
+   * int_F |[face_flux()]|^2, with or without a @p material. @p jumps is resized
+   * to the number of active cells; only faces with a locally owned side are
+   * integrated.
+   */
+  void
+  face_jump_integrals(const Mapping<2>    &mapping,
+                      const DoFHandler<2> &dof_handler,
+                      const Quadrature<1> &face_quadrature,
+                      const BodyVector    &solution,
+                      const Material      *material,
+                      Vector<double>      &jumps);
 
   /**
    * Kelly's indicator: the jump of the normal derivative of the FEM

@@ -1,0 +1,269 @@
+#include <deal.II/base/polynomial.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/full_matrix.h>
+
+#include <ddcontact/adaptivity/kelly_estimator.h>
+#include <ddcontact/adaptivity/residual_estimator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace ddcontact
+{
+  namespace
+  {
+    using Gradients = std::vector<std::vector<Tensor<1, 2>>>;
+  } // namespace
+
+  namespace
+  {
+    /** The contact faces of a body that this process knows (owned and
+     * ghost cells), with the samples of the contact load nearest to each:
+     * on body 1 of a pair they are Gauss points of its faces, on body 2
+     * the projections of those, on pieces that S_2's vertices split
+     * (ContactPair), so every sample lies inside one face. */
+    struct ContactFaces
+    {
+      std::vector<std::pair<DoFHandler<2>::active_cell_iterator, unsigned int>>
+                                             faces;
+      std::vector<std::vector<unsigned int>> samples; // per face
+
+      ContactFaces(const ElasticBody<2>          &body,
+                   const BoundaryTractionSamples &contact)
+      {
+        const auto &ids = body.get_boundary_conditions().contact;
+        for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+          if (!cell->is_artificial())
+            for (const unsigned int f : cell->face_indices())
+              if (cell->at_boundary(f) &&
+                  ids.count(cell->face(f)->boundary_id()) > 0)
+                faces.emplace_back(cell, f);
+        samples.resize(faces.size());
+        for (unsigned int q = 0; q < contact.points.size(); ++q)
+        {
+          unsigned int nearest  = numbers::invalid_unsigned_int;
+          double       distance = std::numeric_limits<double>::max();
+          for (unsigned int i = 0; i < faces.size(); ++i)
+          {
+            const auto   face = faces[i].first->face(faces[i].second);
+            const double d    = point_segment_distance(
+              contact.points[q], face->vertex(0), face->vertex(1));
+            if (d < distance)
+            {
+              distance = d;
+              nearest  = i;
+            }
+          }
+          // A sample of a face this process does not know (an artificial
+          // cell of a distributed mesh) is far from every face it knows.
+          if (nearest != numbers::invalid_unsigned_int &&
+              distance <=
+                0.25 *
+                  faces[nearest].first->face(faces[nearest].second)->diameter())
+            samples[nearest].push_back(q);
+        }
+      }
+
+      static double
+      point_segment_distance(const Point<2> &x,
+                             const Point<2> &a,
+                             const Point<2> &b)
+      {
+        const Tensor<1, 2> t = b - a;
+        const double s = std::clamp((x - a) * t / t.norm_square(), 0., 1.);
+        return x.distance(a + s * t);
+      }
+    };
+
+    /** The coordinate in [0, 1] of @p x along the chord from @p a to @p b. */
+    double
+    chord_coordinate(const Point<2> &x, const Point<2> &a, const Point<2> &b)
+    {
+      const Tensor<1, 2> t = b - a;
+      return (x - a) * t / t.norm_square();
+    }
+  } // namespace
+
+  void
+  ResidualEstimator::add_boundary_residuals(
+    const BodyVector              &solution,
+    const BoundaryTractionSamples &contact,
+    Vector<double>                &integrals) const
+  {
+    const QGauss<1>             face_quadrature(body.get_fe().degree + 1);
+    const auto                 &conditions = body.get_boundary_conditions();
+    const Material             &material   = body.get_material();
+    const unsigned int          n_q        = face_quadrature.size();
+    const unsigned int          degree     = body.get_fe().degree;
+    FEFaceValues<2>             values(body.get_mapping(),
+                           body.get_fe(),
+                           face_quadrature,
+                           update_gradients | update_normal_vectors |
+                             update_quadrature_points | update_JxW_values);
+    Gradients                   grad(n_q, std::vector<Tensor<1, 2>>(2));
+    std::vector<Vector<double>> neumann(n_q, Vector<double>(2));
+    std::vector<Tensor<1, 2>>   g(n_q);
+
+    // The contact load per face: its L2 projection on the Legendre
+    // polynomials of degree <= the element's in the chord coordinate.
+    const ContactFaces contact_faces(body, contact);
+    const auto         legendre =
+      Polynomials::Legendre::generate_complete_basis(degree);
+    std::map<std::pair<unsigned int, unsigned int>, unsigned int> face_index;
+    for (unsigned int i = 0; i < contact_faces.faces.size(); ++i)
+      face_index[{contact_faces.faces[i].first->active_cell_index(),
+                  contact_faces.faces[i].second}] = i;
+
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+        {
+          if (!cell->at_boundary(f))
+            continue;
+          const types::boundary_id id = cell->face(f)->boundary_id();
+          ComponentMask            prescribed(2, false);
+          if (const auto d = conditions.dirichlet.find(id);
+              d != conditions.dirichlet.end())
+            prescribed = d->second.mask;
+          if (prescribed.n_selected_components(2) == 2)
+            continue;
+          values.reinit(cell, f);
+          values.get_function_gradients(solution, grad);
+
+          std::fill(g.begin(), g.end(), Tensor<1, 2>());
+          if (const auto t = conditions.neumann.find(id);
+              t != conditions.neumann.end())
+          {
+            t->second->vector_value_list(values.get_quadrature_points(),
+                                         neumann);
+            for (unsigned int q = 0; q < n_q; ++q)
+              for (unsigned int c = 0; c < 2; ++c)
+                g[q][c] = neumann[q](c);
+          }
+          if (const auto i = face_index.find({cell->active_cell_index(), f});
+              i != face_index.end() &&
+              !contact_faces.samples[i->second].empty())
+          {
+            const auto         face = cell->face(f);
+            const Point<2>     a = face->vertex(0), b = face->vertex(1);
+            const unsigned int n = legendre.size();
+            FullMatrix<double> gram(n, n);
+            for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const double s =
+                chord_coordinate(values.quadrature_point(q), a, b);
+              for (unsigned int j = 0; j < n; ++j)
+                for (unsigned int k = 0; k < n; ++k)
+                  gram(j, k) +=
+                    legendre[j].value(s) * legendre[k].value(s) * values.JxW(q);
+            }
+            gram.gauss_jordan();
+            std::vector<Tensor<1, 2>> moments(n), coefficients(n);
+            for (const unsigned int p : contact_faces.samples[i->second])
+            {
+              const double s = chord_coordinate(contact.points[p], a, b);
+              for (unsigned int j = 0; j < n; ++j)
+                moments[j] += contact.weights[p] * legendre[j].value(s) *
+                              contact.traction[p];
+            }
+            for (unsigned int j = 0; j < n; ++j)
+              for (unsigned int k = 0; k < n; ++k)
+                coefficients[j] += gram(j, k) * moments[k];
+            for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const double s =
+                chord_coordinate(values.quadrature_point(q), a, b);
+              for (unsigned int j = 0; j < n; ++j)
+                g[q] += legendre[j].value(s) * coefficients[j];
+            }
+          }
+
+          double integral = 0;
+          for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const Tensor<1, 2> r =
+              g[q] / (2. * material.mu()) -
+              face_flux(grad[q], values.normal_vector(q), &material);
+            for (unsigned int c = 0; c < 2; ++c)
+              if (!prescribed[c])
+                integral += r[c] * r[c] * values.JxW(q);
+          }
+          integrals(cell->active_cell_index()) += integral;
+        }
+  }
+
+  ResidualEstimator::ResidualEstimator(const ElasticBody<2> &body)
+    : body(body)
+  {
+  }
+
+  void
+  ResidualEstimator::add_cell_residuals(const BodyVector &solution,
+                                        Vector<double>   &integrals) const
+  {
+    const Material    &material = body.get_material();
+    const auto        &force    = body.get_boundary_conditions().body_force;
+    const double       lambda = material.lambda(), mu = material.mu();
+    const auto        &quadrature = body.get_cell_quadrature();
+    const unsigned int n_q        = quadrature.size();
+    FEValues<2>        values(body.get_mapping(),
+                       body.get_fe(),
+                       quadrature,
+                       update_hessians | update_quadrature_points |
+                         update_JxW_values);
+    std::vector<std::vector<Tensor<2, 2>>> hessians(
+      n_q, std::vector<Tensor<2, 2>>(2));
+    std::vector<Vector<double>> f(n_q, Vector<double>(2));
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        values.reinit(cell);
+        values.get_function_hessians(solution, hessians);
+        if (force)
+          force->vector_value_list(values.get_quadrature_points(), f);
+        double integral = 0;
+        for (unsigned int q = 0; q < n_q; ++q)
+        {
+          // div sigma(u) = lambda grad div u + mu (Laplace u + grad div u)
+          // (Hooke's law (2), homogeneous body).
+          const auto  &H          = hessians[q];
+          const double grad_div_0 = H[0][0][0] + H[1][1][0];
+          const double grad_div_1 = H[0][0][1] + H[1][1][1];
+          Tensor<1, 2> r;
+          r[0] = (lambda + mu) * grad_div_0 + mu * trace(H[0]);
+          r[1] = (lambda + mu) * grad_div_1 + mu * trace(H[1]);
+          if (force)
+            for (unsigned int c = 0; c < 2; ++c)
+              r[c] += f[q](c);
+          integral += (r / (2. * mu)).norm_square() * values.JxW(q);
+        }
+        integrals(cell->active_cell_index()) += cell->diameter() * integral;
+      }
+  }
+
+  void
+  ResidualEstimator::estimate(const BodyVector              &u_fem,
+                              const BoundaryTractionSamples &contact)
+  {
+    Vector<double> integrals;
+    face_jump_integrals(body.get_mapping(),
+                        body.get_dof_handler(),
+                        QGauss<1>(body.get_fe().degree + 1),
+                        u_fem,
+                        &body.get_material(),
+                        integrals);
+    add_boundary_residuals(u_fem, contact, integrals);
+    add_cell_residuals(u_fem, integrals);
+    eta.reinit(integrals.size());
+    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        eta(cell->active_cell_index()) = std::sqrt(
+          cell->diameter() / 24. * integrals(cell->active_cell_index()));
+    combine_process_values(body, eta);
+  }
+} // namespace ddcontact
