@@ -8,9 +8,11 @@ and the shear in step 2 (prm/cattaneo_mindlin.prm).
 - graded: the scene's mesh, its refinement box (the zone) refined r times
   (the a-priori grading of tests/cattaneo_mindlin.cc);
 - adaptive: 8 x 4 cells with the box refined 3 times, then the nested loop
-  of Adaptation/Mode = nested with Kelly's estimator on both blocks, in
-  every load step (the slip history moves with the mesh), up to
-  Max cycles per step.
+  of Adaptation/Mode = nested on both blocks, in every load step (the slip
+  history moves with the mesh), up to Max cycles per step, with Kelly's
+  estimator (gradient jumps only) or the residual estimator (traction
+  jumps, the whole contact traction as Neumann data, cell residual), or
+  the scaled FEM-BEM estimator (whose BEM is loaded by the same traction).
 
 The reference is Cattaneo-Mindlin at the computed force: a and p0 of Hertz
 at P, c = a sqrt(1 - Q/(mu P)), and t(x) = mu p0/a (sqrt(a^2 - x^2) -
@@ -51,7 +53,7 @@ def mindlin_traction(x, a, p0, c):
     return q
 
 
-def run(kind, level, out):
+def run(kind, level, out, estimator="kelly"):
     settings = ["Contact solver/Solver=dd-newton", "Output/Write vtu=false"]
     for body in ("upper", "lower"):
         if kind == "uniform":
@@ -63,7 +65,8 @@ def run(kind, level, out):
             settings += [f"Body {body}/Mesh/Box refinement=3"]
     if kind == "adaptive":
         settings += ["Adaptation/Mode=nested", "Adaptation/Bodies=upper, lower",
-                     "Adaptation/Estimator=kelly", "Adaptation/Marking=fraction",
+                     f"Adaptation/Estimator={estimator}",
+                     "Adaptation/Marking=fraction",
                      "Adaptation/Fraction=0.2", f"Adaptation/Max cycles={level}"]
     args = [EXE, "--output", out, SCENE]
     for s in settings:
@@ -87,7 +90,8 @@ def run(kind, level, out):
     error = math.sqrt(sum(wi * (ti - qi) ** 2 for wi, ti, qi in zip(w, t, q)))
     norm = math.sqrt(sum(wi * qi ** 2 for wi, qi in zip(w, q)))
     theory = math.sqrt(1 - Q / (MU * P))
-    return {"mesh": kind, "level": level,
+    return {"mesh": kind, "estimator": estimator if kind == "adaptive" else "",
+            "level": level,
             "unknowns": sum(b["dofs"] for b in summary["bodies"]),
             "contact_points": len(x),
             "Q_over_muP": Q / (MU * P),
@@ -100,15 +104,21 @@ def run(kind, level, out):
 
 def main():
     rows = []
-    cases = [("uniform", r) for r in (2, 3, 4, 5)] + \
-            [("graded", r) for r in (4, 5, 6, 7, 8)] + \
-            [("adaptive", k) for k in (2, 4, 6, 8)]
+    cases = [("uniform", r, "") for r in (2, 3, 4, 5)] + \
+            [("graded", r, "") for r in (4, 5, 6, 7, 8)] + \
+            [("adaptive", k, e) for e in ("kelly", "residual", "fem-bem-scaled")
+             for k in (2, 4, 6, 8)]
+    only = os.environ.get("STUDY_ONLY")  # e.g. "adaptive:residual"
     with tempfile.TemporaryDirectory() as work:
-        for kind, level in cases:
-            row = run(kind, level, os.path.join(work, f"{kind}{level}"))
+        for kind, level, estimator in cases:
+            if only and f"{kind}:{estimator}" != only:
+                continue
+            row = run(kind, level,
+                      os.path.join(work, f"{kind}{estimator}{level}"),
+                      estimator or "kelly")
             print(row, flush=True)
             rows.append(row)
-    keys = ["mesh", "level", "unknowns", "contact_points", "Q_over_muP", "c_over_a",
+    keys = ["mesh", "estimator", "level", "unknowns", "contact_points", "Q_over_muP", "c_over_a",
             "c_over_a_theory", "c_over_a_error", "t_L2_error", "newton_steps",
             "wall_time_s"]
     write_csv("friction-adaptivity.csv", keys, rows)

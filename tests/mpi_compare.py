@@ -82,6 +82,18 @@ def compare(a, b, path, scale, failures):
             # of it), so it carries the approach's round-off.
             if key == "max_penetration" and "approach" in a:
                 scale = abs(a["approach"])
+            # A pair's friction results at the scale of its contact force:
+            # the tangential force of a pressing step is round-off of the
+            # normal force (1e-16 of it, and the two runs' round-off
+            # differ), and the dissipation, zero there, is compared at the
+            # work of that force over the zone's half-width, a bound of
+            # anything friction can dissipate on the zone.
+            if key in ("tangential_force", "dissipated_energy") and \
+                    "force" in a and \
+                    all(isinstance(f, float) for f in a["force"]):
+                scale = max(abs(f) for f in a["force"])
+                if key == "dissipated_energy":
+                    scale *= abs(a.get("half_width") or 0.0)
             compare(a[key], b[key], f"{path}/{key}", scale, failures)
     elif isinstance(a, list):
         if len(a) != len(b):
