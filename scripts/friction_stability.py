@@ -11,6 +11,8 @@ checked against something independent, or must stop with a one-line error:
   no closed form, and Coulomb's discrete solution need not be unique for
   large mu. The law's invariants are checked, and dd-newton's p and t
   against the monolithic solver's at every point.
+dd-newton runs twice: with Coulomb's bound by the fixed point (the default)
+and by Newton with GMRES (Coulomb linearization = newton).
 
 Writes doc/friction-stability.csv.
 
@@ -37,16 +39,19 @@ M = E * (1 - NU) / ((1 + NU) * (1 - 2 * NU))
 G = E / (2 * (1 + NU))
 
 
-SOLVERS = ("monolithic", "dd-newton")
+# dd-newton-gmres: dd-newton with Coulomb linearization = newton.
+SOLVERS = ("monolithic", "dd-newton", "dd-newton-gmres")
 
 
 def run(scene, settings, out, solver):
     args = [EXE, "--output", out, scene, "--set", "Output/Write vtu=false",
-            "--set", f"Contact solver/Solver={solver}"]
+            "--set", "Contact solver/Solver=" + solver.replace("-gmres", "")]
     # dd-newton's CG stops at Tolerance of the data; the checks ask 1e-8 of
     # the closed form.
-    if solver == "dd-newton":
+    if solver.startswith("dd-newton"):
         args += ["--set", "Contact solver/Tolerance=1e-11"]
+    if solver == "dd-newton-gmres":
+        args += ["--set", "Contact solver/DD-Newton/Coulomb linearization=newton"]
     for s in settings:
         args += ["--set", s]
     done = subprocess.run(args, capture_output=True, text=True, timeout=600)
@@ -74,6 +79,7 @@ def patch_case(work, name, law, bound, c, U, solver):
     row = {"case": name, "solver": solver, "scene": "patch", "law": law, "bound": bound,
            "penalty_c": c if c > 0 else "exact", "exit": code,
            "newton_steps": summary["newton_steps"] if summary else "",
+           "body_solve_sets": summary.get("body_solve_sets", "") if summary else "",
            "message": error if code else ""}
     if code == 0:
         f = read_profile(out)
@@ -111,6 +117,7 @@ def cm_case(work, name, mu, solver, lower_E=1000, U=0.0015):
            ("" if lower_E == 1000 else f", E_lower/E_upper = {lower_E / 1000:g}"),
            "law": "coulomb", "bound": mu, "penalty_c": "exact", "exit": code,
            "newton_steps": summary["newton_steps"] if summary else "",
+           "body_solve_sets": summary.get("body_solve_sets", "") if summary else "",
            "message": error if code else ""}
     if code != 0:
         row["verdict"] = "refused" if code in (1, 4) else "FAIL"
@@ -185,6 +192,7 @@ def main():
                                          "verdict", "error", "Q_over_muP", "message")},
                   flush=True)
     keys = ["case", "solver", "scene", "law", "bound", "penalty_c", "exit", "newton_steps",
+            "body_solve_sets",
             "reference", "Q_over_muP", "error", "law_excess", "verdict", "message"]
     write_csv("friction-stability.csv", keys, rows)
 

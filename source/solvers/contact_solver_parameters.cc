@@ -19,6 +19,9 @@ namespace ddcontact
                       {"residual", StoppingTest::residual},
                       {"paper", StoppingTest::paper},
                       {"both", StoppingTest::both})
+  DDCONTACT_SELECTION(CoulombLinearization,
+                      {"fixed-point", CoulombLinearization::fixed_point},
+                      {"newton", CoulombLinearization::newton})
   DDCONTACT_SELECTION(InitialGuess,
                       {"zero", InitialGuess::zero},
                       {"elastic-layer", InitialGuess::elastic_layer})
@@ -118,6 +121,15 @@ namespace ddcontact
       "H (1 - nu^2)/E of both bodies, t = 1, 1e-2, ...) before the pair's "
       "own theta or exact contact, so that the Newton steps do not grow as "
       "the mesh is refined.");
+    prm.declare_entry(
+      "Coulomb linearization",
+      "fixed-point",
+      selection_pattern<CoulombLinearization>(),
+      "fixed-point: a slipping node's traction is mu times its trial "
+      "pressure at the start of the Newton step, so that the step stays "
+      "symmetric (CG); newton: t = sigma mu p is coupled into the step, "
+      "which is then nonsymmetric and solved by GMRES (Friction = coulomb "
+      "only).");
   }
 
   void
@@ -125,6 +137,8 @@ namespace ddcontact
   {
     max_newton_iterations = prm.get_integer("Max Newton iterations");
     penalty_continuation  = prm.get_bool("Penalty continuation");
+    coulomb =
+      parse_selection<CoulombLinearization>(prm.get("Coulomb linearization"));
   }
 
   void

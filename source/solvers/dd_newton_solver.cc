@@ -1,8 +1,13 @@
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/vector.h>
+
 #include <ddcontact/contact/contact_law.h>
 #include <ddcontact/solvers/dd_newton_solver.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -350,6 +355,7 @@ namespace ddcontact
     // the bound, else it slips with t = sigma b. With @p stick, it keeps
     // its state of the last load step (slipping the same way), or sticks.
     slip_values.assign(interface.has_friction() ? n : 0, 0.);
+    slip_coupling.assign(slip_values.size(), 0.);
     slip_directions.assign(slip_values.size(), 0);
     const bool last_step = step_slip_directions.size() == slip_values.size();
     for (unsigned int i = 0; i < slip_values.size(); ++i)
@@ -365,6 +371,10 @@ namespace ddcontact
         {
           slip_directions[i] = direction > 0 ? 1 : -1;
           slip_values[i]     = slip_directions[i] * bound;
+          // Coulomb linearization = newton: t = sigma mu p in the step.
+          if (!stick && interface.friction_law(i) == FrictionLaw::coulomb &&
+              parameters.dd_newton.coulomb == CoulombLinearization::newton)
+            slip_coupling[i] = slip_directions[i] * interface.friction_bound(i);
         }
       }
     // Floating bodies need active unknowns that hold their rigid modes:
@@ -425,6 +435,128 @@ namespace ddcontact
     return coarse.amplitudes(r);
   }
 
+  double
+  DDNewtonSolver::fixed_value(const unsigned int q, const PointVector &x) const
+  {
+    if (!interface.is_tangential(q))
+      return 0.;
+    const unsigned int i = interface.node(q);
+    return slip_coupling[i] != 0 ? slip_coupling[i] * x[i] : slip_values[i];
+  }
+
+  unsigned int
+  DDNewtonSolver::solve_coupled_system(const std::vector<bool> &active,
+                                       const double             tolerance,
+                                       PointVector             &x,
+                                       PointVector             &Sx,
+                                       ContactProblem::Iterate &u_x)
+  {
+    const unsigned int n = x.size(), n_nodes = interface.size();
+    // E: an increment y of the active unknowns, extended by the slipping
+    // tangentials that follow their nodes' pressures.
+    const auto extend = [&](const Vector<double> &y)
+    {
+      PointVector z(n, 0.);
+      for (unsigned int q = 0; q < n; ++q)
+        if (active[q])
+          z[q] = y[q];
+      for (unsigned int i = 0; i < n_nodes; ++i)
+        if (slip_coupling[i] != 0)
+          z[n_nodes + i] = slip_coupling[i] * y[i];
+      return z;
+    };
+    // The M inner product as the Euclidean one of sqrt(w) y.
+    std::vector<double> root_weight(n);
+    for (unsigned int q = 0; q < n; ++q)
+      root_weight[q] = std::sqrt(interface.weight(q));
+    const auto scaled = [&](const PointVector &v, Vector<double> &out)
+    {
+      for (unsigned int q = 0; q < n; ++q)
+        out[q] = active[q] ? root_weight[q] * v[q] : 0.;
+    };
+    const auto unscaled = [&](const Vector<double> &v)
+    {
+      Vector<double> out(n);
+      for (unsigned int q = 0; q < n; ++q)
+        out[q] = active[q] ? v[q] / root_weight[q] : 0.;
+      return out;
+    };
+
+    unsigned int sets = 0;
+    const auto   apply_operator =
+      [&](const PointVector &z, PointVector &Sz, ContactProblem::Iterate &u_z)
+    {
+      interface.apply(z, u_z, Sz);
+      ++sets;
+      PointVector Mz(n, 0.);
+      for (unsigned int q = 0; q < n; ++q)
+        if (active[q])
+          Mz[q] = interface.penalty(q) * z[q] + Sz[q];
+      return Mz;
+    };
+
+    // The residual d_0 - (Theta + S) x on the active set.
+    Vector<double> r(n);
+    {
+      PointVector residual(n, 0.);
+      for (unsigned int q = 0; q < n; ++q)
+        if (active[q])
+          residual[q] = d_0[q] - (interface.penalty(q) * x[q] + Sx[q]);
+      scaled(residual, r);
+    }
+    if (r.l2_norm() <= tolerance)
+      return 0;
+
+    struct Operator
+    {
+      std::function<void(Vector<double> &, const Vector<double> &)> apply;
+      void
+      vmult(Vector<double> &dst, const Vector<double> &src) const
+      {
+        apply(dst, src);
+      }
+    };
+    Operator step_operator{
+      [&](Vector<double> &dst, const Vector<double> &src)
+      {
+        PointVector             Sz;
+        ContactProblem::Iterate u_z;
+        scaled(apply_operator(extend(unscaled(src)), Sz, u_z), dst);
+      }};
+    preconditioner.update(active);
+    Operator robin{[&](Vector<double> &dst, const Vector<double> &src)
+                   {
+                     const Vector<double> v = unscaled(src);
+                     PointVector          z, residual(v.begin(), v.end());
+                     preconditioner.vmult(z, residual, active);
+                     scaled(z, dst);
+                   }};
+
+    SolverControl control(max_cg_iterations, tolerance, false, false);
+    SolverGMRES<Vector<double>>::AdditionalData data;
+    data.max_n_tmp_vectors     = 100;
+    data.right_preconditioning = true;
+    SolverGMRES<Vector<double>> gmres(control, data);
+    Vector<double>              y(n);
+    try
+    {
+      gmres.solve(step_operator, y, r, robin);
+    }
+    catch (const SolverControl::NoConvergence &)
+    {
+      // As CG: the step goes on with what it has; the Newton method's
+      // residual decides.
+    }
+    const PointVector       dz = extend(unscaled(y));
+    PointVector             S_dz;
+    ContactProblem::Iterate u_dz;
+    apply_operator(dz, S_dz, u_dz);
+    add(x, 1., dz);
+    add(Sx, 1., S_dz);
+    add(u_x, 1., u_dz);
+    return sets;
+  }
+
   unsigned int
   DDNewtonSolver::solve_active_system(const std::vector<bool> &active,
                                       const double             tolerance,
@@ -432,6 +564,10 @@ namespace ddcontact
                                       PointVector             &Sx,
                                       ContactProblem::Iterate &u_x)
   {
+    if (std::any_of(slip_coupling.begin(),
+                    slip_coupling.end(),
+                    [](const double k) { return k != 0; }))
+      return solve_coupled_system(active, tolerance, x, Sx, u_x);
     const unsigned int n = x.size();
     // (Theta + S) y restricted to the active set, from y and S y.
     const auto operator_on_active =
@@ -645,8 +781,7 @@ namespace ddcontact
     bool        any_fixed = false;
     for (unsigned int q = 0; q < p.size(); ++q)
     {
-      const double fixed =
-        interface.is_tangential(q) ? slip_values[interface.node(q)] : 0.;
+      const double fixed = fixed_value(q, p);
       if (!active[q] && p[q] != fixed)
       {
         fixing[q] = fixed - p[q];

@@ -47,7 +47,16 @@ namespace ddcontact
     elastic_layer // "elastic-layer" (the Winkler model)
   };
 
+  /** Contact solver/DD-Newton/Coulomb linearization: how a Newton step of
+   * dd-newton treats the Coulomb bound mu p of a slipping node. */
+  enum class CoulombLinearization
+  {
+    fixed_point, // "fixed-point": mu times the trial pressure, lagged
+    newton       // t = sigma mu p coupled into the step (GMRES)
+  };
+
   DDCONTACT_DECLARE_SELECTION(ContactSolverType)
+  DDCONTACT_DECLARE_SELECTION(CoulombLinearization)
   DDCONTACT_DECLARE_SELECTION(RelaxationType)
   DDCONTACT_DECLARE_SELECTION(StoppingTest)
   DDCONTACT_DECLARE_SELECTION(InitialGuess)
@@ -91,8 +100,9 @@ namespace ddcontact
   /** Contact solver/DD-Newton: Solver = dd-newton (DDNewtonSolver). */
   struct DDNewtonParameters
   {
-    unsigned int max_newton_iterations = 50;
-    bool         penalty_continuation  = true;
+    unsigned int         max_newton_iterations = 50;
+    bool                 penalty_continuation  = true;
+    CoulombLinearization coulomb = CoulombLinearization::fixed_point;
 
     static void
     declare(ParameterHandler &prm);

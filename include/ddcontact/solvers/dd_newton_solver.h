@@ -259,6 +259,32 @@ namespace ddcontact
                         PointVector             &Sx,
                         ContactProblem::Iterate &u_x);
 
+    /**
+     * The Newton step with Coulomb linearization = newton: as
+     * solve_active_system(), but a slipping Coulomb node's t follows its
+     * pressure, t_i = sigma_i mu_i p_i (`slip_coupling`), instead of
+     * being fixed. The rows of the active set then see the slipping
+     * tangentials through S: the step's operator R_A (Theta + S) E (E
+     * extends y on the active set by the coupled tangentials) is not
+     * symmetric, and deal.II's GMRES solves it, right preconditioned by the
+     * Robin problems of the active set, in the inner product of M (scaled
+     * by the square roots of the weights). One more set of body solves
+     * gives S x and the bodies' response for the new x. Returns the sets
+     * of body solves.
+     */
+    unsigned int
+    solve_coupled_system(const std::vector<bool> &active,
+                         double                   tolerance,
+                         PointVector             &x,
+                         PointVector             &Sx,
+                         ContactProblem::Iterate &u_x);
+
+    /** The value of the unknown @p q off the active set for the iterate
+     * @p x: zero, or a slipping node's sigma b (Coulomb linearization =
+     * newton: sigma mu x_i of its pressure). */
+    double
+    fixed_value(unsigned int q, const PointVector &x) const;
+
     /** The bodies' solutions u_0 + u_p, and the last loads and body
      * solutions for the estimator (on the processes that do not solve a
      * body only its traces, until complete_iterate()). */
@@ -294,6 +320,7 @@ namespace ddcontact
     ContactProblem::Iterate u_p;       // the bodies' response to p
     std::vector<bool>       last_active;
     PointVector             slip_values;     // sigma_i b_i, 0: not slipping
+    PointVector             slip_coupling;   // sigma_i mu_i (newton), or 0
     std::vector<int>        slip_directions; // sigma_i, 0: not slipping
     std::vector<int>        last_slip_directions;
     std::vector<int>        step_slip_directions; // end of the last step
