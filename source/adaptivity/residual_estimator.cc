@@ -18,15 +18,14 @@ namespace ddcontact
   namespace
   {
     using Gradients = std::vector<std::vector<Tensor<1, 2>>>;
-  } // namespace
 
-  namespace
-  {
     /** The contact faces of a body that this process knows (owned and
      * ghost cells), with the samples of the contact load nearest to each:
      * on body 1 of a pair they are Gauss points of its faces, on body 2
      * the projections of those, on pieces that S_2's vertices split
-     * (ContactPair), so every sample lies inside one face. */
+     * (ContactPair), so every sample lies inside one face. The nearest
+     * face is found by looking at all of them (samples times faces: some
+     * 1e7 distances at 5e5 unknowns, tens of milliseconds). */
     struct ContactFaces
     {
       std::vector<std::pair<DoFHandler<2>::active_cell_iterator, unsigned int>>
