@@ -11,8 +11,8 @@ checked against something independent, or must stop with a one-line error:
   no closed form, and Coulomb's discrete solution need not be unique for
   large mu. The law's invariants are checked, and dd-newton's p and t
   against the monolithic solver's at every point.
-dd-newton runs twice: with Coulomb's bound by the fixed point (the default)
-and by Newton with GMRES (Coulomb linearization = newton).
+dd-newton runs twice: with Coulomb's bound by Newton with GMRES (the
+default) and by the fixed point (Coulomb linearization = fixed-point).
 
 Writes doc/friction-stability.csv.
 
@@ -39,19 +39,20 @@ M = E * (1 - NU) / ((1 + NU) * (1 - 2 * NU))
 G = E / (2 * (1 + NU))
 
 
-# dd-newton-gmres: dd-newton with Coulomb linearization = newton.
-SOLVERS = ("monolithic", "dd-newton", "dd-newton-gmres")
+# dd-newton-fixed-point: dd-newton with Coulomb linearization = fixed-point
+# (dd-newton's default is newton).
+SOLVERS = ("monolithic", "dd-newton", "dd-newton-fixed-point")
 
 
 def run(scene, settings, out, solver):
     args = [EXE, "--output", out, scene, "--set", "Output/Write vtu=false",
-            "--set", "Contact solver/Solver=" + solver.replace("-gmres", "")]
+            "--set", "Contact solver/Solver=" + solver.replace("-fixed-point", "")]
     # dd-newton's CG stops at Tolerance of the data; the checks ask 1e-8 of
     # the closed form.
     if solver.startswith("dd-newton"):
         args += ["--set", "Contact solver/Tolerance=1e-11"]
-    if solver == "dd-newton-gmres":
-        args += ["--set", "Contact solver/DD-Newton/Coulomb linearization=newton"]
+    if solver == "dd-newton-fixed-point":
+        args += ["--set", "Contact solver/DD-Newton/Coulomb linearization=fixed-point"]
     for s in settings:
         args += ["--set", s]
     done = subprocess.run(args, capture_output=True, text=True, timeout=600)

@@ -65,12 +65,16 @@ def write_csv(name, keys, rows):
 
 
 def run(level, steps, friction, out, subdivisions=8, solver="monolithic"):
-    settings = [f"Contact solver/Solver={solver}",
+    # dd-newton-fixed-point: dd-newton with Coulomb linearization =
+    # fixed-point (the default is newton).
+    settings = ["Contact solver/Solver=" + solver.replace("-fixed-point", ""),
                 f"Body upper/Mesh/Box refinement={level}",
                 f"Body lower/Mesh/Box refinement={level}",
                 f"Body upper/Mesh/Subdivisions={subdivisions}, {subdivisions // 2}",
                 f"Body lower/Mesh/Subdivisions={subdivisions}, {subdivisions // 2}",
                 "Output/Write vtu=false"]
+    if solver == "dd-newton-fixed-point":
+        settings.append("Contact solver/DD-Newton/Coulomb linearization=fixed-point")
     if not friction:
         # The same nodal multipliers without friction: the monolithic
         # solver takes exact contact on the nodes only with friction (else

@@ -123,13 +123,13 @@ namespace ddcontact
       "the mesh is refined.");
     prm.declare_entry(
       "Coulomb linearization",
-      "fixed-point",
+      "newton",
       selection_pattern<CoulombLinearization>(),
-      "fixed-point: a slipping node's traction is mu times its trial "
-      "pressure at the start of the Newton step, so that the step stays "
-      "symmetric (CG); newton: t = sigma mu p is coupled into the step, "
-      "which is then nonsymmetric and solved by GMRES (Friction = coulomb "
-      "only).");
+      "newton: a slipping node's t = sigma mu p is coupled into the Newton "
+      "step, which is then nonsymmetric and solved by GMRES; fixed-point: "
+      "its traction is mu times its trial pressure at the start of the "
+      "step, so that the step stays symmetric (CG), at more Newton steps "
+      "where the bodies differ (Friction = coulomb only).");
   }
 
   void

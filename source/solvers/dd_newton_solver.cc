@@ -1,13 +1,8 @@
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/solver_gmres.h>
-#include <deal.II/lac/vector.h>
-
 #include <ddcontact/contact/contact_law.h>
 #include <ddcontact/solvers/dd_newton_solver.h>
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -67,6 +62,11 @@ namespace ddcontact
     /** The Newton iteration stops after at most this many CG iterations
      * per step (a safeguard; the counts are tens). */
     constexpr unsigned int max_cg_iterations = 500;
+
+    /** GMRES (Coulomb linearization = newton) keeps at most this many
+     * directions, each with the bodies' response: the step goes on with
+     * what they give (the counts are a few per step). */
+    constexpr unsigned int max_gmres_directions = 50;
   } // namespace
 
   void
@@ -454,7 +454,7 @@ namespace ddcontact
     const unsigned int n = x.size(), n_nodes = interface.size();
     // E: an increment y of the active unknowns, extended by the slipping
     // tangentials that follow their nodes' pressures.
-    const auto extend = [&](const Vector<double> &y)
+    const auto extend = [&](const PointVector &y)
     {
       PointVector z(n, 0.);
       for (unsigned int q = 0; q < n; ++q)
@@ -465,95 +465,96 @@ namespace ddcontact
           z[n_nodes + i] = slip_coupling[i] * y[i];
       return z;
     };
-    // The M inner product as the Euclidean one of sqrt(w) y.
-    std::vector<double> root_weight(n);
-    for (unsigned int q = 0; q < n; ++q)
-      root_weight[q] = std::sqrt(interface.weight(q));
-    const auto scaled = [&](const PointVector &v, Vector<double> &out)
-    {
-      for (unsigned int q = 0; q < n; ++q)
-        out[q] = active[q] ? root_weight[q] * v[q] : 0.;
-    };
-    const auto unscaled = [&](const Vector<double> &v)
-    {
-      Vector<double> out(n);
-      for (unsigned int q = 0; q < n; ++q)
-        out[q] = active[q] ? v[q] / root_weight[q] : 0.;
-      return out;
-    };
-
-    unsigned int sets = 0;
-    const auto   apply_operator =
-      [&](const PointVector &z, PointVector &Sz, ContactProblem::Iterate &u_z)
-    {
-      interface.apply(z, u_z, Sz);
-      ++sets;
-      PointVector Mz(n, 0.);
-      for (unsigned int q = 0; q < n; ++q)
-        if (active[q])
-          Mz[q] = interface.penalty(q) * z[q] + Sz[q];
-      return Mz;
-    };
 
     // The residual d_0 - (Theta + S) x on the active set.
-    Vector<double> r(n);
+    PointVector r(n, 0.);
+    for (unsigned int q = 0; q < n; ++q)
+      if (active[q])
+        r[q] = d_0[q] - (interface.penalty(q) * x[q] + Sx[q]);
+    const double beta = interface.norm(r);
+    if (beta <= tolerance)
+      return 0;
+    preconditioner.update(active);
+
+    // GMRES, right preconditioned by the Robin problems, in the inner
+    // product of M. Ours, not deal.II's SolverGMRES: it keeps each Krylov
+    // direction's extension Z_j = E P v_j with S Z_j and the bodies'
+    // response, so that the increment sum_j y_j Z_j comes with its S and
+    // its displacements without another set of body solves.
+    std::vector<PointVector>             V{r}, Z, SZ;
+    std::vector<ContactProblem::Iterate> UZ;
+    for (double &v : V[0])
+      v /= beta;
+    std::vector<std::vector<double>> H; // H[j] = column j, j + 2 entries
+    std::vector<double>              cs, sn, g{beta};
+    unsigned int                     sets = 0;
+    for (unsigned int j = 0; j < max_gmres_directions; ++j)
     {
-      PointVector residual(n, 0.);
+      PointVector Pv;
+      preconditioner.vmult(Pv, V[j], active);
+      Z.push_back(extend(Pv));
+      SZ.emplace_back();
+      UZ.emplace_back();
+      interface.apply(Z[j], UZ[j], SZ[j]);
+      ++sets;
+      PointVector w(n, 0.);
       for (unsigned int q = 0; q < n; ++q)
         if (active[q])
-          residual[q] = d_0[q] - (interface.penalty(q) * x[q] + Sx[q]);
-      scaled(residual, r);
-    }
-    if (r.l2_norm() <= tolerance)
-      return 0;
-
-    struct Operator
-    {
-      std::function<void(Vector<double> &, const Vector<double> &)> apply;
-      void
-      vmult(Vector<double> &dst, const Vector<double> &src) const
+          w[q] = interface.penalty(q) * Z[j][q] + SZ[j][q];
+      // Arnoldi by modified Gram-Schmidt.
+      std::vector<double> h(j + 2, 0.);
+      for (unsigned int i = 0; i <= j; ++i)
       {
-        apply(dst, src);
+        h[i] = interface.inner(w, V[i]);
+        add(w, -h[i], V[i]);
       }
-    };
-    Operator step_operator{
-      [&](Vector<double> &dst, const Vector<double> &src)
+      h[j + 1] = interface.norm(w);
+      // The earlier rotations, then a new one that zeroes h[j + 1].
+      for (unsigned int i = 0; i < j; ++i)
       {
-        PointVector             Sz;
-        ContactProblem::Iterate u_z;
-        scaled(apply_operator(extend(unscaled(src)), Sz, u_z), dst);
-      }};
-    preconditioner.update(active);
-    Operator robin{[&](Vector<double> &dst, const Vector<double> &src)
-                   {
-                     const Vector<double> v = unscaled(src);
-                     PointVector          z, residual(v.begin(), v.end());
-                     preconditioner.vmult(z, residual, active);
-                     scaled(z, dst);
-                   }};
-
-    SolverControl control(max_cg_iterations, tolerance, false, false);
-    SolverGMRES<Vector<double>>::AdditionalData data;
-    data.max_n_tmp_vectors     = 100;
-    data.right_preconditioning = true;
-    SolverGMRES<Vector<double>> gmres(control, data);
-    Vector<double>              y(n);
-    try
-    {
-      gmres.solve(step_operator, y, r, robin);
+        const double a = h[i], b = h[i + 1];
+        h[i]     = cs[i] * a + sn[i] * b;
+        h[i + 1] = -sn[i] * a + cs[i] * b;
+      }
+      const double rho = std::hypot(h[j], h[j + 1]);
+      cs.push_back(rho > 0 ? h[j] / rho : 1.);
+      sn.push_back(rho > 0 ? h[j + 1] / rho : 0.);
+      const double breakdown = h[j + 1];
+      h[j]                   = rho;
+      h[j + 1]               = 0.;
+      H.push_back(h);
+      g.push_back(-sn[j] * g[j]);
+      g[j] *= cs[j];
+      // |g_{j+1}| is the residual's M-norm after j + 1 directions.
+      if (std::abs(g[j + 1]) <= tolerance || breakdown == 0.)
+        break;
+      for (double &v : w)
+        v /= breakdown;
+      V.push_back(w);
     }
-    catch (const SolverControl::NoConvergence &)
+    // The least-squares coefficients: H y = g, H upper triangular.
+    const unsigned int  m = H.size();
+    std::vector<double> y(m);
+    for (unsigned int i = m; i-- > 0;)
     {
-      // As CG: the step goes on with what it has; the Newton method's
-      // residual decides.
+      double sum = g[i];
+      for (unsigned int k = i + 1; k < m; ++k)
+        sum -= H[k][i] * y[k];
+      y[i] = sum / H[i][i];
     }
-    const PointVector       dz = extend(unscaled(y));
-    PointVector             S_dz;
-    ContactProblem::Iterate u_dz;
-    apply_operator(dz, S_dz, u_dz);
-    add(x, 1., dz);
-    add(Sx, 1., S_dz);
-    add(u_x, 1., u_dz);
+    for (unsigned int j = 0; j < m; ++j)
+    {
+      add(x, y[j], Z[j]);
+      add(Sx, y[j], SZ[j]);
+      add(u_x, y[j], UZ[j]);
+    }
+    // The sum leaves t_i = sigma mu p_i to round-off; exactly, so that the
+    // next step's warm start finds it in place (a difference of an ulp
+    // would cost a set of body solves, or not, by the round-off of the
+    // bodies' solvers, which differs with the number of processes).
+    for (unsigned int i = 0; i < n_nodes; ++i)
+      if (slip_coupling[i] != 0)
+        x[n_nodes + i] = slip_coupling[i] * x[i];
     return sets;
   }
 

@@ -102,7 +102,7 @@ namespace ddcontact
   {
     unsigned int         max_newton_iterations = 50;
     bool                 penalty_continuation  = true;
-    CoulombLinearization coulomb = CoulombLinearization::fixed_point;
+    CoulombLinearization coulomb               = CoulombLinearization::newton;
 
     static void
     declare(ParameterHandler &prm);

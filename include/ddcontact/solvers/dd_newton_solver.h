@@ -266,11 +266,12 @@ namespace ddcontact
      * being fixed. The rows of the active set then see the slipping
      * tangentials through S: the step's operator R_A (Theta + S) E (E
      * extends y on the active set by the coupled tangentials) is not
-     * symmetric, and deal.II's GMRES solves it, right preconditioned by the
-     * Robin problems of the active set, in the inner product of M (scaled
-     * by the square roots of the weights). One more set of body solves
-     * gives S x and the bodies' response for the new x. Returns the sets
-     * of body solves.
+     * symmetric. GMRES solves it, right preconditioned by the Robin
+     * problems of the active set, in the inner product of M. It is our
+     * own (deal.II's SolverGMRES does not hand out its Krylov basis): each
+     * direction keeps the bodies' response, so the increment comes with S
+     * x and the displacements without another set of body solves. Returns
+     * the sets of body solves.
      */
     unsigned int
     solve_coupled_system(const std::vector<bool> &active,
