@@ -26,7 +26,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from friction_study import fit_zero_of_root, read_profile, write_csv  # noqa: E402
+from friction_study import (fit_zero_of_root, read_profile,  # noqa: E402
+                            solver_settings, write_csv)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXE = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "ddcontact")
@@ -39,20 +40,18 @@ M = E * (1 - NU) / ((1 + NU) * (1 - 2 * NU))
 G = E / (2 * (1 + NU))
 
 
-# dd-newton-fixed-point: dd-newton with Coulomb linearization = fixed-point
-# (dd-newton's default is newton).
+# dd-newton-fixed-point: see friction_study.solver_settings().
 SOLVERS = ("monolithic", "dd-newton", "dd-newton-fixed-point")
 
 
 def run(scene, settings, out, solver):
-    args = [EXE, "--output", out, scene, "--set", "Output/Write vtu=false",
-            "--set", "Contact solver/Solver=" + solver.replace("-fixed-point", "")]
+    args = [EXE, "--output", out, scene, "--set", "Output/Write vtu=false"]
+    for s in solver_settings(solver):
+        args += ["--set", s]
     # dd-newton's CG stops at Tolerance of the data; the checks ask 1e-8 of
     # the closed form.
     if solver.startswith("dd-newton"):
         args += ["--set", "Contact solver/Tolerance=1e-11"]
-    if solver == "dd-newton-fixed-point":
-        args += ["--set", "Contact solver/DD-Newton/Coulomb linearization=fixed-point"]
     for s in settings:
         args += ["--set", s]
     done = subprocess.run(args, capture_output=True, text=True, timeout=600)

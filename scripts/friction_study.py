@@ -64,17 +64,23 @@ def write_csv(name, keys, rows):
             writer.writerow({k: r.get(k, "") for k in keys})
 
 
-def run(level, steps, friction, out, subdivisions=8, solver="monolithic"):
-    # dd-newton-fixed-point: dd-newton with Coulomb linearization =
-    # fixed-point (the default is newton).
-    settings = ["Contact solver/Solver=" + solver.replace("-fixed-point", ""),
-                f"Body upper/Mesh/Box refinement={level}",
-                f"Body lower/Mesh/Box refinement={level}",
-                f"Body upper/Mesh/Subdivisions={subdivisions}, {subdivisions // 2}",
-                f"Body lower/Mesh/Subdivisions={subdivisions}, {subdivisions // 2}",
-                "Output/Write vtu=false"]
+def solver_settings(solver):
+    """The entries of a solver name: monolithic, dd-newton, or
+    dd-newton-fixed-point (dd-newton with Coulomb linearization =
+    fixed-point; the default is newton)."""
+    settings = ["Contact solver/Solver=" + solver.replace("-fixed-point", "")]
     if solver == "dd-newton-fixed-point":
         settings.append("Contact solver/DD-Newton/Coulomb linearization=fixed-point")
+    return settings
+
+
+def run(level, steps, friction, out, subdivisions=8, solver="monolithic"):
+    settings = solver_settings(solver) + [
+        f"Body upper/Mesh/Box refinement={level}",
+        f"Body lower/Mesh/Box refinement={level}",
+        f"Body upper/Mesh/Subdivisions={subdivisions}, {subdivisions // 2}",
+        f"Body lower/Mesh/Subdivisions={subdivisions}, {subdivisions // 2}",
+        "Output/Write vtu=false"]
     if not friction:
         # The same nodal multipliers without friction: the monolithic
         # solver takes exact contact on the nodes only with friction (else

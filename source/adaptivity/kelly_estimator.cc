@@ -161,11 +161,19 @@ namespace ddcontact
     Vector<double> jumps;
     face_jump_integrals(
       mapping, dof_handler, face_quadrature, solution, nullptr, jumps);
-    eta.reinit(jumps.size());
+    kelly_weighted_indicators(dof_handler, jumps, eta);
+  }
+
+  void
+  kelly_weighted_indicators(const DoFHandler<2>  &dof_handler,
+                            const Vector<double> &integrals,
+                            Vector<double>       &eta)
+  {
+    eta.reinit(integrals.size());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        eta(cell->active_cell_index()) =
-          std::sqrt(cell->diameter() / 24. * jumps(cell->active_cell_index()));
+        eta(cell->active_cell_index()) = std::sqrt(
+          cell->diameter() / 24. * integrals(cell->active_cell_index()));
   }
 
   KellyEstimator::KellyEstimator(const ElasticBody<2> &body)

@@ -7,6 +7,7 @@
 
 #include <ddcontact/adaptivity/kelly_estimator.h>
 #include <ddcontact/adaptivity/residual_estimator.h>
+#include <ddcontact/bem/boundary_integration.h>
 
 #include <algorithm>
 #include <cmath>
@@ -50,7 +51,7 @@ namespace ddcontact
           for (unsigned int i = 0; i < faces.size(); ++i)
           {
             const auto   face = faces[i].first->face(faces[i].second);
-            const double d    = point_segment_distance(
+            const double d    = BoundaryIntegration::point_segment_distance(
               contact.points[q], face->vertex(0), face->vertex(1));
             if (d < distance)
             {
@@ -66,16 +67,6 @@ namespace ddcontact
                   faces[nearest].first->face(faces[nearest].second)->diameter())
             samples[nearest].push_back(q);
         }
-      }
-
-      static double
-      point_segment_distance(const Point<2> &x,
-                             const Point<2> &a,
-                             const Point<2> &b)
-      {
-        const Tensor<1, 2> t = b - a;
-        const double s = std::clamp((x - a) * t / t.norm_square(), 0., 1.);
-        return x.distance(a + s * t);
       }
     };
 
@@ -151,16 +142,17 @@ namespace ddcontact
             const auto         face = cell->face(f);
             const Point<2>     a = face->vertex(0), b = face->vertex(1);
             const unsigned int n = legendre.size();
+            // L_j at the face's quadrature points.
+            std::vector<std::vector<double>> L(n_q, std::vector<double>(n));
+            for (unsigned int q = 0; q < n_q; ++q)
+              for (unsigned int j = 0; j < n; ++j)
+                L[q][j] = legendre[j].value(
+                  chord_coordinate(values.quadrature_point(q), a, b));
             FullMatrix<double> gram(n, n);
             for (unsigned int q = 0; q < n_q; ++q)
-            {
-              const double s =
-                chord_coordinate(values.quadrature_point(q), a, b);
               for (unsigned int j = 0; j < n; ++j)
                 for (unsigned int k = 0; k < n; ++k)
-                  gram(j, k) +=
-                    legendre[j].value(s) * legendre[k].value(s) * values.JxW(q);
-            }
+                  gram(j, k) += L[q][j] * L[q][k] * values.JxW(q);
             gram.gauss_jordan();
             std::vector<Tensor<1, 2>> moments(n), coefficients(n);
             for (const unsigned int p : contact_faces.samples[i->second])
@@ -174,12 +166,8 @@ namespace ddcontact
               for (unsigned int k = 0; k < n; ++k)
                 coefficients[j] += gram(j, k) * moments[k];
             for (unsigned int q = 0; q < n_q; ++q)
-            {
-              const double s =
-                chord_coordinate(values.quadrature_point(q), a, b);
               for (unsigned int j = 0; j < n; ++j)
-                g[q] += legendre[j].value(s) * coefficients[j];
-            }
+                g[q] += L[q][j] * coefficients[j];
           }
 
           double integral = 0;
@@ -258,11 +246,7 @@ namespace ddcontact
                         integrals);
     add_boundary_residuals(u_fem, contact, integrals);
     add_cell_residuals(u_fem, integrals);
-    eta.reinit(integrals.size());
-    for (const auto &cell : body.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        eta(cell->active_cell_index()) = std::sqrt(
-          cell->diameter() / 24. * integrals(cell->active_cell_index()));
+    kelly_weighted_indicators(body.get_dof_handler(), integrals, eta);
     combine_process_values(body, eta);
   }
 } // namespace ddcontact

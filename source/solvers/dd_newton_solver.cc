@@ -435,6 +435,29 @@ namespace ddcontact
     return coarse.amplitudes(r);
   }
 
+  PointVector
+  DDNewtonSolver::operator_on_active(const std::vector<bool> &active,
+                                     const PointVector       &y,
+                                     const PointVector       &Sy) const
+  {
+    PointVector My(y.size(), 0.);
+    for (unsigned int q = 0; q < y.size(); ++q)
+      if (active[q])
+        My[q] = interface.penalty(q) * y[q] + Sy[q];
+    return My;
+  }
+
+  PointVector
+  DDNewtonSolver::active_residual(const std::vector<bool> &active,
+                                  const PointVector       &x,
+                                  const PointVector       &Sx) const
+  {
+    PointVector r = operator_on_active(active, x, Sx);
+    for (unsigned int q = 0; q < r.size(); ++q)
+      r[q] = active[q] ? d_0[q] - r[q] : 0.;
+    return r;
+  }
+
   double
   DDNewtonSolver::fixed_value(const unsigned int q, const PointVector &x) const
   {
@@ -466,11 +489,9 @@ namespace ddcontact
       return z;
     };
 
-    // The residual d_0 - (Theta + S) x on the active set.
-    PointVector r(n, 0.);
-    for (unsigned int q = 0; q < n; ++q)
-      if (active[q])
-        r[q] = d_0[q] - (interface.penalty(q) * x[q] + Sx[q]);
+    // No coarse space: dd-newton refuses floating bodies with friction.
+    Assert(coarse.empty(), ExcInternalError());
+    PointVector  r    = active_residual(active, x, Sx);
     const double beta = interface.norm(r);
     if (beta <= tolerance)
       return 0;
@@ -497,10 +518,7 @@ namespace ddcontact
       UZ.emplace_back();
       interface.apply(Z[j], UZ[j], SZ[j]);
       ++sets;
-      PointVector w(n, 0.);
-      for (unsigned int q = 0; q < n; ++q)
-        if (active[q])
-          w[q] = interface.penalty(q) * Z[j][q] + SZ[j][q];
+      PointVector w = operator_on_active(active, Z[j], SZ[j]);
       // Arnoldi by modified Gram-Schmidt.
       std::vector<double> h(j + 2, 0.);
       for (unsigned int i = 0; i <= j; ++i)
@@ -570,16 +588,6 @@ namespace ddcontact
                     [](const double k) { return k != 0; }))
       return solve_coupled_system(active, tolerance, x, Sx, u_x);
     const unsigned int n = x.size();
-    // (Theta + S) y restricted to the active set, from y and S y.
-    const auto operator_on_active =
-      [&](const PointVector &y, const PointVector &Sy)
-    {
-      PointVector My(n, 0.);
-      for (unsigned int q = 0; q < n; ++q)
-        if (active[q])
-          My[q] = interface.penalty(q) * y[q] + Sy[q];
-      return My;
-    };
     // Floating bodies: x in equilibrium (one set of solves if it was not),
     // then residuals and directions M-orthogonal to G on the active set.
     if (!coarse.empty())
@@ -601,9 +609,7 @@ namespace ddcontact
       if (!coarse.empty())
         coarse.project(v);
     };
-    PointVector r = operator_on_active(x, Sx);
-    for (unsigned int q = 0; q < n; ++q)
-      r[q] = active[q] ? d_0[q] - r[q] : 0.;
+    PointVector r = active_residual(active, x, Sx);
     project(r);
     if (interface.norm(r) <= tolerance)
       return 0;
@@ -632,7 +638,7 @@ namespace ddcontact
     {
       interface.apply(s, u_s, Ss);
       ++iterations;
-      const PointVector Ms    = operator_on_active(s, Ss);
+      const PointVector Ms    = operator_on_active(active, s, Ss);
       const double      alpha = rho / interface.inner(s, Ms);
       add(x, alpha, s);
       add(Sx, alpha, Ss);

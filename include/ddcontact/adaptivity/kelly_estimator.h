@@ -67,6 +67,16 @@ namespace ddcontact
                       Vector<double>      &jumps);
 
   /**
+   * eta_K = sqrt(h_K / 24 * @p integrals(K)) on the locally owned cells,
+   * zero on the others: Kelly's weight (strategy cell_diameter_over_24),
+   * with h_K = cell->diameter().
+   */
+  void
+  kelly_weighted_indicators(const DoFHandler<2>  &dof_handler,
+                            const Vector<double> &integrals,
+                            Vector<double>       &eta);
+
+  /**
    * Kelly's indicator: the jump of the normal derivative of the FEM
    * displacement across the faces of each cell, the baseline against which
    * the FEM-BEM estimator is measured. Quadrilateral bodies use deal.II's

@@ -280,6 +280,20 @@ namespace ddcontact
                          PointVector             &Sx,
                          ContactProblem::Iterate &u_x);
 
+    /** (Theta + S) y on the rows of @p active, zero on the others, from y
+     * and S y: the operator of a Newton step. */
+    PointVector
+    operator_on_active(const std::vector<bool> &active,
+                       const PointVector       &y,
+                       const PointVector       &Sy) const;
+
+    /** The step's residual d_0 - (Theta + S) x on the rows of @p active,
+     * zero on the others. */
+    PointVector
+    active_residual(const std::vector<bool> &active,
+                    const PointVector       &x,
+                    const PointVector       &Sx) const;
+
     /** The value of the unknown @p q off the active set for the iterate
      * @p x: zero, or a slipping node's sigma b (Coulomb linearization =
      * newton: sigma mu x_i of its pressure). */
