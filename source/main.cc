@@ -1,6 +1,6 @@
-// ddcontact: frictionless contact of linear elastic bodies in plane strain,
-// by penalty and parallel Neumann domain decomposition. This file only reads
-// the command line; everything else is in the library.
+// ddcontact: contact of linear elastic bodies in plane strain (doc/method.md).
+// This file only reads the command line and claims the output directory;
+// everything else is in the library.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
@@ -15,6 +15,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 namespace
 {
@@ -48,6 +49,9 @@ main(int argc, char **argv)
   // Under mpirun every process holds every body and solves the ones it
   // owns (BodyDistribution); the first process alone prints.
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  // The claim on the output directory, once the scene is checked; it
+  // outlives the run so that an error can still be recorded there.
+  std::unique_ptr<RunRecord> record;
   try
   {
     // SIGINT and SIGTERM end the run at the end of its current step.
@@ -120,24 +124,41 @@ main(int argc, char **argv)
     const auto &scene = reader.scene();
     if (scene.n_threads > 0)
       MultithreadInfo::set_thread_limit(scene.n_threads);
-    // One line naming the directory, not the library's text with errno.
     std::error_code error;
+    if (std::filesystem::exists(scene.output_directory, error) &&
+        !std::filesystem::is_directory(scene.output_directory, error))
+      throw InputError("Output directory: '" + scene.output_directory +
+                       "' is a file, not a directory; name a directory "
+                       "(--output DIR)");
+
+    // Every entry, mesh and expression is checked before the output
+    // directory is touched: a refused run changes nothing on disk.
+    Simulation simulation(scene, std::cout);
+    simulation.setup();
+
+    // One line naming the directory, not the library's text with errno.
     std::filesystem::create_directories(scene.output_directory, error);
     if (error || !std::filesystem::is_directory(scene.output_directory))
       throw InputError("Output directory: cannot create '" +
                        scene.output_directory + "' (" + error.message() + ")");
-    // The lock, the removal of an earlier run's results and the "running"
-    // summary come before anything else is written there.
-    const RunRecord record(scene.output_directory, scene.scene_name);
+    // The lock, the removal of the earlier run's own files and the
+    // "running" summary come before anything else is written there.
+    record = std::make_unique<RunRecord>(
+      scene, std::vector<std::string>{parameter_file});
     if (root)
-      reader.write_used(scene.output_directory + "/parameters.prm");
+      reader.write_used(record->parameter_file());
 
-    Simulation simulation(scene, std::cout);
     simulation.run();
   }
   catch (...)
   {
-    return fatal_error.report(std::current_exception());
+    const auto error = std::current_exception();
+    if (record)
+    {
+      const auto [code, message] = FatalError::classify(error);
+      record->close_after_error(RunRecord::status_of_exit_code(code), message);
+    }
+    return fatal_error.report(error);
   }
   return 0;
 }

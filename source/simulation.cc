@@ -1,14 +1,19 @@
 #include <ddcontact/interruption.h>
+#include <ddcontact/io/json.h>
 #include <ddcontact/io/scene_summary.h>
+#include <ddcontact/output_file.h>
 #include <ddcontact/simulation.h>
 #include <ddcontact/tasks.h>
 #include <ddcontact/version.h>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <iomanip>
 #include <sstream>
+
+#include <stdlib.h>
 
 namespace ddcontact
 {
@@ -37,6 +42,13 @@ namespace ddcontact
     , report(this->parameters, timer, wall_clock, pcout)
     , solution_output(this->parameters)
   {
+  }
+
+  Simulation::~Simulation()
+  {
+    std::error_code error;
+    if (!mesh_directory.empty())
+      std::filesystem::remove_all(mesh_directory, error);
   }
 
   const std::vector<std::unique_ptr<AdaptiveRefinement>> &
@@ -69,6 +81,25 @@ namespace ddcontact
       Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     const bool partitioned =
       parameters.parallel.process_groups(n_processes, parameters.bodies.size());
+    const bool meshes_geometry = std::any_of(
+      parameters.bodies.begin(),
+      parameters.bodies.end(),
+      [](const BodyParameters &b)
+      {
+        return b.mesh_type == MeshType::file && b.mesh_file.size() >= 4 &&
+               b.mesh_file.compare(b.mesh_file.size() - 4, 4, ".geo") == 0;
+      });
+    if (meshes_geometry && mesh_directory.empty())
+    {
+      std::string name =
+        (std::filesystem::temp_directory_path() / "ddcontact-meshes-XXXXXX")
+          .string();
+      if (mkdtemp(name.data()) == nullptr)
+        throw WriteError("cannot make a temporary directory for gmsh's "
+                         "meshes in " +
+                         std::filesystem::temp_directory_path().string());
+      mesh_directory = name;
+    }
     for (const auto &body_parameters : parameters.bodies)
     {
       bodies.push_back(std::make_unique<ElasticBody<2>>(
@@ -78,7 +109,7 @@ namespace ddcontact
           body_parameters, n_processes, parameters.bodies.size())));
       // Assembled and factorized only where it is solved, below.
       bodies.back()->set_solved_here(false);
-      bodies.back()->make_mesh(parameters.output_directory);
+      bodies.back()->make_mesh(mesh_directory);
     }
     run_tasks(
       bodies.size(),
@@ -180,7 +211,6 @@ namespace ddcontact
         *distribution,
         timer,
         pcout);
-      report.open_statistics(bodies);
     }
     strategy = AdaptiveStrategy::create(
       parameters.adaptation,
@@ -198,14 +228,41 @@ namespace ddcontact
   }
 
   void
+  Simulation::record_progress(const std::string &what)
+  {
+    last_completed = what;
+    report.set_last_completed_step(what);
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return;
+    const std::string summary = parameters.output_directory + "/summary.json";
+    write_json_file(report.progress_summary("running", ""), summary);
+    std::array<std::string, 2> texts;
+    for (const unsigned int s : {0u, 1u})
+      texts[s] =
+        report
+          .progress_summary("interrupted",
+                            std::string(s == 0 ? "SIGINT" : "SIGTERM") +
+                              " received: the run stopped in " + step + ", " +
+                              (what.empty() ? "before any step "
+                                              "was complete"
+                                            : "after " + what))
+          .dump(2, ' ', false, Json::error_handler_t::replace) +
+        '\n';
+    interruption::set_record(summary, texts);
+  }
+
+  void
   Simulation::adaptation_step(const unsigned int marked, const bool write_mesh)
   {
     report.write_statistics_row(results(), marked, true);
-    if (!write_mesh)
-      return;
-    output_results(n_output_steps);
-    report.write_cells(results(), n_output_steps);
-    ++n_output_steps;
+    if (write_mesh)
+    {
+      output_results(n_output_steps);
+      report.write_cells(results(), n_output_steps);
+      ++n_output_steps;
+    }
+    record_progress("adaptation cycle " +
+                    std::to_string(n_adaptation_cycles()) + " of " + step);
   }
 
   void
@@ -216,7 +273,8 @@ namespace ddcontact
   }
 
   void
-  Simulation::write_failed_run(const std::string &status)
+  Simulation::write_failed_run(const std::string &status,
+                               const std::string &error)
   {
     report.write_history(contact_solver->history());
     report.write_contact_profiles(results(), "");
@@ -231,15 +289,16 @@ namespace ddcontact
       pcout << "  the last iterate could not be written: " << e.what()
             << std::endl;
     }
-    report.write_summary(results(), status);
+    report.write_summary(results(), status, error);
   }
 
+  template <typename Steps>
   void
-  Simulation::run()
+  Simulation::naming_memory_errors(const Steps &steps)
   {
     try
     {
-      run_steps();
+      steps();
     }
     catch (const OutOfMemoryError &)
     {
@@ -259,10 +318,27 @@ namespace ddcontact
   }
 
   void
-  Simulation::run_steps()
+  Simulation::setup()
+  {
+    naming_memory_errors([this]() { setup_steps(); });
+  }
+
+  void
+  Simulation::run()
+  {
+    naming_memory_errors(
+      [this]()
+      {
+        if (!is_set_up)
+          setup_steps();
+        run_steps();
+      });
+  }
+
+  void
+  Simulation::setup_steps()
   {
     wall_clock.restart();
-    std::filesystem::create_directories(parameters.output_directory);
     pcout << version_banner() << std::endl
           << "scene '" << parameters.scene_name << "', output in "
           << parameters.output_directory << std::endl;
@@ -271,6 +347,17 @@ namespace ddcontact
     step = "the contact setup";
     setup_contact();
     setup_strategy();
+    is_set_up = true;
+  }
+
+  void
+  Simulation::run_steps()
+  {
+    // (main() made it and claimed it; a program of its own may not have.)
+    std::filesystem::create_directories(parameters.output_directory);
+    if (adaptation)
+      report.open_statistics(bodies);
+    record_progress("");
     // Loading/Steps: the load parameter t = k / Steps; one step solves at
     // t = 1 with the data as assembled.
     const unsigned int n_steps = parameters.load_steps;
@@ -285,6 +372,12 @@ namespace ddcontact
         output_results(k - 1);
       if (n_steps > 1 && contact_solver)
         report.record_load_step(results(), k, t);
+      if (n_steps > 1)
+      {
+        std::ostringstream what;
+        what << "load step " << k << " of " << n_steps << " (t = " << t << ")";
+        record_progress(what.str());
+      }
     }
     report.write_final(results());
 
@@ -328,13 +421,26 @@ namespace ddcontact
                            : "diverged");
       throw;
     }
-    catch (const InterruptedError &)
+    catch (const InterruptedError &error)
     {
       // The history so far, the last iterate and summary.json "interrupted".
       if (contact_solver)
-        write_failed_run("interrupted");
+        write_failed_run("interrupted", error.what());
       else
-        report.write_summary(results(), "interrupted");
+        report.write_summary(results(), "interrupted", error.what());
+      throw;
+    }
+    catch (const InputError &error)
+    {
+      // Met after a completed step (data evaluated only now): that step's
+      // output stays, and the record says what ended the run. Under MPI
+      // the other processes may not have met it, so the writers, which
+      // are collective, are left to main() (RunRecord).
+      if (contact_solver && !last_completed.empty() &&
+          Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1)
+        write_failed_run("bad_input",
+                         std::string(error.what()) + " (after " +
+                           last_completed + ")");
       throw;
     }
   }

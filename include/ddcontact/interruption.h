@@ -1,6 +1,7 @@
 #ifndef ddcontact_interruption_h
 #define ddcontact_interruption_h
 
+#include <array>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -51,9 +52,12 @@ namespace ddcontact
   };
 
   /**
-   * SIGINT and SIGTERM end a run cleanly: the handler only notes the
-   * signal (a second one ends the process at once), and the run checks at
-   * the end of every contact iteration and adaptation step.
+   * SIGINT and SIGTERM end a run cleanly: the handler notes the signal and
+   * writes the run's record at once (set_record()); the run checks at the
+   * end of every contact iteration and adaptation step and then writes its
+   * fuller record. A second signal ends the process at once, with the
+   * record already true: mpirun kills its processes about 2 s after it
+   * forwards a signal, which may be before the current step ends.
    */
   namespace interruption
   {
@@ -66,6 +70,19 @@ namespace ddcontact
      * same step); @p where says what was interrupted. */
     void
     check(const std::string &where);
+
+    /** What the first signal writes on this process, before anything
+     * else: @p texts[0] (SIGINT) or @p texts[1] (SIGTERM) into
+     * @p filename, by a temporary file `<filename>.signal` and a rename,
+     * listed in the run's manifest (run_manifest). Replaces the record
+     * set before; the handler only uses async-signal-safe calls. */
+    void
+    set_record(const std::string                &filename,
+               const std::array<std::string, 2> &texts);
+
+    /** No record any more (the run writes its final one). */
+    void
+    clear_record();
   } // namespace interruption
 
 } // namespace ddcontact

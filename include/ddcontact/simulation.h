@@ -35,10 +35,23 @@ namespace ddcontact
   public:
     Simulation(const SceneParameters &parameters, std::ostream &screen);
 
-    /** Run the scene; returns normally on success, throws InputError on
-     * bad input and DivergenceError (NotConvergedError at Max iterations
-     * with a falling residual) when the contact iteration fails, after
-     * writing what it reached. */
+    /** Removes the temporary directory of the meshes gmsh made. */
+    ~Simulation();
+
+    /** Set up the bodies, their meshes, the contact pairs, the solver and
+     * the adaptive strategy, checking every entry on the way (InputError
+     * on bad input). Writes nothing into the output directory, so that a
+     * refused run leaves it as it was. */
+    void
+    setup();
+
+    /** Run the scene (after setup(), which it calls if not called yet);
+     * returns normally on success, throws InputError on bad input and
+     * DivergenceError (NotConvergedError at Max iterations with a
+     * falling residual) when the contact iteration fails, after writing
+     * what it reached. While it runs, summary.json names the last step it
+     * completed, and a signal writes "interrupted" there at once
+     * (interruption::set_record()). */
     void
     run();
 
@@ -86,9 +99,24 @@ namespace ddcontact
     }
 
   private:
-    /** run() without its translation of std::bad_alloc. */
+    /** Call @p steps, translating std::bad_alloc into an
+     * OutOfMemoryError that names the step the run was in. */
+    template <typename Steps>
+    void
+    naming_memory_errors(const Steps &steps);
+
+    /** setup() and run() without that translation. */
+    void
+    setup_steps();
+
     void
     run_steps();
+
+    /** A step of the run is complete (@p what names it): summary.json
+     * says so (status "running"), and a signal from now on writes it as
+     * the last completed step of an interrupted run. */
+    void
+    record_progress(const std::string &what);
 
     /** What the run has computed so far, for the report. */
     RunReport::Results
@@ -135,12 +163,13 @@ namespace ddcontact
     void
     start_load_step(unsigned int k, double t);
 
-    /** After a DivergenceError or an interruption: history.csv, the
-     * contact profiles, the VTU/PVD of the last iterate (if Output/Write
-     * vtu) and summary.json with @p status ("diverged", "not_converged",
-     * "interrupted"). */
+    /** After a DivergenceError, an interruption or (on one process) an
+     * input error met after a completed step: history.csv, the contact
+     * profiles, the VTU/PVD of the last iterate (if Output/Write vtu) and
+     * summary.json with @p status ("diverged", "not_converged",
+     * "interrupted", "bad_input") and the @p error that ended the run. */
     void
-    write_failed_run(const std::string &status);
+    write_failed_run(const std::string &status, const std::string &error = "");
 
     const SceneParameters parameters;
     ConditionalOStream    pcout;
@@ -158,6 +187,12 @@ namespace ddcontact
     // The step the run is in, for an out-of-memory message.
     std::string  step           = "the setup of the bodies";
     unsigned int n_output_steps = 0;
+    bool         is_set_up      = false;
+    // Where gmsh meshes the .geo files: a temporary directory of the run,
+    // not the output directory (which setup() does not touch).
+    std::string mesh_directory;
+    // The last step completed (record_progress()); empty: none yet.
+    std::string last_completed;
   };
 } // namespace ddcontact
 

@@ -297,8 +297,17 @@ namespace ddcontact
                          " s (an endless loop in the .geo?); stopped it "
                          "(the limit is DDCONTACT_GMSH_TIMEOUT)");
       if (status != 0)
-        throw InputError(what + ": gmsh could not mesh '" + file + "' (see " +
-                         log + ")");
+      {
+        // The log is in the run's temporary directory, gone with the run:
+        // its last error line goes into the message.
+        std::ifstream in(log);
+        std::string   line, last;
+        while (std::getline(in, line))
+          if (line.find("rror") != std::string::npos || last.empty())
+            last = line;
+        throw InputError(what + ": gmsh could not mesh '" + file + "'" +
+                         (last.empty() ? "" : " (gmsh: " + last + ")"));
+      }
       source = what + " (the mesh gmsh made of '" + file + "')";
       file   = msh;
     }

@@ -252,6 +252,38 @@ namespace ddcontact
           }
       }
     }
+    /** Sample @p law, the pair's friction expression, on @p faces of
+     * S_1: InputError where it is < 0 or not finite. */
+    void
+    check_friction_on(const std::vector<ZoneFace> &faces,
+                      const Function<2>           &law,
+                      const ContactPairParameters &parameters,
+                      const std::string           &body_1)
+    {
+      // The law is evaluated at the contact points, which refinement moves
+      // and adds: the expression is sampled at 17 points of every face of
+      // S_1 (at every setup), so that a value < 0 or not finite between
+      // the first contact points refuses the run before it solves anything.
+      constexpr unsigned int n_samples = 16;
+      for (const auto &face : faces)
+        for (unsigned int i = 0; i <= n_samples; ++i)
+        {
+          const Point<2> x =
+            face.a + (double(i) / n_samples) * (face.b - face.a);
+          const double value = law.value(x);
+          if (!std::isfinite(value) || value < 0)
+          {
+            std::ostringstream message;
+            message << parameters.friction_entry() << ": " << value << " at ("
+                    << x[0] << ", " << x[1] << ") of the zone S_1 (boundary id "
+                    << parameters.boundary_id_1 << " of '" << body_1
+                    << "'); give an expression >= 0 and finite on the whole "
+                       "zone";
+            throw InputError(message.str());
+          }
+        }
+    }
+
   } // namespace
 
   ContactPair::ContactPair(const ContactPairParameters &parameters,
@@ -288,6 +320,9 @@ namespace ddcontact
       throw InputError(section + "Boundary id 2: body '" + body_2.name() +
                        "' has no face with boundary id " +
                        std::to_string(parameters.boundary_id_2));
+
+    if (has_friction())
+      check_friction_on(faces_1, *friction_function, parameters, body_1.name());
 
     // The contact search on S_2 (doc/method.md, section 1.1): R-trees of
     // its faces and vertices, O(n log n) in all.

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <ddcontact/body/reaction_forces.h>
+#include <ddcontact/interruption.h>
 #include <ddcontact/io/process_report.h>
 #include <ddcontact/io/run_report.h>
 #include <ddcontact/output_file.h>
@@ -123,6 +124,9 @@ namespace ddcontact
                   "relative_error_estimate,dd_residual,dd_increment,"
                   "contact_force,t_dd_s,t_estimate_s,t_refine_s,wall_time_s,"
                   "relative_energy_error_estimate\n";
+    statistics.flush();
+    // Written row by row under its own name: listed after every row.
+    run_manifest::record_file(parameters.output_directory + "/statistics.csv");
   }
 
   void
@@ -177,6 +181,7 @@ namespace ddcontact
     if (!out)
       throw WriteError("cannot write '" + parameters.output_directory +
                        "/statistics.csv'; is the disk full?");
+    run_manifest::record_file(parameters.output_directory + "/statistics.csv");
   }
 
   void
@@ -661,13 +666,38 @@ namespace ddcontact
     return timings;
   }
 
-  void
-  RunReport::write_summary(const Results &results, const std::string &status)
+  Json
+  RunReport::progress_summary(const std::string &status,
+                              const std::string &error) const
   {
     Json json;
     json["scene"]         = parameters.scene_name;
     json["code_revision"] = git_revision();
     json["status"]        = status;
+    json["last_completed_step"] =
+      last_completed_step.empty() ? Json() : Json(last_completed_step);
+    if (!error.empty())
+      json["error"] = error;
+    json["warnings"] = Json::array();
+    if (!load_steps.empty())
+      json["load_steps"] = load_steps;
+    json["wall_time_s"] = wall_clock.wall_time();
+    return json;
+  }
+
+  void
+  RunReport::write_summary(const Results     &results,
+                           const std::string &status,
+                           const std::string &error)
+  {
+    Json json;
+    json["scene"]         = parameters.scene_name;
+    json["code_revision"] = git_revision();
+    json["status"]        = status;
+    if (!error.empty())
+      json["error"] = error;
+    json["last_completed_step"] =
+      last_completed_step.empty() ? Json() : Json(last_completed_step);
     // The code takes any consistent system of units; the scene's comments
     // say which one it uses (e.g. cm and MPa).
     json["units"]    = "consistent units of the scene; forces and energies "
@@ -717,6 +747,9 @@ namespace ddcontact
       results.contact_solver ? results.contact_solver->history().size() : 0);
 
     summary_json = json;
+    // From here the run's own record is true: a signal no longer writes
+    // one (interruption::set_record()).
+    interruption::clear_record();
     if (writes_files)
       write_json_file(json, parameters.output_directory + "/summary.json");
   }

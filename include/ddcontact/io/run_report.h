@@ -97,9 +97,27 @@ namespace ddcontact
 
     /** Build summary.json with the run's @p status ("completed",
      * "converged", "stalled", "not_converged", "diverged") and its
-     * warnings, and write it. Collective. */
+     * warnings (and @p error, the message of the error that ended the
+     * run, if any), and write it. Collective. */
     void
-    write_summary(const Results &results, const std::string &status);
+    write_summary(const Results     &results,
+                  const std::string &status,
+                  const std::string &error = "");
+
+    /** The summary of a run still under way, or ended at once by a
+     * signal: its @p status, the last step it completed, @p error if
+     * any, and the load steps recorded so far. Local: no collective, no
+     * solver state, so that it holds whatever the run is doing. */
+    Json
+    progress_summary(const std::string &status, const std::string &error) const;
+
+    /** The last step the run completed (a load step, an adaptation
+     * cycle), named in every summary from now on. */
+    void
+    set_last_completed_step(const std::string &what)
+    {
+      last_completed_step = what;
+    }
 
     /**
      * The end of a solve that returned: history.csv, the contact profiles
@@ -198,6 +216,7 @@ namespace ddcontact
     std::ofstream statistics;
     Json          summary_json;
     Json          load_steps = Json::array(); // record_load_step()
+    std::string   last_completed_step;
   };
 } // namespace ddcontact
 
