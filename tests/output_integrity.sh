@@ -7,14 +7,10 @@
 # root; otherwise skipped with a message)
 # usage: output_integrity.sh DDCONTACT_EXECUTABLE SOURCE_DIR
 set -u
+source "$(dirname "$0")/record_checks.sh"
 exe="$1"; src="$2"
 paper="$src/prm/paper_two_bodies.prm"
 work=$(mktemp -d); trap 'umount "$work"/ro "$work"/full 2>/dev/null; rm -rf "$work"' EXIT
-failures=0
-check() { # check CONDITION_EXIT_CODE WHAT
-  if [ "$1" -eq 0 ]; then echo "ok   $2"; else echo "FAIL $2"; failures=$((failures + 1)); fi
-}
-status_of() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['status'])" "$1" 2>/dev/null; }
 
 out="$work/run"
 # 1. A complete adaptive run: several output steps.

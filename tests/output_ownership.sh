@@ -9,14 +9,10 @@
 # solve leaves a true summary.json, never "running"
 # usage: output_ownership.sh DDCONTACT_EXECUTABLE SOURCE_DIR
 set -u
+source "$(dirname "$0")/record_checks.sh"
 exe="$1"; src="$2"
 scene="$src/prm/friction_patch.prm"
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
-failures=0
-check() { # check CONDITION_EXIT_CODE WHAT
-  if [ "$1" -eq 0 ]; then echo "ok   $2"; else echo "FAIL $2"; failures=$((failures + 1)); fi
-}
-status_of() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['status'])" "$1" 2>/dev/null; }
 # The state of a directory: every file (hidden ones too) with its checksum.
 snapshot() { (cd "$1" && find . -type f -print0 | sort -z | xargs -0 -r sha256sum); }
 run() { # run DIR ARGS...: the scene into DIR; stdout, stderr in $work/last.*
@@ -90,6 +86,11 @@ check $? "a misspelled mesh file leaves them untouched too (exit $code)"
 [ "$(status_of "$d/summary.json")" = "converged" ]; check $? "... summary.json still says converged"
 run "$work/never" --set "Body omega1/Material/Young's modulus=-1"; code=$?
 [ $code -eq 1 ] && [ ! -e "$work/never" ]; check $? "a refused run does not even make its directory"
+
+touch "$work/a_file"
+run "$work/a_file"; code=$?
+[ $code -eq 1 ] && grep -q "is a file, not a directory" "$work/last.err" && [ ! -s "$work/a_file" ]
+check $? "--output naming a file is refused in one line (exit $code)"
 
 # 5. A file of the earlier run changed since is no longer the run's: it
 # is kept, and as the run would write it, the run is refused.

@@ -8,14 +8,13 @@
 # Never "running" after the end.
 # usage: signal_record.sh DDCONTACT_EXECUTABLE SOURCE_DIR [N]
 set -u
+source "$(dirname "$0")/record_checks.sh"
 exe="$1"; src="$2"; n="${3:-10}"
 scene="$src/prm/paper_two_bodies.prm"
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
   OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1 \
   DEAL_II_NUM_THREADS=1
-failures=0
-field_of() { python3 -c "import json,sys; print(json.load(open(sys.argv[1])).get(sys.argv[2]))" "$1" "$2" 2>/dev/null; }
 # One process in a long step (a fine mesh, written up at the end, where
 # no check for signals comes for seconds): SIGTERM, and 0.3 s later
 # SIGKILL, as mpirun does. The record is the signal handler's, or the
@@ -24,7 +23,7 @@ for second in TERM KILL; do
   out="$work/serial"
   rm -f "$out/summary.json"
   "$exe" --output "$out" "$src/prm/two_bodies.prm" --set "Output/Write vtu=false" \
-    --set "Body lower/Mesh/Initial refinement=5" >"$work/log" 2>&1 &
+    --set "Body lower/Mesh/Initial refinement=4" >"$work/log" 2>&1 &
   pid=$!
   for _ in $(seq 1 1200); do
     [ "$(field_of "$out/summary.json" status)" = "running" ] && break
