@@ -450,6 +450,8 @@ namespace ddcontact
           shapes_1.push_back(shape);
     }
 
+    arc_length = ZoneArcLength(zone_1);
+
     if (body_1.is_mesh_distributed() || body_2.is_mesh_distributed())
     {
       std::vector<Point<2>> xs, projections;

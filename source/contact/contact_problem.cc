@@ -208,23 +208,22 @@ namespace ddcontact
 
   namespace
   {
-    /** Half the extent along the tangent of S of the points @p q of
-     * @p pair for which @p selected(q) holds (0 for none): the half-width
-     * of the active set or of the stick zone. */
+    /** Half the arc length along S_1 of the points @p q of @p pair for
+     * which @p selected(q) holds (0 for none; ZoneArcLength): the
+     * half-width of the active set or of the stick zone. */
     template <typename Selected>
     double
     half_extent(const ContactPair &pair, const Selected &selected)
     {
-      double lo = std::numeric_limits<double>::max(), hi = -lo;
+      std::vector<unsigned int> faces;
+      std::vector<Point<2>>     x;
       for (unsigned int q = 0; q < pair.points().size(); ++q)
         if (selected(q))
         {
-          const auto  &pt = pair.points()[q];
-          const double s  = pt.x[0] * pt.normal[1] - pt.x[1] * pt.normal[0];
-          lo              = std::min(lo, s);
-          hi              = std::max(hi, s);
+          faces.push_back(pair.points()[q].face);
+          x.push_back(pair.points()[q].x);
         }
-      return (hi >= lo) ? 0.5 * (hi - lo) : 0.;
+      return pair.zone_arc_length().half_extent(faces, x);
     }
   } // namespace
 
@@ -255,9 +254,11 @@ namespace ddcontact
       const auto forces    = pair.add_friction_loads(friction.t, l1, l2);
       state.force_1 += forces.first;
       state.force_2 += forces.second;
-      // Along tau of the first point (a straight zone's one tangent).
-      const auto &n0         = pair.points().front().normal;
-      state.tangential_force = forces.first * Tensor<1, 2>({-n0[1], n0[0]});
+      // The integral of the traction -t tau on body 1 along each point's
+      // own tangent tau (on a straight zone, the force along its tangent).
+      state.tangential_force = 0;
+      for (unsigned int q = 0; q < friction.t.size(); ++q)
+        state.tangential_force -= friction.t[q] * pair.points()[q].JxW;
       state.stick_half_width =
         half_extent(pair,
                     [&](const unsigned int q) {
@@ -268,6 +269,7 @@ namespace ddcontact
     {
       const auto &pt     = pair.points()[q];
       state.max_pressure = std::max(state.max_pressure, -state.sigma_n[q]);
+      state.normal_force -= state.sigma_n[q] * pt.JxW;
       if (state.sigma_n[q] < 0)
         state.contact_length += pt.JxW;
       state.max_penetration =

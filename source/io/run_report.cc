@@ -244,7 +244,8 @@ namespace ddcontact
   {
     if (state.t.empty())
       return;
-    // Along tau = n_1 turned by +90 degrees (of the first point).
+    // The integral of the traction on body 1 along each point's tangent
+    // tau = n_1 turned by +90 degrees.
     json["tangential_force"]  = state.tangential_force;
     json["stick_half_width"]  = state.stick_half_width;
     json["dissipated_energy"] = state.dissipation;
@@ -267,6 +268,7 @@ namespace ddcontact
       Json       c;
       c["pair"]         = results.contact_pairs[p]->name();
       c["force"]        = Json::array({state.force_1[0], state.force_1[1]});
+      c["normal_force"] = state.normal_force;
       c["max_pressure"] = state.max_pressure;
       c["half_width"]   = state.half_width;
       add_friction(state, c);
@@ -283,16 +285,21 @@ namespace ddcontact
     {
       const auto state = results.contact_solver->contact_state(p);
       pcout << std::setprecision(6) << "  contact "
-            << results.contact_pairs[p]->name() << ": force "
-            << state.force_1.norm() << ", peak pressure " << state.max_pressure
+            << results.contact_pairs[p]->name() << ": normal force "
+            << state.normal_force;
+      if (!state.t.empty())
+        pcout << ", tangential force " << state.tangential_force;
+      pcout << ", force vector on "
+            << results.contact_pairs[p]->get_body_1().name() << " ("
+            << state.force_1[0] << ", " << state.force_1[1]
+            << "), peak pressure " << state.max_pressure
             << " (at the contact points, as written)";
       if (state.max_nodal_pressure > 0)
         pcout << ", largest nodal multiplier " << state.max_nodal_pressure;
       pcout << ", half-width " << state.half_width << ", max penetration "
             << state.max_penetration;
       if (!state.t.empty())
-        pcout << "; tangential force " << state.tangential_force
-              << ", stick half-width " << state.stick_half_width
+        pcout << "; stick half-width " << state.stick_half_width
               << ", dissipated " << state.dissipation;
       pcout << std::endl;
     }
@@ -498,6 +505,7 @@ namespace ddcontact
       c["force"] =
         Json::array({Json::array({state.force_1[0], state.force_1[1]}),
                      Json::array({state.force_2[0], state.force_2[1]})});
+      c["normal_force"] = state.normal_force;
       c["max_pressure"] = state.max_pressure;
       if (state.max_nodal_pressure > 0)
         c["max_nodal_pressure"] = state.max_nodal_pressure;

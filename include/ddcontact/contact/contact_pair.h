@@ -10,6 +10,7 @@
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/contact/contact_pair_parameters.h>
 #include <ddcontact/contact/contact_search.h>
+#include <ddcontact/contact/zone_arc_length.h>
 #include <ddcontact/parameter_tools.h>
 
 #include <array>
@@ -129,6 +130,14 @@ namespace ddcontact
     zone_faces_1() const
     {
       return zone_1;
+    }
+
+    /** The arc length along S_1 (its faces joined into curves): where
+     * the half-widths of contact and stick sets are measured. */
+    const ZoneArcLength &
+    zone_arc_length() const
+    {
+      return arc_length;
     }
 
     /** u_1n and u_2n at every contact point. */
@@ -256,7 +265,8 @@ namespace ddcontact
     std::shared_ptr<Function<2>>         gap_function;
     std::shared_ptr<Function<2>>         friction_function; // g or mu
     std::vector<ContactPoint>            contact_points;
-    std::vector<std::array<Point<2>, 2>> zone_1; // faces of S_1
+    std::vector<std::array<Point<2>, 2>> zone_1;     // faces of S_1
+    ZoneArcLength                        arc_length; // along zone_1
     double                               theta       = 0;
     double                               thickness_1 = 0, thickness_2 = 0;
     ContactSearchReport                  report;

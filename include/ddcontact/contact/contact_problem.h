@@ -25,12 +25,15 @@ namespace ddcontact
     double              max_pressure = 0; // over the contact points
     double max_nodal_pressure        = 0; // over the nodal multipliers, 0: none
     double contact_length            = 0;
-    double half_width      = 0; // half the extent of the active set along S
+    // The integral of the pressure along S_1 (each point's own normal).
+    double normal_force    = 0;
+    double half_width      = 0; // half the arc length of the active set
     double max_penetration = 0;
     // With friction (ContactLaw::get_friction(); empty or 0 without): the
     // tangential traction t at the points (the traction -t tau on body 1),
     // the slip increment and state, the tangential force on body 1 along
-    // tau (included in force_1), the half-width of the stick zone and the
+    // each point's tau (included in force_1; the integral of -t), the
+    // half-width of the stick zone (by arc length) and the
     // energy dissipated in the load step.
     std::vector<double>                t, slip_increment, slip;
     std::vector<ContactLaw::SlipState> slip_state;
