@@ -268,6 +268,24 @@ main(int argc, char **argv)
   std::cout << "points: " << message << std::endl;
   check(message_names(message, {"Contact pair S/Friction", "Contact pressure"}),
         "friction on the points refused naming Contact pressure");
+  // Coulomb with mu = 0 is frictionless: the run says so in a warning
+  // (console and summary.json), and the tangential traction vanishes.
+  {
+    const auto sim    = run_scene(source_dir + "/prm/friction_patch.prm",
+                               {"Output directory=friction_patch_output"},
+                               {"Contact pair S/Friction coefficient=0"});
+    bool       warned = false;
+    for (const auto &w : sim->summary().at("warnings"))
+      warned |=
+        w.get<std::string>().find(
+          "Friction coefficient is 0 on the whole zone") != std::string::npos;
+    check(warned,
+          "mu = 0: summary.json warns that the contact is frictionless");
+    check(
+      "mu = 0: the tangential force",
+      std::abs(sim->summary()["contact"][0]["tangential_force"].get<double>()),
+      1e-12);
+  }
   // The same path with body 1 (triangles) refined uniformly once in every
   // load step, between its two solves: its nodes on S_1 are bisected, and
   // the history of slip and traction moves to them. The tractions stay

@@ -613,6 +613,19 @@ namespace ddcontact
            "bodies touch across empty space; use Gap type = geometric, or a "
            "Gap that matches the meshes";
       warnings.push_back(s.str());
+      s.str("");
+    }
+    // A law whose bound vanishes on the whole zone is frictionless: said,
+    // not solved silently (a sweep over mu may mean it).
+    if (has_friction() &&
+        std::all_of(contact_points.begin(),
+                    contact_points.end(),
+                    [](const ContactPoint &p) { return p.friction == 0; }))
+    {
+      s << pair << parameters.friction_entry()
+        << " is 0 on the whole zone: the contact is frictionless (Friction "
+           "= none solves the same without tangential unknowns)";
+      warnings.push_back(s.str());
     }
     return warnings;
   }

@@ -110,8 +110,9 @@ namespace ddcontact
       "none (the default, the paper's frictionless contact); tresca: the "
       "tangential traction |t| <= g with slip only where |t| = g, g the "
       "Friction bound; coulomb: |t| <= mu p with mu the Friction "
-      "coefficient (doc/friction.md). Needs Contact solver/Solver = "
-      "monolithic for now.");
+      "coefficient (doc/friction.md), in load steps (Loading/Steps). Solved "
+      "by Contact solver/Solver = dd-newton (the default) or monolithic; the "
+      "paper's dd refuses it.");
     prm.declare_entry("Friction bound",
                       "0",
                       Patterns::Anything(),
