@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <ddcontact/body/boundary_data_checks.h>
 #include <ddcontact/output_file.h>
 #include <ddcontact/parameters.h>
 
@@ -46,6 +47,72 @@ namespace ddcontact
         path.pop_back();
     }
 
+    /**
+     * A parameter file with its `include` lines replaced by the included
+     * files, the one text that deal.II parses, and where each of its lines
+     * came from: deal.II's line numbers count the lines of this text, the
+     * messages name the file the user wrote and the line in it.
+     */
+    struct ExpandedText
+    {
+      std::string text;
+
+      /** A file read: its name as found (next to the including file, else
+       * from the working directory), and the file and line of the include
+       * that read it (includer -1: the parameter file itself). */
+      struct File
+      {
+        std::string  name;
+        int          includer;
+        unsigned int include_line;
+      };
+      std::vector<File> files;
+
+      /** Line @p first of the text (counted from 1) is line @p line of
+       * files[file], and the lines after it follow up to the next run. */
+      struct Run
+      {
+        unsigned int first;
+        unsigned int file;
+        unsigned int line;
+      };
+      std::vector<Run> runs;
+      unsigned int     n_lines = 0;
+
+      /** "common.prm, line 12 (included from scene.prm, line 1)" for line
+       * @p n of the text; the parameter file's name for a line outside. */
+      std::string
+      location(const unsigned int n) const
+      {
+        if (n == 0 || n > n_lines || runs.empty())
+          return files.front().name;
+        const auto  run  = std::prev(std::upper_bound(
+          runs.begin(),
+          runs.end(),
+          n,
+          [](const unsigned int m, const Run &r) { return m < r.first; }));
+        const File &file = files[run->file];
+        std::string where =
+          file.name + ", line " + std::to_string(run->line + (n - run->first));
+        if (file.includer >= 0)
+          where += " (included from " + files[file.includer].name + ", line " +
+                   std::to_string(file.include_line) + ")";
+        return where;
+      }
+
+      /** Line @p n of the text (empty outside). */
+      std::string
+      line(const unsigned int n) const
+      {
+        std::istringstream lines(text);
+        std::string        line;
+        for (unsigned int i = 0; i < n; ++i)
+          if (!std::getline(lines, line))
+            return "";
+        return line;
+      }
+    };
+
     /** The subsections open before line @p n of @p text ("Body a/Mesh"):
      * deal.II names only the entry whose value does not match its pattern,
      * and our own checks name the section too. */
@@ -63,14 +130,143 @@ namespace ddcontact
       return section;
     }
 
+    /** Every subsection that @p prm declares, as paths "Body a/Mesh". */
+    std::vector<std::string>
+    declared_subsections(const ParameterHandler &prm)
+    {
+      std::ostringstream out;
+      prm.print_parameters(out, ParameterHandler::ShortPRM);
+      std::istringstream       lines(out.str());
+      std::string              line;
+      std::vector<std::string> path, sections;
+      while (std::getline(lines, line))
+      {
+        const auto split = split_keyword(line);
+        follow_sections(path, split);
+        if (split.first == "subsection")
+        {
+          std::string section;
+          for (const auto &p : path)
+            section += (section.empty() ? "" : "/") + p;
+          sections.push_back(section);
+        }
+      }
+      return sections;
+    }
+
+    /** The edit distance of @p a and @p b, ignoring case. */
+    unsigned int
+    edit_distance(const std::string &a, const std::string &b)
+    {
+      const auto lower = [](const char c)
+      { return std::tolower(static_cast<unsigned char>(c)); };
+      std::vector<unsigned int> row(b.size() + 1);
+      for (unsigned int j = 0; j <= b.size(); ++j)
+        row[j] = j;
+      for (unsigned int i = 1; i <= a.size(); ++i)
+      {
+        unsigned int diagonal = row[0];
+        row[0]                = i;
+        for (unsigned int j = 1; j <= b.size(); ++j)
+        {
+          const unsigned int above = row[j];
+          row[j]                   = std::min({row[j] + 1,
+                                               row[j - 1] + 1,
+                                               diagonal + (lower(a[i - 1]) != lower(b[j - 1]))});
+          diagonal                 = above;
+        }
+      }
+      return row[b.size()];
+    }
+
+    /**
+     * The one-line complaint about the subsection @p name, which @p prm
+     * does not declare in @p parent (a path, empty: the top level), with
+     * the declared sibling closest to it if one is close.
+     */
+    std::string
+    unknown_subsection(const std::string      &parent,
+                       const std::string      &name,
+                       const ParameterHandler &prm)
+    {
+      const std::string prefix = parent.empty() ? "" : parent + "/";
+      std::string       best;
+      unsigned int      best_distance =
+        std::max<unsigned int>(2, name.size() / 4) + 1;
+      for (const auto &section : declared_subsections(prm))
+        if (section.rfind(prefix, 0) == 0 &&
+            section.find('/', prefix.size()) == std::string::npos)
+        {
+          const unsigned int d =
+            edit_distance(name, section.substr(prefix.size()));
+          if (d < best_distance)
+          {
+            best          = section;
+            best_distance = d;
+          }
+        }
+      std::vector<std::string> hints;
+      if (!best.empty())
+        hints.push_back("did you mean '" + best + "'?");
+      if (parent.empty() &&
+          (name.rfind("Body ", 0) == 0 || name.rfind("Contact pair ", 0) == 0))
+        hints.push_back("a body or contact pair also needs its name in "
+                        "Bodies or Contact pairs");
+      if (hints.empty())
+        hints.push_back("misspelled?");
+      std::string hint;
+      for (const auto &h : hints)
+        hint += (hint.empty() ? "" : " ") + h;
+      return "there is no subsection '" + prefix + name + "' (" + hint + ")";
+    }
+
+    /**
+     * For an entry @p entry that is not declared in the subsection
+     * @p section (a path) and was one of the retired top-level subsection
+     * "Domain decomposition" (issue 32): if @p section is "Contact solver" or
+     * below, where the entry is now ("Contact solver/Gamma: this entry is now
+     * 'Contact solver/Domain decomposition/Gamma'"), so that an old name
+     * written in the new subsection gets its new path and not deal.II's
+     * "not declared". Empty otherwise.
+     */
+    std::string
+    moved_entry_in_contact_solver(const std::string &section,
+                                  const std::string &entry)
+    {
+      if (section != "Contact solver" &&
+          section.rfind("Contact solver/", 0) != 0)
+        return "";
+      // moved_solver_entry() words its answer for the old subsection:
+      // "Domain decomposition/<entry> is now <place>" (<place> may be
+      // "A (or B)"), or "... is retired: ..."; an entry it does not know
+      // gets neither.
+      const std::string old   = "Domain decomposition/" + entry + " ";
+      const std::string moved = moved_solver_entry(entry);
+      if (moved.rfind(old, 0) != 0)
+        return "";
+      std::string       rest   = moved.substr(old.size());
+      const std::string is_now = "is now ";
+      if (rest.rfind(is_now, 0) == 0)
+      {
+        const std::string place = rest.substr(is_now.size());
+        const auto        other = place.find(" (or ");
+        rest                    = is_now +
+               ((other != std::string::npos && place.back() == ')')
+                  ? "'" + place.substr(0, other) + "' (or '" +
+                      place.substr(other + 5, place.size() - other - 6) + "')"
+                  : "'" + place + "'");
+      }
+      return section + "/" + entry + ": this entry " + rest;
+    }
+
     /** The top-level subsection "Domain decomposition" held every solver's
      * entries; they moved into "Contact solver". Its first entry is refused
      * with its new place, so that an old file fails in one line that says
      * what to write. */
     void
-    refuse_retired_sections(const std::string &text)
+    refuse_retired_sections(const ExpandedText &input)
     {
-      std::istringstream       lines(text);
+      std::istringstream       lines(input.text);
       std::string              line;
       std::vector<std::string> path;
       for (unsigned int n = 1; std::getline(lines, line); ++n)
@@ -80,7 +276,7 @@ namespace ddcontact
         const bool retired =
           path.size() == 1 && path[0] == "Domain decomposition";
         if (retired && (keyword == "set" || keyword == "end"))
-          throw InputError("line " + std::to_string(n) + ": " +
+          throw InputError("parameter file " + input.location(n) + ": " +
                            moved_solver_entry(
                              keyword == "set"
                                ? Utilities::trim(rest.substr(0, rest.find('=')))
@@ -89,60 +285,73 @@ namespace ddcontact
       }
     }
 
-    /** deal.II names the parsed text "<input string>"; the message names
-     * the file already, so "Line <n> of file <input string>" becomes
-     * "line n" (of the file @p text, with its includes expanded), and the
-     * subsection of that line is added. */
+    /**
+     * deal.II's message @p message about the text @p input, which it names
+     * "<input string>", made one line that names the file and line the user
+     * wrote ("parameter file common.prm, line 12 (included from scene.prm,
+     * line 1), in subsection 'Body a': ..."). A subsection that @p prm does
+     * not declare and an old solver entry in "Contact solver" get their own
+     * words.
+     */
     std::string
-    without_input_string(std::string message, const std::string &text)
+    file_error(std::string             message,
+               const ExpandedText     &input,
+               const ParameterHandler &prm)
     {
-      // deal.II 9.4 on a subsection nobody declared: "Line <n> of file
-      // <input string: There is no such subsection to be entered: A.B".
-      const std::string unknown = "There is no such subsection to be entered: ";
-      const auto        u       = message.find(unknown);
-      const auto        l       = message.find("Line <");
-      if (u != std::string::npos && l != std::string::npos)
+      const std::string input_string = " <input string>";
+      const auto        l            = message.find("Line <");
+      if (l == std::string::npos)
       {
-        std::string path = Utilities::trim(message.substr(u + unknown.size()));
-        std::replace(path.begin(), path.end(), '.', '/');
-        const std::string number =
-          message.substr(l + 6, message.find('>', l) - l - 6);
-        return "line " + number + ": there is no subsection '" + path +
-               "' (misspelled? a body or contact pair also needs its name "
-               "in Bodies or Contact pairs)";
+        for (auto at = message.find(input_string); at != std::string::npos;
+             at      = message.find(input_string))
+          message.erase(at, input_string.size());
+        return "parameter file '" + input.files.front().name + "': " + message;
       }
-      const std::string tag  = " of file <input string>";
-      const auto        at   = message.find(tag);
-      const auto        line = message.find("Line <");
-      if (at != std::string::npos)
-        message.erase(at, tag.size());
-      if (line != std::string::npos)
+      const auto         close = message.find('>', l);
+      const unsigned int n =
+        std::atoi(message.substr(l + 6, close - l - 6).c_str());
+      // After "Line <n>": " of file <input string>: ...", or, for a
+      // subsection nobody declared, " of file <input string: There is no
+      // such subsection to be entered: A.B".
+      const std::string of_file = " of file <input string";
+      std::string       rest    = message.substr(close + 1);
+      if (rest.rfind(of_file, 0) == 0)
+        rest.erase(0, of_file.size());
+      const auto start = rest.find_first_not_of(">: ");
+      rest             = (start == std::string::npos) ? "" : rest.substr(start);
+
+      const std::string where         = "parameter file " + input.location(n);
+      const std::string section       = section_at_line(input.text, n);
+      const auto [keyword, arguments] = split_keyword(input.line(n));
+      if (keyword == "subsection" &&
+          rest.find("no such subsection") != std::string::npos)
+        return where + ": " + unknown_subsection(section, arguments, prm);
+      if (keyword == "set" && rest.find("No entry with name") == 0)
       {
-        message.replace(line, 6, "line ");
-        const auto close = message.find('>', line);
-        if (close != std::string::npos)
-        {
-          message.erase(close, 1);
-          const std::string section = section_at_line(
-            text,
-            std::atoi(message.substr(line + 5, close - line - 5).c_str()));
-          if (!section.empty())
-            message.insert(close, ", in subsection '" + section + "'");
-        }
+        const std::string moved = moved_entry_in_contact_solver(
+          section, Utilities::trim(arguments.substr(0, arguments.find('='))));
+        if (!moved.empty())
+          return where + ": " + moved;
       }
-      return message;
+      return where +
+             (section.empty() ? "" : ", in subsection '" + section + "'") +
+             ": " + rest;
     }
 
-    /** A parameter file with its `include` lines replaced by the included
-     * files (found next to the including file, else from the working
-     * directory), so that deal.II parses one bounded text. Cycles and
-     * depths beyond 16 are refused, and the whole text is capped at 16 MiB:
-     * a file that includes itself overflowed the stack, and `include
-     * /dev/zero` read until memory ran out. */
-    std::string
+    /** Read @p filename into @p input, its includes expanded (found next
+     * to the including file, else from the working directory), @p
+     * includer the file (index in input.files) and @p include_line the
+     * line that includes it. Cycles and depths beyond 16 are refused, and
+     * the whole text is capped at 16 MiB: a file that includes itself
+     * overflowed the stack, and `include /dev/zero` read until memory ran
+     * out. */
+    void
     expand_includes(const std::string        &filename,
+                    const int                 includer,
+                    const unsigned int        include_line,
                     std::vector<std::string> &chain,
-                    std::size_t              &total)
+                    std::size_t              &total,
+                    ExpandedText             &input)
     {
       constexpr std::size_t max_bytes = 16u << 20;
       const std::string     canonical =
@@ -162,13 +371,16 @@ namespace ddcontact
         throw InputError("parameter file '" + filename +
                          "': with its includes more than 16 MiB");
       chain.push_back(canonical);
+      const unsigned int file = input.files.size();
+      input.files.push_back({filename, includer, include_line});
 
       const auto        slash = filename.find_last_of('/');
       const std::string directory =
         (slash == std::string::npos) ? "" : filename.substr(0, slash + 1);
       std::istringstream lines(text);
-      std::string        line, expanded;
-      while (std::getline(lines, line))
+      std::string        line;
+      bool               in_run = false;
+      for (unsigned int n = 1; std::getline(lines, line); ++n)
       {
         const std::string trimmed = Utilities::trim(line);
         if (trimmed.rfind("include", 0) == 0 && trimmed.size() > 7 &&
@@ -178,22 +390,30 @@ namespace ddcontact
           if (!included.empty() && included[0] != '/' &&
               std::filesystem::exists(directory + included))
             included = directory + included;
-          expanded += expand_includes(included, chain, total);
+          expand_includes(included, file, n, chain, total, input);
+          in_run = false;
         }
         else
-          expanded += line + "\n";
+        {
+          if (!in_run)
+            input.runs.push_back({input.n_lines + 1, file, n});
+          in_run = true;
+          input.text += line + "\n";
+          ++input.n_lines;
+        }
       }
       chain.pop_back();
-      return expanded;
     }
 
     /** The parameter text of @p filename with its includes. */
-    std::string
+    ExpandedText
     read_parameter_text(const std::string &filename)
     {
       std::vector<std::string> chain;
       std::size_t              total = 0;
-      return expand_includes(filename, chain, total);
+      ExpandedText             input;
+      expand_includes(filename, -1, 0, chain, total, input);
+      return input;
     }
   } // namespace
 
@@ -363,6 +583,8 @@ namespace ddcontact
     prm.enter_subsection("Loading");
     load_steps = prm.get_integer("Steps");
     prm.leave_subsection();
+    // The bodies check their boundary data at every load time.
+    set_checked_load_steps(load_steps);
     // The combined algorithm (Fig. 2) interleaves single DD steps with the
     // refinement; the monolithic solver has no such steps.
     if (adaptation.mode == AdaptationMode::combined &&
@@ -504,6 +726,17 @@ namespace ddcontact
         throw InputError("--set '" + assignment +
                          "': " + moved_solver_entry(path[1]));
       const auto value = Utilities::trim(assignment.substr(eq + 1));
+      // deal.II's enter_subsection() makes a subsection nobody declared,
+      // and set() then calls a misspelled subsection an undeclared entry.
+      std::string section;
+      for (unsigned int i = 0; i + 1 < path.size(); ++i)
+      {
+        if (!prm.subsection_path_exists(
+              std::vector<std::string>(path.begin(), path.begin() + i + 1)))
+          throw InputError("--set '" + assignment +
+                           "': " + unknown_subsection(section, path[i], prm));
+        section += (section.empty() ? "" : "/") + path[i];
+      }
       for (unsigned int i = 0; i + 1 < path.size(); ++i)
         prm.enter_subsection(path[i]);
       try
@@ -514,7 +747,12 @@ namespace ddcontact
       {
         for (unsigned int i = 0; i + 1 < path.size(); ++i)
           prm.leave_subsection();
-        throw InputError("--set '" + assignment + "': " + message_of(e));
+        const std::string moved =
+          dynamic_cast<const ParameterHandler::ExcEntryUndeclared *>(&e)
+            ? moved_entry_in_contact_solver(section, path.back())
+            : "";
+        throw InputError("--set '" + assignment +
+                         "': " + (moved.empty() ? message_of(e) : moved));
       }
       for (unsigned int i = 0; i + 1 < path.size(); ++i)
         prm.leave_subsection();
@@ -524,7 +762,8 @@ namespace ddcontact
   ParameterReader::ParameterReader(const std::string              &filename,
                                    const std::vector<std::string> &overrides)
   {
-    const std::string text = read_parameter_text(filename);
+    const ExpandedText input = read_parameter_text(filename);
+    const std::string &text  = input.text;
 
     // First pass: only the list of bodies matters; everything else in the
     // file is skipped.
@@ -539,8 +778,7 @@ namespace ddcontact
       }
       catch (const std::exception &e)
       {
-        throw InputError("parameter file '" + filename +
-                         "': " + without_input_string(message_of(e), text));
+        throw InputError(file_error(message_of(e), input, prescan));
       }
       for (const auto &o : overrides)
         if (o.rfind("Bodies", 0) == 0 || o.rfind("Contact pairs", 0) == 0)
@@ -555,15 +793,14 @@ namespace ddcontact
 
     // Second pass: strict.
     SceneParameters::declare(prm, body_names, pair_names);
+    refuse_retired_sections(input);
     try
     {
-      refuse_retired_sections(text);
       prm.parse_input_from_string(text, "", false);
     }
     catch (const std::exception &e)
     {
-      throw InputError("parameter file '" + filename +
-                       "': " + without_input_string(message_of(e), text));
+      throw InputError(file_error(message_of(e), input, prm));
     }
     for (const auto &o : overrides)
       apply_override(prm, o);

@@ -105,7 +105,20 @@ printf 'set Bodies = a\n' >"$work/nosub.prm"
 case_ "body listed without its subsection" "Bodies: 'a' is listed, but the file has no subsection 'Body a'" "$work/nosub.prm"
 case_ "pair listed without its subsection" "Contact pairs: 'T' is listed, but the file has no subsection 'Contact pair T'" "$paper" --set "Contact pairs=S, T"
 printf 'include %s\nsubsection Body omega2\n  subsection Meshh\n  end\nend\n' "$paper" >"$work/misspelled.prm"
-case_ "misspelled subsection" "there is no subsection 'Body omega2/Meshh'" "$work/misspelled.prm"
+case_ "misspelled subsection" "misspelled.prm, line 3: there is no subsection 'Body omega2/Meshh' (did you mean 'Body omega2/Mesh'?)" "$work/misspelled.prm"
+# An old entry name written in the new subsection gets its new path, in a
+# file (with the file's own line) and in --set; a misspelled subsection in
+# --set is called one.
+printf 'include %s\nsubsection Contact solver\n  set eps_residual = 1e-8\nend\n' "$paper" >"$work/old_in_new.prm"
+case_ "old entry name inside Contact solver" "old_in_new.prm, line 3: Contact solver/eps_residual: this entry is now 'Contact solver/Tolerance'" "$work/old_in_new.prm"
+case_ "old entry name inside Contact solver in --set" "Contact solver/Gamma: this entry is now 'Contact solver/Domain decomposition/Gamma'" "$paper" --set "Contact solver/Gamma=0.1"
+case_ "old entry name inside Contact solver/Domain decomposition" "Contact solver/Domain decomposition/eps_u: this entry is now 'Contact solver/Domain decomposition/Increment tolerance'" "$paper" --set "Contact solver/Domain decomposition/eps_u=1e-3"
+case_ "misspelled subsection in --set" "--set 'Contct solver/Solver=dd-newton': there is no subsection 'Contct solver' (did you mean 'Contact solver'?)" "$paper" --set "Contct solver/Solver=dd-newton"
+case_ "misspelled inner subsection in --set" "there is no subsection 'Body omega2/Mesh/Refinment' (misspelled?)" "$paper" --set "Body omega2/Mesh/Refinment/Box=1"
+# Line numbers are those of the file the user wrote, also inside an include.
+printf '# shared output settings\nsubsection Output\n  set Write vtu = false\n  set Verbosty = full\nend\n' >"$work/common.prm"
+printf 'include %s\ninclude common.prm\n' "$paper" >"$work/scene.prm"
+case_ "error in an included file" "common.prm, line 4 (included from $work/scene.prm, line 2), in subsection 'Output': No entry with name <Verbosty>" "$work/scene.prm"
 printf 'Point(1) = {0, 0, 0, 0.5};\nPoint(2) = {1, 0, 0, 0.5};\nPoint(3) = {1, 1, 0, 0.5};\nPoint(4) = {0, 1, 0, 0.5};\nLine(1) = {1, 2};\nLine(2) = {2, 3};\nLine(3) = {3, 4};\nLine(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\nPhysical Curve(2) = {1};\nPhysical Curve(3) = {3};\n' >"$work/nosurface.geo"
 case_ ".geo without a Physical Surface" "nosurface.geo' gives no 2D cells: it needs a Plane Surface, and with Physical Curves a Physical Surface too" "$base" --set "Body lower/Mesh/Type=file" --set "Body lower/Mesh/File=$work/nosurface.geo"
 printf 'Point(1) = {-2, 0, 0, 0.5};\nPoint(2) = {2, 0, 0, 0.5};\nPoint(3) = {2, 1, 0, 0.5};\nPoint(4) = {-2, 1, 0, 0.5};\nLine(1) = {1, 2};\nLine(2) = {2, 3};\nLine(3) = {3, 4};\nLine(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\nPhysical Curve(2) = {1};\nPhysical Curve(3) = {3};\nPhysical Curve(7) = {3};\nPhysical Surface(1) = {1};\n' >"$work/twogroups.geo"
@@ -287,9 +300,22 @@ case_ "friction bound NaN" "Contact pair S/Friction bound" "$friction" --set "Co
 case_ "friction with the paper's dd" "Contact pair S/Friction: friction is solved by Contact solver/Solver = dd-newton or monolithic" "$friction" --set "Contact solver/Solver=dd"
 case_ "friction with a floating body" "Body omega1/Dirichlet: the body is floating" "$friction" --set "Contact solver/Solver=dd-newton" --set "Body omega1/Boundary conditions/Dirichlet="
 case_ "no load step" "Steps" "$paper" --set "Loading/Steps=0"
+# A load that is infinite at one load time only is refused before the run
+# solves anything (every load time is checked when the bodies are set up),
+# naming t and the step.
+rm -rf "$work/out"
+case_ "Neumann load infinite at t = 0.5 only" "Body lower/Boundary conditions/Neumann: the traction on boundary id 3 is not finite at t = 0.5 (load step 2 of 4) at (x, y) = (" "$base" --set "Loading/Steps=4" --set "Body lower/Boundary conditions/Neumann=3: 0; -p/(t-0.5)"
+if grep -q "load step" "$work/stdout" || ls "$work/out"/*.vtu >/dev/null 2>&1; then
+  echo "FAIL the load infinite at t = 0.5 was found after a load step had been solved"
+  failures=$((failures + 1))
+else
+  echo "ok   the load infinite at t = 0.5 is refused before any load step"
+fi
+case_ "Dirichlet value infinite at t = 0.5 only" "Body lower/Boundary conditions/Dirichlet: the displacement on boundary id 2 is not finite at t = 0.5 (load step 1 of 2)" "$base" --set "Loading/Steps=2" --set "Body lower/Boundary conditions/Dirichlet=2: xy: 0; 1/(t-0.5)"
+case_ "Dirichlet value infinite at one point and time" "is not finite at t = 0.25 (load step 1 of 4) at (x, y) = (-1, 0)" "$base" --set "Loading/Steps=4" --set "Body lower/Boundary conditions/Dirichlet=2: xy: 0; 1/(x-4*t+2)"
 case_ "load parameter in the gap" "Contact pair S/Gap" "$friction" --set "Contact pair S/Gap=t"
 
-total=$(( $(grep -c -E '^(expect_code=[0-9]+ )?(mpi_|file_)?case_ ' "$0") + 3 ))  # and three checks of outputs
+total=$(( $(grep -c -E '^(expect_code=[0-9]+ )?(mpi_|file_)?case_ ' "$0") + 4 ))  # and four checks of outputs
 total=$((total - skipped))
 echo "$((total - failures)) passed, $failures failed"
 [ $failures -eq 0 ]
