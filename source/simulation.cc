@@ -430,19 +430,6 @@ namespace ddcontact
         report.write_summary(results(), "interrupted", error.what());
       throw;
     }
-    catch (const InputError &error)
-    {
-      // Met after a completed step (data evaluated only now): that step's
-      // output stays, and the record says what ended the run. Under MPI
-      // the other processes may not have met it, so the writers, which
-      // are collective, are left to main() (RunRecord).
-      if (contact_solver && !last_completed.empty() &&
-          Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1)
-        write_failed_run("bad_input",
-                         std::string(error.what()) + " (after " +
-                           last_completed + ")");
-      throw;
-    }
   }
 
 } // namespace ddcontact
