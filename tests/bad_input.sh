@@ -45,8 +45,8 @@ case_() {
 mpi_case_() {
   local name="$1" expect="$2"; shift 2
   OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
-    OMPI_MCA_rmaps_base_oversubscribe=1 DEAL_II_NUM_THREADS=1 \
-    mpirun -np 2 "$exe" --output "$work/out" "$@" >"$work/stdout" 2>"$work/stderr"
+    OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1 \
+    DEAL_II_NUM_THREADS=1 mpirun -np 2 "$exe" --output "$work/out" "$@" >"$work/stdout" 2>"$work/stderr"
   judge_ "$name" "$expect" $?
 }
 

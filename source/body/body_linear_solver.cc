@@ -80,7 +80,11 @@ namespace ddcontact
       void
       to_whole(const VectorType &x, BodyVector &u) const
       {
-        if (u.size() != x.size() || u.locally_owned_size() != x.size())
+        if (is_partitioned(u))
+        {
+          AssertDimension(u.locally_owned_size(), x.size());
+        }
+        else if (u.size() != x.size())
           u.reinit(x.size());
         std::copy(x.begin(), x.end(), u.begin());
       }
@@ -162,12 +166,18 @@ namespace ddcontact
 
       /** The solution in @p u: gathered whole on every process of the
        * group, or, into a distributed BodyVector (reinit by the body with
-       * the same owned rows), this process's rows. */
+       * the same owned rows), this process's rows. Collective over the
+       * group in the first case only: the choice is made from the layout
+       * of @p u, the same on every process of the group, never from
+       * whether this process owns every row (the one process that owns
+       * the single cell of a body would gather while the others copied,
+       * and the group would wait forever). */
       void
       to_whole(const VectorType &x, BodyVector &u) const
       {
-        if (u.size() == n_dofs && u.locally_owned_size() < n_dofs)
+        if (is_partitioned(u))
         {
+          AssertDimension(u.size(), n_dofs);
           AssertDimension(u.locally_owned_size(), x.locally_owned_size());
           std::copy(x.begin(), x.end(), u.begin());
           return;

@@ -8,6 +8,41 @@
 
 namespace ddcontact
 {
+  namespace
+  {
+    // The entrywise operations of the strategies. A process may own no
+    // entry of the iterate (a one-cell body on a group of several
+    // processes: one owns every dof, the others none), and deal.II's
+    // Vector refuses to operate on an empty vector; such a process still
+    // takes every inner product, which may be collective.
+
+    /** @p x -= @p y. */
+    void
+    subtract(Vector<double> &x, const Vector<double> &y)
+    {
+      AssertDimension(x.size(), y.size());
+      if (x.size() > 0)
+        x -= y;
+    }
+
+    /** @p x += @p a @p y. */
+    void
+    add(Vector<double> &x, const double a, const Vector<double> &y)
+    {
+      AssertDimension(x.size(), y.size());
+      if (x.size() > 0)
+        x.add(a, y);
+    }
+
+    /** @p x /= @p s. */
+    void
+    divide(Vector<double> &x, const double s)
+    {
+      if (x.size() > 0)
+        x /= s;
+    }
+  } // namespace
+
   Relaxation::Relaxation(const double gamma)
     : gamma(gamma)
     , inner([](const Vector<double> &x, const Vector<double> &y)
@@ -19,9 +54,9 @@ namespace ddcontact
   FixedRelaxation::update(const Vector<double> &x, const Vector<double> &g)
   {
     Vector<double> f(g);
-    f -= x;
+    subtract(f, x);
     Vector<double> x_new(x);
-    x_new.add(gamma, f); // (21): u^k + gamma (u~^{k+1} - u^k)
+    add(x_new, gamma, f); // (21): u^k + gamma (u~^{k+1} - u^k)
     return x_new;
   }
 
@@ -29,27 +64,29 @@ namespace ddcontact
   AitkenRelaxation::reset()
   {
     previous_residual.reinit(0);
+    has_previous = false;
   }
 
   Vector<double>
   AitkenRelaxation::update(const Vector<double> &x, const Vector<double> &g)
   {
     Vector<double> f(g);
-    f -= x; // residual of the fixed-point map u -> u~
+    subtract(f, x); // residual of the fixed-point map u -> u~
     // The secant estimate of the best gamma for the residual's recent
     // change.
-    if (previous_residual.size() == f.size())
+    if (has_previous)
     {
       Vector<double> df(f);
-      df -= previous_residual;
+      subtract(df, previous_residual);
       const double dd = inner(df, df);
       if (dd > 0)
         gamma =
           std::clamp(-gamma * inner(previous_residual, df) / dd, 1e-6, 1.);
     }
     previous_residual = f;
+    has_previous      = true;
     Vector<double> x_new(x);
-    x_new.add(gamma, f);
+    add(x_new, gamma, f);
     return x_new;
   }
 
@@ -64,6 +101,7 @@ namespace ddcontact
   AndersonRelaxation::reset()
   {
     previous_residual.reinit(0);
+    has_previous = false;
     delta_f.clear();
     delta_g.clear();
   }
@@ -72,12 +110,12 @@ namespace ddcontact
   AndersonRelaxation::update(const Vector<double> &x, const Vector<double> &g)
   {
     Vector<double> f(g);
-    f -= x;
-    if (previous_residual.size() == f.size())
+    subtract(f, x);
+    if (has_previous)
     {
       Vector<double> df = f, dg = g;
-      df -= previous_residual;
-      dg -= previous_g;
+      subtract(df, previous_residual);
+      subtract(dg, previous_g);
       delta_f.push_back(df);
       delta_g.push_back(dg);
       if (delta_f.size() > depth)
@@ -88,6 +126,7 @@ namespace ddcontact
     }
     previous_residual = f;
     previous_g        = g;
+    has_previous      = true;
 
     // The least-squares problem min ||f - sum alpha_i df_i|| by a modified
     // Gram-Schmidt QR of the columns df_i, newest first. With a stiff
@@ -113,7 +152,7 @@ namespace ddcontact
         for (unsigned int i = 0; i < j; ++i)
         {
           r(i, j) = inner(q[i], v);
-          v.add(-r(i, j), q[i]);
+          add(v, -r(i, j), q[i]);
         }
         r(j, j) = std::sqrt(inner(v, v));
         if (!(r(j, j) >
@@ -124,7 +163,7 @@ namespace ddcontact
           complete = false;
           break;
         }
-        v /= r(j, j);
+        divide(v, r(j, j));
         q.push_back(v);
       }
     }
@@ -140,12 +179,12 @@ namespace ddcontact
     // x_new = (x + gamma f) - sum alpha_i (dx_i + gamma df_i), with
     // dx = dg - df (alpha(j) belongs to the j-th newest column).
     Vector<double> x_new(x);
-    x_new.add(gamma, f);
+    add(x_new, gamma, f);
     for (unsigned int j = 0; j < m_kept; ++j)
     {
       const unsigned int column = m_kept - 1 - j;
-      x_new.add(-alpha(j), delta_g[column]);
-      x_new.add(alpha(j) * (1. - gamma), delta_f[column]);
+      add(x_new, -alpha(j), delta_g[column]);
+      add(x_new, alpha(j) * (1. - gamma), delta_f[column]);
     }
     return x_new;
   }

@@ -19,6 +19,21 @@ namespace ddcontact
   using BodyVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
   /**
+   * Whether @p v holds this process's part of a vector partitioned
+   * between processes (ElasticBody::distribute_vectors()) rather than a
+   * vector of its own. Every process holding a vector of one layout gets
+   * the same answer, so it may choose between collective operations;
+   * whether this process's part is the whole vector may not (the process
+   * that owns the single cell of a body owns every dof, the others none).
+   */
+  inline bool
+  is_partitioned(const BodyVector &v)
+  {
+    return dealii::Utilities::MPI::n_mpi_processes(v.get_mpi_communicator()) >
+           1;
+  }
+
+  /**
    * @p to = @p from on this process alone: the same layout, and the ghost
    * entries copied as they are, ghosted or not. BodyVector's assignment
    * imports the ghosts again, which is collective (a hang in code that

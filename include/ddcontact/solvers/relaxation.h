@@ -96,6 +96,11 @@ namespace ddcontact
 
   private:
     Vector<double> previous_residual;
+    // Whether previous_residual belongs to this phase: a flag, the same
+    // on every process, since the sizes of the vectors are not (a process
+    // that owns no entry holds empty ones) and the branch takes inner
+    // products, which may be collective.
+    bool has_previous = false;
   };
 
   /** Anderson acceleration (type II) of depth m: the combination of the
@@ -116,6 +121,9 @@ namespace ddcontact
     const unsigned int         depth;
     Vector<double>             previous_residual, previous_g;
     std::deque<Vector<double>> delta_f, delta_g;
+    // Whether the previous_ vectors belong to this phase (see
+    // AitkenRelaxation).
+    bool has_previous = false;
   };
 
   /** The strategy of Contact solver/Domain decomposition/Relaxation ("auto" is
