@@ -466,17 +466,7 @@ namespace ddcontact
     prm.leave_subsection();
 
     prm.enter_subsection("Loading");
-    prm.declare_entry(
-      "Steps",
-      "1",
-      Patterns::Integer(1, 100000),
-      "Quasi-static load steps: the Dirichlet, Neumann and body-force "
-      "expressions may use the load parameter t, which runs through k / "
-      "Steps, k = 1, ..., Steps (t = 1 with one step). Each step is solved "
-      "from the last (warm start); with friction the slip and the "
-      "tangential traction carry over from step to step (doc/friction.md). "
-      "Every step writes its output (bodies-<step>.vtu in the PVD time "
-      "series, contact_<pair>_step<k>.csv).");
+    LoadingParameters::declare(prm);
     prm.leave_subsection();
 
     prm.enter_subsection("Parallel");
@@ -581,10 +571,10 @@ namespace ddcontact
     adaptation.parse(prm);
     prm.leave_subsection();
     prm.enter_subsection("Loading");
-    load_steps = prm.get_integer("Steps");
+    loading.parse(prm);
     prm.leave_subsection();
     // The bodies check their boundary data at every load time.
-    set_checked_load_steps(load_steps);
+    set_checked_load_steps(loading.n_checked_load_times());
     // The combined algorithm (Fig. 2) interleaves single DD steps with the
     // refinement; the monolithic solver has no such steps.
     if (adaptation.mode == AdaptationMode::combined &&
@@ -676,6 +666,18 @@ namespace ddcontact
       contact_pairs.empty() ||
         contact_pairs.front().formulation == ContactFormulation::exact,
       frictional == contact_pairs.end() ? std::string() : frictional->name);
+    // Going back to the start of a load step (Steps = auto, Check path)
+    // needs the meshes of that start; an adaptive loop refines them
+    // (without friction auto takes one step and Check path has no effect).
+    if ((loading.automatic || loading.check_path) &&
+        frictional != contact_pairs.end() &&
+        adaptation.mode != AdaptationMode::none)
+      throw InputError(
+        std::string("Loading/") +
+        (loading.automatic ? "Steps = auto" : "Check path = true") +
+        " needs Adaptation/Mode = none: a load step solved again from its "
+        "start needs the start's meshes, which the adaptive loop refines; "
+        "with adaptation give a fixed number of Steps");
 
     prm.enter_subsection("Output");
     {

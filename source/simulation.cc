@@ -358,52 +358,12 @@ namespace ddcontact
     if (adaptation)
       report.open_statistics(bodies);
     record_progress("");
-    // Loading/Steps: the load parameter t = k / Steps; one step solves at
-    // t = 1 with the data as assembled.
-    const unsigned int n_steps = parameters.load_steps;
-    for (unsigned int k = 1; k <= n_steps; ++k)
-    {
-      const double t = double(k) / n_steps;
-      if (n_steps > 1)
-        start_load_step(k, t);
-      step = (k == 1) ? "the first solve" : "load step " + std::to_string(k);
-      solve();
-      if (!adaptation)
-        output_results(k - 1);
-      if (n_steps > 1 && contact_solver)
-        report.record_load_step(results(), k, t);
-      if (n_steps > 1)
-      {
-        std::ostringstream what;
-        what << "load step " << k << " of " << n_steps << " (t = " << t << ")";
-        record_progress(what.str());
-      }
-    }
+    run_load_steps();
     report.write_final(results());
 
     timer.print_summary();
     pcout << "wall time " << std::fixed << std::setprecision(2)
           << wall_clock.wall_time() << " s" << std::defaultfloat << std::endl;
-  }
-
-  void
-  Simulation::start_load_step(const unsigned int k, const double t)
-  {
-    {
-      TimerOutput::Scope timer_scope(timer, "setup");
-      pcout << "load step " << k << ": t = " << t << std::endl;
-      const bool partitioned = parameters.parallel.process_groups(
-        Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
-        parameters.bodies.size());
-      run_tasks(
-        bodies.size(),
-        [&](const unsigned int b) { bodies[b]->set_load_time(t); },
-        partitioned);
-    }
-    // The first step starts the solver (FixedMeshes); the next go on from
-    // the last one's iterate and history.
-    if (k > 1 && contact_solver)
-      contact_solver->start_load_step();
   }
 
   void

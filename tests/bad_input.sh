@@ -300,6 +300,9 @@ case_ "friction bound NaN" "Contact pair S/Friction bound" "$friction" --set "Co
 case_ "friction with the paper's dd" "Contact pair S/Friction: friction is solved by Contact solver/Solver = dd-newton or monolithic" "$friction" --set "Contact solver/Solver=dd"
 case_ "friction with a floating body" "Body omega1/Dirichlet: the body is floating" "$friction" --set "Contact solver/Solver=dd-newton" --set "Body omega1/Boundary conditions/Dirichlet="
 case_ "no load step" "Steps" "$paper" --set "Loading/Steps=0"
+case_ "load steps neither auto nor a number" "Loading/Steps: 'some' is neither auto nor a whole number" "$paper" --set "Loading/Steps=some"
+case_ "zero path tolerance" "Loading/Path tolerance: must be positive" "$paper" --set "Loading/Steps=auto" --set "Loading/Path tolerance=0"
+case_ "automatic load steps with friction and adaptation" "Loading/Steps = auto needs Adaptation/Mode = none" "$src/prm/cattaneo_mindlin.prm" --set "Loading/Steps=auto" --set "Adaptation/Mode=nested" --set "Adaptation/Bodies=upper"
 # A load that is infinite at one load time only is refused before the run
 # solves anything (every load time is checked when the bodies are set up),
 # naming t and the step.

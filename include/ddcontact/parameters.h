@@ -8,6 +8,7 @@
 #include <ddcontact/body/body_parameters.h>
 #include <ddcontact/body/parallel_parameters.h>
 #include <ddcontact/contact/contact_pair_parameters.h>
+#include <ddcontact/loading/loading_parameters.h>
 #include <ddcontact/parameter_tools.h>
 #include <ddcontact/solvers/contact_solver_parameters.h>
 
@@ -41,9 +42,8 @@ namespace ddcontact
     bool                     write_vtu         = true;
     bool                     smoothed_stresses = true;
     unsigned int             n_threads         = 0; // 0 = all cores
-    /** Loading/Steps: the load parameter t of the boundary data runs
-     * through k / Steps, k = 1, ..., Steps (quasi-static load steps). */
-    unsigned int load_steps = 1;
+    /** Loading: the quasi-static load steps of the load parameter t. */
+    LoadingParameters loading;
 
     std::vector<BodyParameters>        bodies;
     std::vector<ContactPairParameters> contact_pairs;

@@ -11,6 +11,7 @@
 #include <ddcontact/contact/contact_pair.h>
 #include <ddcontact/io/run_report.h>
 #include <ddcontact/io/solution_output.h>
+#include <ddcontact/loading/load_path_measures.h>
 #include <ddcontact/parameters.h>
 #include <ddcontact/solvers/contact_solver.h>
 
@@ -157,11 +158,47 @@ namespace ddcontact
     void
     solve();
 
-    /** Load step @p k (from 1) of Loading/Steps at the load parameter
-     * @p t: the bodies' data of t, and from the second step on the
-     * solver's new step. */
+    /** The load steps of Loading (simulation_load_steps.cc): a fixed
+     * number, or with Steps = auto those that LoadStepControl accepts. */
     void
-    start_load_step(unsigned int k, double t);
+    run_load_steps();
+
+    void
+    run_fixed_load_steps();
+
+    void
+    run_automatic_load_steps();
+
+    /** Whether the solution depends on the load path (a frictional
+     * pair). */
+    bool
+    path_dependent() const;
+
+    /** Solve at the load parameter @p t: the bodies' data of t, from the
+     * second solve on the solver's new load step (or, if @p continuing,
+     * the second part of the current one), then solve(). */
+    void
+    solve_at(double t, bool continuing = false);
+
+    /** Solve the step to @p t_end in two halves from the current state;
+     * returns the measures at its end, and those of the first half in
+     * @p first_half. */
+    LoadPathMeasures
+    solve_in_halves(double t_start, double t_end, LoadPathMeasures &first_half);
+
+    /** The measures of the current solution. Collective. */
+    LoadPathMeasures
+    path_measures() const;
+
+    /** Load step @p k is done at @p t: its output, its row in
+     * summary.json (with its load-path error if finite, when @p record),
+     * and the progress record. */
+    void
+    finish_load_step(unsigned int       k,
+                     double             t,
+                     const std::string &of_steps,
+                     bool               record,
+                     double             path_error);
 
     /** After a DivergenceError or an interruption: history.csv, the
      * contact profiles, the VTU/PVD of the last iterate (if Output/Write
@@ -190,6 +227,10 @@ namespace ddcontact
     std::string  step           = "the setup of the bodies";
     unsigned int n_output_steps = 0;
     bool         is_set_up      = false;
+    // The load parameter of the bodies' data (assembled at t = 1) and the
+    // solves so far (the first starts the solver, the next a load step).
+    double       load_time = 1;
+    unsigned int n_solves  = 0;
     // Where gmsh meshes the .geo files: a temporary directory of the run,
     // not the output directory (which setup() does not touch).
     std::string mesh_directory;

@@ -254,6 +254,24 @@ namespace ddcontact
   void
   RunReport::record_load_step(const Results     &results,
                               const unsigned int step,
+                              const double       t,
+                              const double       path_error)
+  {
+    record_load_step(results, step, t);
+    load_steps.back()["path_error"] = path_error;
+  }
+
+  void
+  RunReport::record_load_path(const Json                     &path,
+                              const std::vector<std::string> &warnings)
+  {
+    load_path          = path;
+    load_path_warnings = warnings;
+  }
+
+  void
+  RunReport::record_load_step(const Results     &results,
+                              const unsigned int step,
                               const double       t)
   {
     std::ostringstream suffix;
@@ -687,8 +705,12 @@ namespace ddcontact
     if (!error.empty())
       json["error"] = error;
     json["warnings"] = Json::array();
+    for (const auto &warning : load_path_warnings)
+      json["warnings"].push_back(warning);
     if (!load_steps.empty())
       json["load_steps"] = load_steps;
+    if (!load_path.is_null())
+      json["load_path"] = load_path;
     json["wall_time_s"] = wall_clock.wall_time();
     return json;
   }
@@ -711,7 +733,9 @@ namespace ddcontact
     json["units"]    = "consistent units of the scene; forces and energies "
                        "per unit thickness (plane strain)";
     json["warnings"] = Json::array();
-    json["bodies"]   = bodies_json(results);
+    for (const auto &warning : load_path_warnings)
+      json["warnings"].push_back(warning);
+    json["bodies"] = bodies_json(results);
     for (const auto &b : json["bodies"])
     {
       const double strain   = b["largest_strain"].get<double>();
@@ -735,6 +759,8 @@ namespace ddcontact
     json["points"]        = points_json(results);
     if (!load_steps.empty())
       json["load_steps"] = load_steps;
+    if (!load_path.is_null())
+      json["load_path"] = load_path;
     // The penetration is judged only where the contact iteration converged
     // (also "stalled": the DD converged, the Uzawa loop did not).
     if (!results.contact_pairs.empty())

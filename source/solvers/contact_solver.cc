@@ -110,6 +110,32 @@ namespace ddcontact
   }
 
   void
+  ContactSolver::continue_load_step()
+  {
+    if (auto *friction = friction_history())
+      friction->continue_load_step();
+    start_load_step();
+  }
+
+  FrictionHistory
+  ContactSolver::load_step_start() const
+  {
+    // friction_history() is not const: it hands out the solver's own
+    // history, which this copies and does not change.
+    if (const auto *friction =
+          const_cast<ContactSolver *>(this)->friction_history())
+      return *friction;
+    return {};
+  }
+
+  void
+  ContactSolver::return_to_load_step_start(const FrictionHistory &start)
+  {
+    if (auto *friction = friction_history())
+      *friction = start;
+  }
+
+  void
   ContactSolver::initialize()
   {
     records.clear();

@@ -14,6 +14,10 @@ namespace ddcontact
     last_tractions.clear();
     point_slips.clear();
     points.clear();
+    last_point_slips.clear();
+    last_dissipation.clear();
+    carried_dissipation.clear();
+    continuing = false;
   }
 
   namespace
@@ -33,15 +37,30 @@ namespace ddcontact
   FrictionHistory::start_load_step(const ContactProblem   &problem,
                                    const ContactInterface &interface)
   {
-    nodes     = interface.positions();
-    slips     = last_slips;
-    tractions = last_tractions;
-    point_slips.assign(problem.get_pairs().size(), {});
-    points.assign(problem.get_pairs().size(), {});
-    for (unsigned int k = 0; k < point_slips.size(); ++k)
+    nodes                      = interface.positions();
+    slips                      = last_slips;
+    tractions                  = last_tractions;
+    const unsigned int n_pairs = problem.get_pairs().size();
+    if (continuing && carried_dissipation.size() == n_pairs)
     {
-      point_slips[k] = problem.law(k).get_friction().slip;
-      points[k]      = positions(problem, k);
+      // A part of the same load step: the slip increment still counts
+      // from the step's start (point_slips stay), the energy dissipated
+      // so far is carried.
+      for (unsigned int k = 0; k < n_pairs; ++k)
+        carried_dissipation[k] =
+          (k < last_dissipation.size()) ? last_dissipation[k] : 0.;
+      continuing = false;
+      return;
+    }
+    continuing = false;
+    carried_dissipation.assign(n_pairs, 0.);
+    point_slips.assign(n_pairs, {});
+    points.assign(n_pairs, {});
+    for (unsigned int k = 0; k < n_pairs; ++k)
+    {
+      if (k < last_point_slips.size())
+        point_slips[k] = last_point_slips[k];
+      points[k] = positions(problem, k);
     }
   }
 
@@ -77,9 +96,11 @@ namespace ddcontact
     AssertDimension(t.size(), n);
     AssertDimension(nodal_slips.size(), n);
     AssertDimension(sticking.size(), n);
-    last_slips          = nodal_slips;
-    last_tractions      = t;
-    const auto &pairs   = problem.get_pairs();
+    last_slips        = nodal_slips;
+    last_tractions    = t;
+    const auto &pairs = problem.get_pairs();
+    last_point_slips.assign(pairs.size(), {});
+    last_dissipation.assign(pairs.size(), 0.);
     const auto &bodies  = problem.get_bodies();
     const auto  minus_t = interface.normal_stresses(t);
     // The points with a sticking node.
@@ -97,6 +118,8 @@ namespace ddcontact
       if (!pair.has_friction())
         continue;
       ContactLaw::Friction result;
+      if (k < carried_dissipation.size())
+        result.dissipation = carried_dissipation[k];
       result.slip = pair.slips(
         bodies[problem.body_index(pair.get_body_1())]->get_solution(),
         bodies[problem.body_index(pair.get_body_2())]->get_solution());
@@ -126,6 +149,8 @@ namespace ddcontact
                                : sticks[k][q] ? ContactLaw::SlipState::stick
                                               : ContactLaw::SlipState::slip);
       }
+      last_point_slips[k] = result.slip;
+      last_dissipation[k] = result.dissipation;
       problem.law(k).set_friction(result);
     }
   }

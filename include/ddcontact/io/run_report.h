@@ -138,6 +138,21 @@ namespace ddcontact
     void
     record_load_step(const Results &results, unsigned int step, double t);
 
+    /** record_load_step() with the step's estimated load-path error
+     * (Loading/Steps = auto or Check path), written as path_error. */
+    void
+    record_load_step(const Results &results,
+                     unsigned int   step,
+                     double         t,
+                     double         path_error);
+
+    /** The summary's load_path (how the steps were chosen, the estimated
+     * load-path error) and its @p warnings, written with every summary
+     * from now on. */
+    void
+    record_load_path(const Json                     &path,
+                     const std::vector<std::string> &warnings);
+
     /** The reaction of every Dirichlet id of every body in the summary
      * last written, one line each. */
     void
@@ -212,11 +227,13 @@ namespace ddcontact
     const Timer              &wall_clock;
     const ConditionalOStream &pcout;
     /** Process 0 writes the files. */
-    const bool    writes_files;
-    std::ofstream statistics;
-    Json          summary_json;
-    Json          load_steps = Json::array(); // record_load_step()
-    std::string   last_completed_step;
+    const bool               writes_files;
+    std::ofstream            statistics;
+    Json                     summary_json;
+    Json                     load_steps = Json::array(); // record_load_step()
+    Json                     load_path;                  // record_load_path()
+    std::vector<std::string> load_path_warnings;
+    std::string              last_completed_step;
   };
 } // namespace ddcontact
 

@@ -11,6 +11,7 @@
 #include <ddcontact/parameter_tools.h>
 #include <ddcontact/solvers/contact_solver_parameters.h>
 #include <ddcontact/solvers/errors.h>
+#include <ddcontact/solvers/friction_history.h>
 #include <ddcontact/solvers/uzawa_loop.h>
 
 #include <functional>
@@ -156,6 +157,25 @@ namespace ddcontact
       reinit_after_refinement();
     }
 
+    /** start_load_step() for the second part of the current load step
+     * (Loading/Steps = auto solves a step in two halves): the history
+     * moves on, the slip increment and the dissipated energy of the
+     * results still count from the load step's start. */
+    void
+    continue_load_step();
+
+    /** The path-dependent state a load step starts from: a copy of the
+     * friction history (empty without friction, where the solution does
+     * not depend on the path). */
+    FrictionHistory
+    load_step_start() const;
+
+    /** Go back to @p start (from load_step_start()) to solve the load
+     * step again; the next start_load_step() starts from it. The iterate
+     * stays as it is: it only starts the next solve. */
+    void
+    return_to_load_step_start(const FrictionHistory &start);
+
     /**
      * The augmented Lagrangian's outer step (UzawaLoop::update()) after
      * the iteration on the current multipliers has converged; on an update
@@ -243,6 +263,14 @@ namespace ddcontact
     last_contact_traction(const ElasticBody<2> &body) const;
 
   protected:
+    /** The friction history of a frictional solver, nullptr for one
+     * without friction. */
+    virtual FrictionHistory *
+    friction_history()
+    {
+      return nullptr;
+    }
+
     /** Take the bodies' current solutions as the last body solutions,
      * loaded by their own contact pressure: after a solver that converged
      * without DD steps (the monolithic one), the converged u solves (20)

@@ -321,7 +321,13 @@ namespace ddcontact
       problem, parameters.multipliers_on_nodes(), parameters.exact_contact(),
         parameters.friction
     };
-    FrictionHistory      history;
+    FrictionHistory history;
+
+    FrictionHistory *
+    friction_history() override
+    {
+      return &history;
+    }
     RobinPreconditioner  preconditioner{problem};
     RigidModeCoarseSpace coarse{problem, interface};
     bool                 mesh_ready = false; // interface, u_0, S p

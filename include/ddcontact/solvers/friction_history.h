@@ -29,10 +29,22 @@ namespace ddcontact
     clear();
 
     /** The last published iterate (publish()) becomes the history of the
-     * next load step, on the nodes of @p interface and the pairs' points. */
+     * next load step, on the nodes of @p interface and the pairs' points.
+     * After continue_load_step(), the next solve is the second part of the
+     * same load step: the law's history moves on, but the slip increment
+     * and the dissipated energy that publish() reports still count from
+     * the start of the load step. */
     void
     start_load_step(const ContactProblem   &problem,
                     const ContactInterface &interface);
+
+    /** The next start_load_step() starts a part of the current load step
+     * (Loading/Steps = auto solves a step in two halves). */
+    void
+    continue_load_step()
+    {
+      continuing = true;
+    }
 
     /** After a refinement (@p interface reinitialised on the new nodes):
      * the history moves to the new nodes, linearly between the old ones
@@ -90,6 +102,16 @@ namespace ddcontact
     PointVector                        last_slips, last_tractions; // published
     std::vector<std::vector<double>>   point_slips; // per pair, last step
     std::vector<std::vector<Point<2>>> points;      // where point_slips live
+    // Per pair as last published: the slip at the points (the next
+    // step's point_slips; kept here, not read back from the laws, so that
+    // a copy of the history is a whole state to go back to), and the
+    // energy dissipated since the load step started.
+    std::vector<std::vector<double>> last_point_slips;
+    std::vector<double>              last_dissipation;
+    // The dissipation of the earlier parts of the current load step, per
+    // pair, and whether the next start_load_step() continues it.
+    std::vector<double> carried_dissipation;
+    bool                continuing = false;
   };
 } // namespace ddcontact
 

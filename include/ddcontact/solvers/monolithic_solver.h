@@ -260,6 +260,12 @@ namespace ddcontact
     PointVector     last_multipliers;   // p and t of the last solve, on nodes
     bool            warm_start = false; // from last_multipliers (a load step)
     FrictionHistory history;
+
+    FrictionHistory *
+    friction_history() override
+    {
+      return &history;
+    }
     SparsityPattern sparsity;
   };
 } // namespace ddcontact
