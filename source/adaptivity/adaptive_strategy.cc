@@ -34,6 +34,14 @@ namespace ddcontact
     context.solver->run();
   }
 
+  std::string
+  AdaptiveStrategy::stop_note(const unsigned int marked) const
+  {
+    const std::string reason =
+      context.adaptation ? context.adaptation->stop_reason() : "";
+    return (marked == 0 && !reason.empty()) ? " (" + reason + ")" : "";
+  }
+
   void
   AdaptiveStrategy::start_solver()
   {
@@ -64,7 +72,7 @@ namespace ddcontact
           ? 0
           : adaptation.mark(context.solver, !last);
       context.pcout << "  adaptation cycle " << cycle << ": " << marked
-                    << " cells marked" << std::endl;
+                    << " cells marked" << stop_note(marked) << std::endl;
       const bool final = (marked == 0 || last);
       context.adaptation_step(marked, parameters.write_every_mesh || final);
       if (final)
@@ -105,7 +113,7 @@ namespace ddcontact
       const unsigned int marked = adaptation.mark(&solver, may_refine);
       context.pcout << "  cycle " << adaptation.n_steps() << " (DD iteration "
                     << solver.history().size() << "): " << marked
-                    << " cells marked" << std::endl;
+                    << " cells marked" << stop_note(marked) << std::endl;
       context.adaptation_step(marked,
                               parameters.write_every_mesh || first ||
                                 (marked == 0 && converged));

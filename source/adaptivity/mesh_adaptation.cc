@@ -122,7 +122,10 @@ namespace ddcontact
              ") was reached";
       return 0;
     }
-    if (marked == 0 && target > 0 && estimate > target)
+    // Why nothing is refined, for the console and summary.json (with or
+    // without a Target error: a cap that stops the marking is never
+    // silent).
+    if (marked == 0)
       stop = reason_for_no_marking();
     return marked;
   }

@@ -660,9 +660,10 @@ namespace ddcontact
         << (results.adaptation_stop.empty() ? "the refinement stopped"
                                             : results.adaptation_stop)
         << "; raise the cap that stopped it, or set a larger Target error";
-      json["adaptation_stopped_by"] = results.adaptation_stop;
       json["warnings"].push_back(s.str());
     }
+    if (!results.adaptation_stop.empty())
+      json["adaptation_stopped_by"] = results.adaptation_stop;
   }
 
   Json

@@ -68,6 +68,11 @@ namespace ddcontact
     void
     start_solver();
 
+    /** " (why)" after "0 cells marked" when the marking stopped on a cap
+     * (MeshAdaptation::stop_reason()), else empty. */
+    std::string
+    stop_note(unsigned int marked) const;
+
     const AdaptationParameters parameters;
     Context                    context;
 
