@@ -33,7 +33,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from friction_study import fit_zero_of_root, read_profile, write_csv  # noqa: E402
+from friction_study import (fit_zero_of_root, read_profile, study_box,  # noqa: E402
+                            write_csv)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXE = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "ddcontact")
@@ -54,7 +55,8 @@ def mindlin_traction(x, a, p0, c):
 
 
 def run(kind, level, out, estimator="kelly"):
-    settings = ["Contact solver/Solver=dd-newton", "Output/Write vtu=false"]
+    settings = ["Contact solver/Solver=dd-newton",
+                "Output/Write vtu=false"] + study_box()
     for body in ("upper", "lower"):
         if kind == "uniform":
             settings += [f"Body {body}/Mesh/Box refinement=0",

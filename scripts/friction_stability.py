@@ -27,7 +27,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from friction_study import (fit_zero_of_root, read_profile,  # noqa: E402
-                            solver_settings, write_csv)
+                            solver_settings, study_box, write_csv)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXE = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "ddcontact")
@@ -108,9 +108,10 @@ def agreement(out, reference):
 
 
 def cm_case(work, name, mu, solver, lower_E=1000, U=0.0015):
-    settings = ["Body upper/Mesh/Box refinement=6", "Body lower/Mesh/Box refinement=6",
-                f"Constants=R=50, Delta=0.005, U={U}, mu={mu}",
-                f"Body lower/Material/Young's modulus={lower_E}"]
+    settings = study_box() + [
+        "Body upper/Mesh/Box refinement=6", "Body lower/Mesh/Box refinement=6",
+        f"Constants=R=50, Delta=0.005, U={U}, mu={mu}",
+        f"Body lower/Material/Young's modulus={lower_E}"]
     out = os.path.join(work, f"{solver}_{name}")
     code, summary, error = run(CM, settings, out, solver)
     row = {"case": name, "solver": solver, "scene": "cattaneo_mindlin" +

@@ -35,6 +35,18 @@ ARGS = [a for a in sys.argv[1:] if not a.startswith("--")]
 EXE = ARGS[0] if ARGS else os.path.join(ROOT, "build", "ddcontact")
 SCENE = os.path.join(ROOT, "prm", "cattaneo_mindlin.prm")
 MU = 0.3
+# The refinement box the friction studies of doc/friction.md (sections
+# 5.3-5.5, doc/friction*.csv) were measured on: the scene's box before it
+# reached 0.45 deep (section 5.2). Kept here so that the recorded tables
+# come out again; the shipped box takes the peak pressure's bias from
+# 0.9 % to 0.3 % and leaves c/a and the Newton steps alike.
+STUDY_BOX = "-0.8, -0.2, 0.8, 0.2"
+
+
+def study_box():
+    """The --set entries of STUDY_BOX on both blocks."""
+    return [f"Body {body}/Mesh/Refinement box={STUDY_BOX}"
+            for body in ("upper", "lower")]
 
 
 def fit_zero_of_root(xs, ys):
@@ -75,7 +87,7 @@ def solver_settings(solver):
 
 
 def run(level, steps, friction, out, subdivisions=8, solver="monolithic"):
-    settings = solver_settings(solver) + [
+    settings = solver_settings(solver) + study_box() + [
         f"Body upper/Mesh/Box refinement={level}",
         f"Body lower/Mesh/Box refinement={level}",
         f"Body upper/Mesh/Subdivisions={subdivisions}, {subdivisions // 2}",

@@ -17,11 +17,9 @@ needs:
                       With friction (the CSV's tangential_traction column)
                       a third panel draws the tangential traction t, the
                       Coulomb bound mu p where mu is a number or a constant,
-                      and, with the Hertz curve, Cattaneo-Mindlin's
-                      partial slip for the run's Q and P:
-                      q = mu p0/a (sqrt(a^2 - x^2) - sqrt(c^2 - x^2)),
-                      c = a sqrt(1 - |Q|/(mu P)) (doc/friction.md §5.2),
-                      recorded in mindlin_<pair>.json
+                      and, with the Hertz curve, the closed form of the
+                      run's load path (below), recorded in
+                      mindlin_<pair>.json
   convergence.png     the DD iteration (history.csv): residual and increment
                       (log scale), contact force, largest penetration
   adaptation.png      adaptive runs (statistics.csv): cells and dofs per body,
@@ -73,6 +71,33 @@ For every pair with a curve the script prints one line
   hertz <pair>: a = A, p0 = P0, whole force F (half|full model, R = ...)
 and writes hertz_<pair>.json with the same numbers (model, force of the
 run's zone, whole force, R, x0, E*, a, p0, a/L, and why).
+
+The profiles are drawn against x1 on a straight zone (x2 on a vertical
+one). On a curved zone x1 may run back and forth (a pin in a hole), so they
+are drawn against the arc length s along S_1: the points are chained by
+nearest neighbours into the curve (closed or open), s counts from the
+point of largest pressure, where it equals that point's x1, and a closed
+curve is cut opposite it. The axis label says which and where.
+
+Friction closed forms (Coulomb, elastically similar bodies, a Hertz
+curve): the load history comes from contact_<pair>_stepNNNN.csv (or
+summary.json's load_steps), the normal force P and the tangential force Q
+after each step. A step solves the tangential problem on its final
+contact, so the closed forms hold where P stays the same from the first
+step that changes Q on:
+  - Q monotone: Cattaneo-Mindlin at the last Q,
+      t = mu p0/a (sqrt(a^2 - x^2) - sqrt(c^2 - x^2)),
+      c = a sqrt(1 - |Q|/(mu P)) (doc/friction.md §5.2);
+  - Q turned once, at Q*, and back toward 0 (Mindlin-Deresiewicz):
+      t = t_CM(Q*) - 2 t_CM((Q* - Q)/2), t_CM the curve above for a force,
+      with the slip reversed for c' < |x - x0| < a,
+      c' = a sqrt(1 - |Q* - Q|/(2 mu P)); once Q has gone past -Q* the
+      first loading is forgotten and Cattaneo-Mindlin at Q holds again;
+  - otherwise (P changing under the shear, as when pressing and shearing
+    together, or Q turning more than once) no curve, and one line saying
+    why.
+mindlin_<pair>.json holds Q, P, a, the path, c (c' after a reversal),
+c/a, and after a reversal Q* and the loading's c*.
 
 Needs matplotlib (Debian: python3-matplotlib, installed by
 scripts/install_deps.sh).
@@ -362,6 +387,85 @@ def last_csv_meshes(run):
 
 
 # --------------------------------------------------------------------------
+# The abscissa of the profiles along S_1
+
+
+def order_along_zone(xy):
+    """The order of the points xy (an n x 2 array) along the curve they lie
+    on, and whether that curve is closed: a chain grown from the first
+    point at both ends, each time by the unvisited point nearest to either
+    end. Neighbours along a curve are nearer than points across it unless
+    the curve comes back within one point spacing of itself."""
+    import numpy as np
+    n = len(xy)
+    free = np.ones(n, dtype=bool)
+    free[0] = False
+    chain = [0]
+    for _ in range(n - 1):
+        d_head = np.where(free, np.hypot(*(xy - xy[chain[0]]).T), np.inf)
+        d_tail = np.where(free, np.hypot(*(xy - xy[chain[-1]]).T), np.inf)
+        i, j = int(np.argmin(d_head)), int(np.argmin(d_tail))
+        if d_head[i] < d_tail[j]:
+            chain.insert(0, i)
+        else:
+            chain.append(j)
+            i = j
+        free[i] = False
+    steps = np.hypot(*np.diff(xy[chain], axis=0).T)
+    gap = float(np.hypot(*(xy[chain[-1]] - xy[chain[0]])))
+    closed = n > 3 and gap <= 2 * float(steps.max())
+    return chain, closed
+
+
+def zone_abscissa(points, reference=None):
+    """Sets p["s"], the position along S_1 that the profiles are drawn
+    against, on every point, and returns the axis label.
+
+    A straight zone keeps x1 (x2 if it is closer to vertical). On a curved
+    one, x1 may run back and forth (a pin in a hole: the two halves of the
+    circle would interleave into a comb), so s is the arc length along the
+    polyline of the points (order_along_zone), counted from the point of
+    largest pressure (or the point nearest @p reference, an (x1, x2)) where
+    s equals that point's x1 (x2 on a vertical tangent), growing as x1 does
+    there; a closed curve is cut opposite that point. Near a contact whose
+    tangent is horizontal s is then close to x1, so the Hertz fit in s is
+    the fit in x1. Returns (label, the reference point)."""
+    import numpy as np
+    xy = np.array([[p["x1"], p["x2"]] for p in points], dtype=float)
+    centre = xy.mean(axis=0)
+    _, _, axes = np.linalg.svd(xy - centre, full_matrices=False)
+    along = (xy - centre) @ axes[0]
+    across = (xy - centre) @ axes[1] if len(axes) > 1 else along * 0
+    extent = float(along.max() - along.min()) if len(points) else 0.
+    if len(points) < 3 or float(abs(across).max()) <= 1e-9 * max(extent, 1e-300):
+        key = "x1" if abs(axes[0][0]) >= abs(axes[0][1]) else "x2"
+        for p in points:
+            p["s"] = p[key]
+        return f"$x_{key[1]}$ along $S_1$", None
+    chain, closed = order_along_zone(xy)
+    ordered = xy[chain]
+    lengths = np.concatenate([[0.], np.cumsum(np.hypot(*np.diff(ordered, axis=0).T))])
+    if reference is None:
+        ref = int(np.argmax([points[i]["pressure"] for i in chain]))
+    else:
+        ref = int(np.argmin(np.hypot(*(ordered - np.asarray(reference)).T)))
+    s = lengths - lengths[ref]
+    if closed:
+        total = lengths[-1] + float(np.hypot(*(ordered[-1] - ordered[0])))
+        s = (s + total / 2) % total - total / 2
+    tangent = ordered[min(ref + 1, len(chain) - 1)] - ordered[max(ref - 1, 0)]
+    key = 0 if abs(tangent[0]) >= abs(tangent[1]) else 1
+    if tangent[key] < 0:
+        s = -s
+    s = s + ordered[ref][key]
+    for i, value in zip(chain, s):
+        points[i]["s"] = float(value)
+    return (f"arc length $s$ along $S_1$ ({'closed' if closed else 'curved'}; "
+            f"$s = x_{key + 1}$ at ({ordered[ref][0]:.3g}, "
+            f"{ordered[ref][1]:.3g}))", tuple(ordered[ref]))
+
+
+# --------------------------------------------------------------------------
 # Hertz
 
 
@@ -389,7 +493,7 @@ def fit_parabola(xs, ys):
 
 def centre_of_pressure(points):
     force = sum(p["pressure"] * p["weight"] for p in points)
-    return sum(p["x1"] * p["pressure"] * p["weight"] for p in points) / force
+    return sum(p["s"] * p["pressure"] * p["weight"] for p in points) / force
 
 
 def symmetry_of(run, bodies, points, x0, option):
@@ -397,10 +501,10 @@ def symmetry_of(run, bodies, points, x0, option):
     (True, why), (False, why), or (None, why) when the rule cannot tell."""
     if option != "auto":
         return option == "half", f"--symmetry {option}"
-    active = [p["x1"] for p in points if p["pressure"] > 0]
+    active = [p["s"] for p in points if p["pressure"] > 0]
     tol = 0.1 * (max(active) - min(active))
     ends = [p for p in (points[0], points[-1])
-            if abs(p["x1"] - x0) <= tol and p["pressure"] > 0]
+            if abs(p["s"] - x0) <= tol and p["pressure"] > 0]
     rollers = []
     for body in bodies:
         for bid, where in run.rollers(body):
@@ -426,9 +530,9 @@ def hertz_reference(run, pair, points, mode, symmetry="auto"):
         return None, "fewer than 5 points in contact"
     force = sum(p["pressure"] * p["weight"] for p in points)
     centre = centre_of_pressure(points)
-    half = max(abs(p["x1"] - centre) for p in active)
-    window = [p for p in points if abs(p["x1"] - centre) <= 2 * half]
-    fit = fit_parabola([p["x1"] for p in window], [p["gap"] for p in window])
+    half = max(abs(p["s"] - centre) for p in active)
+    window = [p for p in points if abs(p["s"] - centre) <= 2 * half]
+    fit = fit_parabola([p["s"] for p in window], [p["gap"] for p in window])
     if fit is None:
         return None, "gap not parabolic"
     a2, b1, _, rms = fit
@@ -451,7 +555,7 @@ def hertz_reference(run, pair, points, mode, symmetry="auto"):
     e_star = 1 / sum((1 - nu * nu) / e for e, nu in materials)
     a = math.sqrt(4 * whole * radius / (math.pi * e_star))
     p0 = 2 * whole / (math.pi * a)
-    zone = max(p["x1"] for p in points) - min(p["x1"] for p in points)
+    zone = max(p["s"] for p in points) - min(p["s"] for p in points)
     if half_model:
         zone *= 2
     heights = [h for h in (run.rectangle_height(b) for b in bodies if b) if h]
@@ -468,6 +572,81 @@ def hertz_reference(run, pair, points, mode, symmetry="auto"):
 
 
 # --------------------------------------------------------------------------
+# Cattaneo-Mindlin and Mindlin-Deresiewicz
+
+
+def dundurs_beta(materials):
+    """Dundurs' beta of two bodies [(E, nu), (E, nu)] in plane strain: 0
+    for elastically similar bodies, whose shear leaves the pressure alone."""
+    (e1, nu1), (e2, nu2) = materials
+    g1, g2 = e1 / (2 * (1 + nu1)), e2 / (2 * (1 + nu2))
+    k1, k2 = 3 - 4 * nu1, 3 - 4 * nu2
+    return (g1 * (k2 - 1) - g2 * (k1 - 1)) / (g1 * (k2 + 1) + g2 * (k1 + 1))
+
+
+def step_list(steps):
+    """Load step numbers as text, runs joined: [1, 2, 3, 5] -> "1-3, 5"."""
+    runs = []
+    for k in steps:
+        if runs and k == runs[-1][1] + 1:
+            runs[-1][1] = k
+        else:
+            runs.append([k, k])
+    return ", ".join(f"{a}" if a == b else f"{a}-{b}" for a, b in runs)
+
+
+def tangential_path(history, tolerance=1e-6):
+    """How the load steps [(P_k, Q_k)] (normal and tangential force after
+    each step) reached the last one, for the closed forms of a shear at a
+    constant normal force: ("monotone", None, why), ("reversal", Q*, why)
+    with Q* the tangential force where it turned, or (None, None, why).
+
+    A load step solves the tangential problem on the contact of its end, so
+    a step that presses and shears at once is a shear at its final normal
+    force: Cattaneo-Mindlin's case as long as P stays the same from the
+    first step that changes Q on. Within a relative tolerance of
+    @p tolerance."""
+    forces = [0.] + [q for _, q in history]
+    normal = [0.] + [p for p, _ in history]
+    scale = max(abs(q) for q in forces)
+    moves = [k for k in range(1, len(forces))
+             if abs(forces[k] - forces[k - 1]) > tolerance * scale]
+    if not moves:
+        return None, None, "no tangential force"
+    changed = [k for k in range(moves[0], len(forces))
+               if abs(normal[k] - normal[-1]) > tolerance * abs(normal[-1])]
+    if changed:
+        return None, None, (
+            f"the normal force changes in load steps {step_list(changed)} of "
+            f"{len(history)} while the tangential force is on: the closed forms "
+            "hold P constant under the shear (pressing and shearing together "
+            "has none here)")
+    direction = [math.copysign(1, forces[k] - forces[k - 1]) for k in moves]
+    turns = [moves[i - 1] for i in range(1, len(moves))
+             if direction[i] != direction[i - 1]]
+    if not turns:
+        return "monotone", None, "Q grows monotonically at constant P"
+    if len(turns) == 1:
+        return "reversal", forces[turns[0]], (
+            f"Q turns once, after load step {turns[0]}, at constant P")
+    return None, None, (
+        f"the tangential force turns {len(turns)} times (after load steps "
+        f"{step_list(turns)}): the closed form here covers one reversal "
+        "(Mindlin-Deresiewicz)")
+
+
+def cattaneo_traction(v, a, p0, mu, P, Q):
+    """Cattaneo-Mindlin's traction at v from the centre of a Hertz contact
+    (a, p0) under the normal force P and the tangential force Q (the
+    integral of t, signed), |Q| <= mu P:
+    t = sign(Q) mu p0/a (sqrt(a^2 - v^2) - sqrt(c^2 - v^2)), each root 0
+    outside its zone, c = a sqrt(1 - |Q|/(mu P))."""
+    c = a * math.sqrt(max(0., 1 - abs(Q) / (mu * P)))
+    return math.copysign(1, Q) * mu * p0 / a * (
+        math.sqrt(max(0., a * a - v * v)) - math.sqrt(max(0., c * c - v * v)))
+
+
+# --------------------------------------------------------------------------
 # Figures
 
 
@@ -475,8 +654,8 @@ def zoom_window(points):
     """Where to draw a contact profile: the whole zone, or three times the
     contact area around it when that is less than a third of the zone.
     Returns (the test of a position, whether it zooms)."""
-    active = [p["x1"] for p in points if p["pressure"] > 0]
-    lo, hi = min(p["x1"] for p in points), max(p["x1"] for p in points)
+    active = [p["s"] for p in points if p["pressure"] > 0]
+    lo, hi = min(p["s"] for p in points), max(p["s"] for p in points)
     if not active:
         return (lambda x: True), False
     centre, half = (min(active) + max(active)) / 2, (max(active) - min(active)) / 2
@@ -513,9 +692,11 @@ class Plotter:
             path = self.run.path(f"contact_{pair}.csv")
             if not os.path.isfile(path):
                 continue
-            points = sorted(read_csv(path), key=lambda p: p["x1"])
+            points = read_csv(path)
             if not points:
                 continue
+            axis, reference = zone_abscissa(points)
+            points.sort(key=lambda p: p["s"])
             force = sum(p["pressure"] * p["weight"] for p in points)
             peak = max(p["pressure"] for p in points)
             info, why = hertz_reference(self.run, pair, points, self.hertz,
@@ -531,13 +712,16 @@ class Plotter:
             else:
                 fig, (ax, bx) = self.plt.subplots(2, 1, figsize=(8, 6.4),
                                                   sharex=True)
-            shown = [p for p in points if inside(p["x1"])]
-            x = [p["x1"] for p in shown]
+            shown = [p for p in points if inside(p["s"])]
+            x = [p["s"] for p in shown]
             iterates = sorted(glob.glob(self.run.path(f"contact_{pair}_[0-9][0-9][0-9][0-9].csv")))
             for i, it in enumerate(iterates):
-                q = sorted((p for p in read_csv(it) if inside(p["x1"])),
-                           key=lambda p: p["x1"])
-                ax.plot([p["x1"] for p in q], [p["pressure"] for p in q],
+                q = read_csv(it)
+                if not q:
+                    continue
+                zone_abscissa(q, reference)
+                q = sorted((p for p in q if inside(p["s"])), key=lambda p: p["s"])
+                ax.plot([p["s"] for p in q], [p["pressure"] for p in q],
                         color="0.75", linewidth=0.7,
                         label=f"iterates ({len(iterates)} files)" if i == 0 else None)
             ax.plot(x, [p["pressure"] for p in shown], "o-", markersize=2.5,
@@ -580,19 +764,19 @@ class Plotter:
                           f"(smallest {min(current):.3g})")
             bx.axhline(0, color="k", linewidth=0.8)
             if not friction:
-                bx.set_xlabel(f"$x_1$ along $S_1$ {self.length}")
+                bx.set_xlabel(f"{axis} {self.length}")
             bx.set_ylabel(f"gap {self.length} (< 0: penetration)")
             bx.ticklabel_format(axis="y", style="sci", scilimits=(-3, 3))
             bx.grid(True, alpha=0.3)
             bx.legend(fontsize=8, loc="upper center")
             if friction:
-                self.friction(pair, points, shown, info, cx)
+                self.friction(pair, points, shown, info, cx, axis)
             self.save(fig, f"contact_{pair}.png")
 
-    def friction(self, pair, points, shown, info, cx):
+    def friction(self, pair, points, shown, info, cx, axis):
         """The tangential traction along the zone, its Coulomb bound and,
         on a Hertz contact, Cattaneo-Mindlin's closed form."""
-        x = [p["x1"] for p in shown]
+        x = [p["s"] for p in shown]
         t = [p["tangential_traction"] for p in shown]
         law = self.run.parameters.get(f"Contact pair {pair}/Friction", "")
         mu = self.run.constant(self.run.parameters.get(
@@ -604,31 +788,121 @@ class Plotter:
         sign = 1 if Q >= 0 else -1
         if law == "coulomb" and mu is not None:
             cx.plot(x, [sign * mu * p["pressure"] for p in shown], ":",
-                    color="0.4", label=f"slip bound $\mu p$, $\mu$ = {mu:.3g}")
+                    color="0.4", label=f"slip bound $\\pm\\mu p$, $\\mu$ = {mu:.3g}")
+            # The other side of the bound where t reaches toward it (slip
+            # reversed after unloading, or a curved zone).
+            if any(sign * v < -0.05 * max(map(abs, t)) for v in t):
+                cx.plot(x, [-sign * mu * p["pressure"] for p in shown], ":",
+                        color="0.4")
         record = os.path.join(self.out, f"mindlin_{pair}.json")
-        if law == "coulomb" and mu and info and 0 < abs(Q) < mu * P:
-            a, p0, x0 = info["a"], info["p0"], info["x0"]
-            c = a * math.sqrt(1 - abs(Q) / (mu * P))
+        used = None
+        if law == "coulomb" and mu and info and Q != 0:
+            used, why = self.mindlin(pair, mu, P, Q, info)
+            if used is None:
+                print(f"{PROGRAM}: pair {pair}: no Cattaneo-Mindlin curve ({why})")
+        if used:
+            a, x0 = info["a"], info["x0"]
             xs = [x0 - a + 2 * a * i / 400 for i in range(401)]
-            q = [sign * mu * p0 / a *
-                 (math.sqrt(max(0., a * a - (v - x0) ** 2)) -
-                  math.sqrt(max(0., c * c - (v - x0) ** 2))) for v in xs]
-            cx.plot(xs, q, "k--", linewidth=1.2,
-                    label=f"Cattaneo-Mindlin: c = {c:.4g}, c/a = {c / a:.4g}")
-            print(f"mindlin {pair}: c = {c:.6g}, c/a = {c / a:.6g} "
-                  f"(Q/(mu P) = {abs(Q) / (mu * P):.6g}, a = {a:.6g})")
+            cx.plot(xs, [used["traction"](v - x0) for v in xs], "k--",
+                    linewidth=1.2, label=used["label"])
+            print(used["line"])
             with open(record, "w") as f:
-                json.dump({"pair": pair, "mu": mu, "Q": Q, "P": P, "a": a,
-                           "c": c, "c_over_a": c / a}, f, indent=2)
+                json.dump(used["record"], f, indent=2)
                 f.write("\n")
             self.written.append(record)
         elif os.path.isfile(record):
             os.remove(record)
         cx.axhline(0, color="k", linewidth=0.8)
-        cx.set_xlabel(f"$x_1$ along $S_1$ {self.length}")
+        cx.set_xlabel(f"{axis} {self.length}")
         cx.set_ylabel(f"tangential traction t {self.stress}")
         cx.grid(True, alpha=0.3)
         cx.legend(fontsize=8, loc="upper right")
+
+    def load_history(self, pair):
+        """[(P_k, Q_k)] after each load step: the integrals of the pressure
+        and of t over contact_<pair>_stepNNNN.csv (the plotted t's sign),
+        else summary.json's load_steps (normal_force, and -tangential_force,
+        the force on body 1); [] when the run has neither."""
+        steps = sorted(glob.glob(self.run.path(f"contact_{pair}_step[0-9][0-9][0-9][0-9].csv")))
+        history = []
+        for path in steps:
+            rows = read_csv(path)
+            history.append((sum(p["pressure"] * p["weight"] for p in rows),
+                            sum(p.get("tangential_traction", 0.) * p["weight"]
+                                for p in rows)))
+        if history:
+            return history
+        for step in self.run.summary.get("load_steps") or []:
+            for entry in step.get("pairs", []):
+                if entry.get("pair") == pair:
+                    if "normal_force" not in entry or "tangential_force" not in entry:
+                        return []
+                    history.append((entry["normal_force"], -entry["tangential_force"]))
+        return history
+
+    def mindlin(self, pair, mu, P, Q, info):
+        """The closed form of the tangential traction for the run's load
+        path at the Hertz contact info, as a dict (traction of the offset
+        from the centre, legend label, console line, record), or (None, why
+        not). Monotone shear at constant P: Cattaneo-Mindlin at Q. One
+        reversal from Q* back to Q (Mindlin-Deresiewicz, in 2D the same
+        superposition as in 3D): t = t_CM(Q*) - 2 t_CM((Q* - Q)/2), which
+        slips backwards for c' < |x - x0| < a, c' = a sqrt(1 - |Q* - Q|/(2 mu
+        P)), keeps the loading's traction and slip inside c* = a sqrt(1 -
+        |Q*|/(mu P)) plus the reversal's locked-in part between c* and c',
+        and meets Q; once Q has gone past -Q*, the first loading is
+        forgotten and Cattaneo-Mindlin at Q holds again (doc/friction.md
+        section 5.2)."""
+        bodies = [self.run.parameters.get(f"Contact pair {pair}/Body {i}")
+                  for i in (1, 2)]
+        materials = [self.run.material(b) for b in bodies if b]
+        if len(materials) != 2 or None in materials:
+            return None, "materials of the pair not found in parameters.prm"
+        beta = dundurs_beta(materials)
+        if abs(beta) > 1e-6:
+            return None, (f"the bodies are not elastically similar (Dundurs' "
+                          f"beta = {beta:.3g}): the shear changes the pressure")
+        history = self.load_history(pair) or [(P, Q)]
+        if history[-1][1] * Q < 0:
+            history = [(p, -q) for p, q in history]
+        history[-1] = (P, Q)
+        kind, Q_star, why = tangential_path(history)
+        if kind is None:
+            return None, why
+        slack = 1 + 1e-6
+        a, p0 = info["a"], info["p0"]
+        record = {"pair": pair, "mu": mu, "Q": Q, "P": P, "a": a, "path": kind}
+        if kind == "reversal" and Q * math.copysign(1, Q_star) < -abs(Q_star):
+            kind, why = "monotone", (f"Q went past -Q* = {-Q_star:.4g}: the "
+                                     "first loading is forgotten")
+            record["path"] = "reversal beyond -Q*"
+        if kind == "monotone":
+            if abs(Q) > mu * P * slack:
+                return None, f"|Q| = {abs(Q):.4g} above mu P = {mu * P:.4g}"
+            c = a * math.sqrt(max(0., 1 - abs(Q) / (mu * P)))
+            record.update(c=c, c_over_a=c / a)
+            return dict(
+                traction=lambda v: cattaneo_traction(v, a, p0, mu, P, Q),
+                label=f"Cattaneo-Mindlin: c = {c:.4g}, c/a = {c / a:.4g}",
+                line=(f"mindlin {pair}: c = {c:.6g}, c/a = {c / a:.6g} "
+                      f"(Q/(mu P) = {abs(Q) / (mu * P):.6g}, a = {a:.6g}; {why})"),
+                record=record), why
+        if abs(Q_star) > mu * P * slack:
+            return None, f"|Q*| = {abs(Q_star):.4g} above mu P = {mu * P:.4g}"
+        c_star = a * math.sqrt(max(0., 1 - abs(Q_star) / (mu * P)))
+        c = a * math.sqrt(max(0., 1 - abs(Q_star - Q) / (2 * mu * P)))
+        record.update(Q_star=Q_star, c_star=c_star, c=c, c_over_a=c / a)
+        return dict(
+            traction=lambda v: (cattaneo_traction(v, a, p0, mu, P, Q_star) -
+                                2 * cattaneo_traction(v, a, p0, mu, P,
+                                                      (Q_star - Q) / 2)),
+            label=(f"Mindlin-Deresiewicz, from Q* = {Q_star:.4g}: "
+                   f"c' = {c:.4g}, c'/a = {c / a:.4g}"),
+            line=(f"mindlin {pair}: unloaded from Q* = {Q_star:.6g} to Q = "
+                  f"{Q:.6g} (Mindlin-Deresiewicz): c' = {c:.6g}, c'/a = "
+                  f"{c / a:.6g}, slip reversed for c' < |x - x0| < a; c* = "
+                  f"{c_star:.6g} of the loading (a = {a:.6g}; {why})"),
+            record=record), why
 
     def hertz_record(self, pair, info):
         """Print the closed form used for a pair and write it to
