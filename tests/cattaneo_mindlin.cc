@@ -148,7 +148,16 @@ namespace
               << sim.summary().at("newton_steps") << " Newton steps"
               << std::endl;
 
-    check(name + ": a against Hertz's", relative(a, a_hertz), 0.02);
+    // The refinement box of the shipped scene reaches 0.45 deep, so the
+    // field below the zone is resolved: a is 0.49 % and 0.12 % off and the
+    // peak 0.47 % and 0.35 % high at refinements 6 and 7 (the former
+    // 0.2-deep box: a 0.6-0.8 % low, the peak 0.9-1.4 % high, what these
+    // bounds exclude); the blocks' finite size is below 0.1 %.
+    check(name + ": a against Hertz's", relative(a, a_hertz), 0.01);
+    check(name + ": peak pressure against Hertz's 2 P / (pi a)",
+          relative(p0_1,
+                   2. * P1 / (M_PI * std::sqrt(4. * P1 * R / (M_PI * E_star)))),
+          0.01);
     // Elastically similar bodies: the shear leaves the pressure alone (the
     // blocks mirror each other, so exactly, up to the solves' round-off).
     check(name + ": P unchanged by the shear", relative(P, P1), 1e-9);

@@ -907,9 +907,18 @@ namespace ddcontact
           << std::setprecision(2) << "  t " << record.time << "s"
           << std::defaultfloat << std::endl;
     if (!std::isfinite(record.residual))
-      throw DivergenceError("the Newton method of dd-newton produced a "
-                            "non-finite residual at step " +
-                            std::to_string(record.iteration));
+      throw DivergenceError(
+        "the Newton method of dd-newton produced a non-finite residual at "
+        "step " +
+        std::to_string(record.iteration) + ", after " + std::to_string(cg) +
+        " CG iterations on the active set (limit " +
+        std::to_string(max_cg_iterations) +
+        "): the Newton system is singular or indefinite there, as when the "
+        "active contact nodes do not hold a floating body's rigid motion; "
+        "Formulation = penalty (" +
+        penalty_entries() +
+        ") regularizes it, or prescribe the free motion of the body "
+        "somewhere (Boundary conditions/Dirichlet)");
     return converged;
   }
 
@@ -949,6 +958,11 @@ namespace ddcontact
         << "; raise Contact solver/DD-Newton/Max Newton iterations or "
            "Contact solver/Max iterations";
       throw NotConvergedError(s.str());
+    }
+    if (!tresca_lift_off_note().empty())
+    {
+      s << ": the active set does not settle" << tresca_lift_off_note();
+      throw DivergenceError(s.str());
     }
     s << ": the active set does not settle; raise " << penalty_entries();
     if (!interface.on_nodes())

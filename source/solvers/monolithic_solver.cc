@@ -529,9 +529,11 @@ namespace ddcontact
       std::to_string(max_iterations) + " iterations";
     // No active set met twice: still moving, stopped by the limit alone.
     if (iteration == max_iterations && !damped)
-      throw NotConvergedError(unsettled +
-                              " (no active set repeated); raise Contact "
-                              "solver/Monolithic/Max Newton iterations");
+      throw NotConvergedError(
+        unsettled + " (no active set repeated)" +
+        (tresca_lift_off_note().empty()
+           ? "; raise Contact solver/Monolithic/Max Newton iterations"
+           : tresca_lift_off_note()));
     if (iteration == max_iterations)
       throw DivergenceError(
         unsettled +
@@ -539,7 +541,8 @@ namespace ddcontact
         "of the contact zone, e.g. a slender body); raise the contact pairs' "
         "Penalty (c) or Contact solver/Monolithic/Max Newton iterations" +
         (on_nodes ? std::string()
-                  : ", or set Contact solver/Contact pressure = nodes"));
+                  : ", or set Contact solver/Contact pressure = nodes") +
+        tresca_lift_off_note());
     return iteration;
   }
 
