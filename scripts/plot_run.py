@@ -942,8 +942,11 @@ class Plotter:
         if summary.get("uzawa_updates"):
             title += f", {summary['uzawa_updates']} augmented-Lagrangian updates"
         axes[0].set_title(title, fontsize=9)
-        axes[1].plot(k, [r["contact_force"] for r in rows], color="tab:green")
-        axes[1].set_ylabel(f"contact force, all pairs {self.force}")
+        # normal_force since issue 48 (contact_force, the norm of the force
+        # vector, in older runs).
+        column = "normal_force" if "normal_force" in rows[0] else "contact_force"
+        axes[1].plot(k, [r[column] for r in rows], color="tab:green")
+        axes[1].set_ylabel(f"normal force, all pairs {self.force}")
         axes[2].semilogy(k, positive([r["max_penetration"] for r in rows]),
                          color="tab:red")
         axes[2].set_ylabel(f"largest penetration $u_{{1n}} + u_{{2n}} - f_n$ {self.length}")

@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <limits>
 #include <optional>
+#include <regex>
 #include <sstream>
 
 namespace ddcontact
@@ -25,9 +26,41 @@ namespace ddcontact
     return false;
   }
 
+  namespace
+  {
+    /** Whether @p expression names the load parameter t (a word t, not
+     * a part of a longer name). */
+    bool
+    uses_load_parameter(const std::string &expression)
+    {
+      static const std::regex word("(^|[^A-Za-z0-9_])t([^A-Za-z0-9_]|$)");
+      return std::regex_search(expression, word);
+    }
+  } // namespace
+
   void
   Simulation::run_load_steps()
   {
+    // Steps over data that do not depend on t solve one problem again and
+    // again: most likely a t forgotten in an expression.
+    const auto &loading = parameters.loading;
+    if (loading.automatic || loading.n_steps > 1)
+    {
+      bool uses_t = false;
+      for (const auto &body : parameters.bodies)
+        uses_t = uses_t || uses_load_parameter(body.dirichlet) ||
+                 uses_load_parameter(body.neumann) ||
+                 uses_load_parameter(body.body_force);
+      if (!uses_t)
+      {
+        const std::string warning =
+          "Loading/Steps = " + loading.steps_text() +
+          ", but no Dirichlet, Neumann or body-force expression uses the "
+          "load parameter t: every step solves the same problem (write the "
+          "load path with t, e.g. Dirichlet = 3: y: -Delta*t)";
+        report.add_warning(warning); // printed with the results
+      }
+    }
     if (parameters.loading.automatic && path_dependent())
       run_automatic_load_steps();
     else

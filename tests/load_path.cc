@@ -4,7 +4,7 @@
 // same material (Q/P below mu) must stick everywhere (Mindlin: t = (Q/P) p,
 // no slip, no dissipation), which Steps = auto reaches while one step slips;
 // Check path with a fixed step names the step whose estimate exceeds the
-// tolerance
+// tolerance; steps over data without t are warned of
 #include <ddcontact/loading/load_step_control.h>
 #include <ddcontact/simulation.h>
 
@@ -172,6 +172,21 @@ main(int argc, char **argv)
               << std::endl;
     check(error > 1e-2 && warned,
           "Check path: one step's path error is estimated and warned of");
+  }
+  // 4. Steps over data without t: every step solves the same problem,
+  //    which the run says (a t forgotten in the load path).
+  {
+    const auto sim = run_proportional(
+      source_dir,
+      {"Loading/Steps=2",
+       "Body upper/Boundary conditions/Dirichlet=3: xy: 0.001; -Delta",
+       "Body upper/Mesh/Box refinement=4",
+       "Body lower/Mesh/Box refinement=4"});
+    bool warned = false;
+    for (const auto &w : sim->summary().at("warnings"))
+      warned = warned || (w.get<std::string>().find(
+                            "uses the load parameter t") != std::string::npos);
+    check(warned, "steps over data without t: a warning");
   }
   return report();
 }

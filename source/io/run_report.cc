@@ -122,7 +122,7 @@ namespace ddcontact
       statistics << ",cells_" << body->name() << ",dofs_" << body->name();
     statistics << ",bem_unknowns,estimated,marked,capped,eta_max,eta_sum,"
                   "relative_error_estimate,dd_residual,dd_increment,"
-                  "contact_force,t_dd_s,t_estimate_s,t_refine_s,wall_time_s,"
+                  "normal_force,t_dd_s,t_estimate_s,t_refine_s,wall_time_s,"
                   "relative_energy_error_estimate\n";
     statistics.flush();
     // Written row by row under its own name: listed after every row.
@@ -191,7 +191,7 @@ namespace ddcontact
       return;
     OutputFile file(parameters.output_directory + "/history.csv");
     auto      &out = file.stream();
-    out << "k,residual,increment,gamma,contact_force,active_length,"
+    out << "k,residual,increment,gamma,normal_force,active_length,"
            "max_penetration,time_s\n";
     out << std::setprecision(10);
     for (const auto &r : history)
@@ -265,8 +265,14 @@ namespace ddcontact
   RunReport::record_load_path(const Json                     &path,
                               const std::vector<std::string> &warnings)
   {
-    load_path          = path;
-    load_path_warnings = warnings;
+    load_path = path;
+    run_warnings.insert(run_warnings.end(), warnings.begin(), warnings.end());
+  }
+
+  void
+  RunReport::add_warning(const std::string &warning)
+  {
+    run_warnings.push_back(warning);
   }
 
   void
@@ -706,7 +712,7 @@ namespace ddcontact
     if (!error.empty())
       json["error"] = error;
     json["warnings"] = Json::array();
-    for (const auto &warning : load_path_warnings)
+    for (const auto &warning : run_warnings)
       json["warnings"].push_back(warning);
     if (!load_steps.empty())
       json["load_steps"] = load_steps;
@@ -734,7 +740,7 @@ namespace ddcontact
     json["units"]    = "consistent units of the scene; forces and energies "
                        "per unit thickness (plane strain)";
     json["warnings"] = Json::array();
-    for (const auto &warning : load_path_warnings)
+    for (const auto &warning : run_warnings)
       json["warnings"].push_back(warning);
     json["bodies"] = bodies_json(results);
     for (const auto &b : json["bodies"])

@@ -181,7 +181,7 @@ namespace ddcontact
     for (unsigned int p = 0; p < problem.get_pairs().size(); ++p)
     {
       const auto state = problem.contact_state(p, u);
-      record.force += state.force_1.norm();
+      record.force += state.normal_force;
       record.active_length += state.contact_length;
       record.max_penetration =
         std::max(record.max_penetration, state.max_penetration);

@@ -900,7 +900,7 @@ namespace ddcontact
     if (interface.has_friction())
       pcout << " (" << n_sticking << " stick)";
     pcout << " (" << n_changed << " changed)  CG " << cg << "  tau "
-          << std::defaultfloat << tau << std::scientific << "  force "
+          << std::defaultfloat << tau << std::scientific << "  normal force "
           << record.force << "  penetration " << record.max_penetration
           << std::defaultfloat << "  body solve sets " << n_dd_iterations()
           << "  factorizations " << n_factorizations << std::fixed

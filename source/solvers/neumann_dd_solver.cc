@@ -277,10 +277,11 @@ namespace ddcontact
       pcout << "  DD " << std::setw(5) << record.iteration << std::scientific
             << std::setprecision(3) << "  residual " << record.residual
             << "  increment " << record.increment << "  gamma " << record.gamma
-            << "  force " << record.force << "  active " << record.active_length
-            << "  penetration " << record.max_penetration << std::defaultfloat
-            << std::fixed << std::setprecision(2) << "  t " << record.time
-            << "s" << std::defaultfloat << std::endl;
+            << "  normal force " << record.force << "  active "
+            << record.active_length << "  penetration "
+            << record.max_penetration << std::defaultfloat << std::fixed
+            << std::setprecision(2) << "  t " << record.time << "s"
+            << std::defaultfloat << std::endl;
     if (diverged)
       throw DivergenceError(divergence_message(
         "diverged at iteration " + std::to_string(record.iteration),

@@ -153,6 +153,11 @@ namespace ddcontact
     record_load_path(const Json                     &path,
                      const std::vector<std::string> &warnings);
 
+    /** A warning of the run (summary.json's warnings, printed at the
+     * end), kept for every summary from now on. */
+    void
+    add_warning(const std::string &warning);
+
     /** The reaction of every Dirichlet id of every body in the summary
      * last written, one line each. */
     void
@@ -232,7 +237,7 @@ namespace ddcontact
     Json                     summary_json;
     Json                     load_steps = Json::array(); // record_load_step()
     Json                     load_path;                  // record_load_path()
-    std::vector<std::string> load_path_warnings;
+    std::vector<std::string> run_warnings; // record_load_path(), add_warning()
     std::string              last_completed_step;
   };
 } // namespace ddcontact

@@ -28,11 +28,11 @@ namespace ddcontact
    * DDNewtonSolver. */
   struct IterationRecord
   {
-    unsigned int iteration       = 0;
-    double       increment       = 0; // the paper's test, max over bodies
-    double       residual        = 0; // the solver's relative residual
-    double       gamma           = 0; // relaxation, or Newton damping
-    double       force           = 0; // |contact force on body 1|, all pairs
+    unsigned int iteration = 0;
+    double       increment = 0; // the paper's test, max over bodies
+    double       residual  = 0; // the solver's relative residual
+    double       gamma     = 0; // relaxation, or Newton damping
+    double       force     = 0; // the normal force on S_1 (int p), all pairs
     double       active_length   = 0;
     double       max_penetration = 0;
     double       time            = 0;
