@@ -114,15 +114,25 @@ namespace ddcontact
     return LoadPathMeasures(states, friction);
   }
 
-  LoadPathMeasures
-  Simulation::solve_in_halves(const double      t_start,
-                              const double      t_end,
-                              LoadPathMeasures &first_half)
+  double
+  Simulation::solve_step_twice(const double                     t_start,
+                               const double                     t_end,
+                               const FrictionHistory           &start,
+                               std::optional<LoadPathMeasures> &one_step)
   {
+    if (!one_step)
+    {
+      solve_at(t_end);
+      one_step = path_measures();
+    }
+    contact_solver->return_to_load_step_start(start);
     solve_at((t_start + t_end) / 2);
-    first_half = path_measures();
+    LoadPathMeasures first_half = path_measures();
     solve_at(t_end, true);
-    return path_measures();
+    const double error = Utilities::MPI::max(
+      LoadPathMeasures::difference(*one_step, path_measures()), MPI_COMM_WORLD);
+    one_step = std::move(first_half);
+    return error;
   }
 
   void
@@ -135,12 +145,7 @@ namespace ddcontact
     if (!adaptation)
       output_results(k - 1);
     if (record && contact_solver)
-    {
-      if (std::isfinite(path_error))
-        report.record_load_step(results(), k, t, path_error);
-      else
-        report.record_load_step(results(), k, t);
-    }
+      report.record_load_step(results(), k, t, path_error);
     if (record)
     {
       std::ostringstream what;
@@ -169,15 +174,9 @@ namespace ddcontact
       {
         // The step as asked, then again in two halves from its start,
         // whose more accurate solution is kept.
-        const FrictionHistory start = contact_solver->load_step_start();
-        solve_at(t);
-        const LoadPathMeasures one_step = path_measures();
-        contact_solver->return_to_load_step_start(start);
-        LoadPathMeasures first_half = one_step;
-        error                       = Utilities::MPI::max(
-          LoadPathMeasures::difference(one_step,
-                                       solve_in_halves(t_start, t, first_half)),
-          MPI_COMM_WORLD);
+        std::optional<LoadPathMeasures> one_step;
+        error = solve_step_twice(
+          t_start, t, contact_solver->load_step_start(), one_step);
         path_error += error;
         const double allowed = loading.path_tolerance;
         pcout << "  load-path error of the step " << std::setprecision(3)
@@ -226,7 +225,8 @@ namespace ddcontact
     LoadStepControl control(loading.path_tolerance, loading.max_splits);
     // The state every trial of the current step starts from, and the
     // measures of the step solved at once, when a split made them known
-    // (the first half of the rejected step is the whole of the next).
+    // (the first half of the rejected step is the whole of the next:
+    // solve_step_twice() leaves them).
     FrictionHistory                 start = contact_solver->load_step_start();
     std::optional<LoadPathMeasures> one_step;
     unsigned int                    k = 0;
@@ -236,17 +236,7 @@ namespace ddcontact
       step = "load step " + std::to_string(k + 1) +
              " (t = " + std::to_string(t_start) + " to " +
              std::to_string(t_end) + ")";
-      if (!one_step)
-      {
-        solve_at(t_end);
-        one_step = path_measures();
-        contact_solver->return_to_load_step_start(start);
-      }
-      LoadPathMeasures first_half = *one_step;
-      const double     error      = Utilities::MPI::max(
-        LoadPathMeasures::difference(
-          *one_step, solve_in_halves(t_start, t_end, first_half)),
-        MPI_COMM_WORLD);
+      const double error = solve_step_twice(t_start, t_end, start, one_step);
       pcout << "load step [" << t_start << ", " << t_end
             << "]: load-path error " << std::setprecision(3) << error
             << " (allowed " << control.allowed_error() << ")";
@@ -259,19 +249,16 @@ namespace ddcontact
         one_step.reset();
       }
       else
-      {
-        pcout << ", split" << std::endl;
-        contact_solver->return_to_load_step_start(start);
-        one_step = first_half;
-      }
+        pcout << ", split" << std::endl; // one_step: the first half's
     }
 
     Json                     path, over = Json::array();
     std::vector<std::string> warnings;
-    double                   smallest = 1;
+    double                   smallest = 1, largest = 0;
     for (const auto &s : control.accepted())
     {
       smallest = std::min(smallest, s.t_end - s.t_start);
+      largest  = std::max(largest, s.error);
       if (s.over_tolerance)
         over.push_back(Json::array({s.t_start, s.t_end}));
     }
@@ -286,12 +273,9 @@ namespace ddcontact
            "jump of the load; raise Loading/Max splits or the tolerance";
       warnings.push_back(s.str());
     }
-    path["steps"]          = "auto";
-    path["path_tolerance"] = loading.path_tolerance;
-    path["path_error"]     = control.path_error();
-    double largest         = 0;
-    for (const auto &s : control.accepted())
-      largest = std::max(largest, s.error);
+    path["steps"]              = "auto";
+    path["path_tolerance"]     = loading.path_tolerance;
+    path["path_error"]         = control.path_error();
     path["largest_step_error"] = largest;
     path["accepted_steps"]     = control.accepted().size();
     path["rejected_steps"]     = control.n_rejected();

@@ -16,6 +16,7 @@
 #include <ddcontact/solvers/contact_solver.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -180,11 +181,17 @@ namespace ddcontact
     void
     solve_at(double t, bool continuing = false);
 
-    /** Solve the step to @p t_end in two halves from the current state;
-     * returns the measures at its end, and those of the first half in
-     * @p first_half. */
-    LoadPathMeasures
-    solve_in_halves(double t_start, double t_end, LoadPathMeasures &first_half);
+    /** The load step [@p t_start, @p t_end] from the friction history
+     * @p start, solved at once (unless @p one_step holds that solve's
+     * measures already) and again in two halves, whose solution stays.
+     * Returns the step's estimated load-path error, the same on every
+     * process; @p one_step then holds the first half's measures (the
+     * solve at once of the step a split tries next). */
+    double
+    solve_step_twice(double                           t_start,
+                     double                           t_end,
+                     const FrictionHistory           &start,
+                     std::optional<LoadPathMeasures> &one_step);
 
     /** The measures of the current solution. Collective. */
     LoadPathMeasures

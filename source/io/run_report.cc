@@ -258,7 +258,8 @@ namespace ddcontact
                               const double       path_error)
   {
     record_load_step(results, step, t);
-    load_steps.back()["path_error"] = path_error;
+    if (std::isfinite(path_error))
+      load_steps.back()["path_error"] = path_error;
   }
 
   void
@@ -711,9 +712,7 @@ namespace ddcontact
       last_completed_step.empty() ? Json() : Json(last_completed_step);
     if (!error.empty())
       json["error"] = error;
-    json["warnings"] = Json::array();
-    for (const auto &warning : run_warnings)
-      json["warnings"].push_back(warning);
+    json["warnings"] = run_warnings;
     if (!load_steps.empty())
       json["load_steps"] = load_steps;
     if (!load_path.is_null())
@@ -739,10 +738,8 @@ namespace ddcontact
     // say which one it uses (e.g. cm and MPa).
     json["units"]    = "consistent units of the scene; forces and energies "
                        "per unit thickness (plane strain)";
-    json["warnings"] = Json::array();
-    for (const auto &warning : run_warnings)
-      json["warnings"].push_back(warning);
-    json["bodies"] = bodies_json(results);
+    json["warnings"] = run_warnings; // added to below
+    json["bodies"]   = bodies_json(results);
     for (const auto &b : json["bodies"])
     {
       const double strain   = b["largest_strain"].get<double>();

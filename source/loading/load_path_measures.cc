@@ -20,7 +20,7 @@ namespace ddcontact
                                    std::abs(state.u_1n[q] + state.u_2n[q]),
                                    std::abs(state.slip[q])});
       traction.push_back(state.t);
-      // The nodal bounds b_i with the nodes' weights m_i = int psi_i.
+      // The nodal bounds b_i (mu_i p_i or g_i).
       const auto &bounds = friction[k].nodal_bound;
       for (const double b : bounds)
         traction_bound = std::max(traction_bound, std::abs(b));

@@ -31,10 +31,11 @@ namespace ddcontact
       "1e-3",
       Patterns::Double(0),
       "Steps = auto: the load-path error allowed in a step, relative: "
-      "the change of the slip when the step is solved in two halves, over "
-      "the largest relative displacement of the contact zone (normal "
-      "approach or slip), and the change of the dissipated energy over the "
-      "normal force times that displacement. summary.json gives the sum "
+      "the change of the tangential traction when the step is solved in "
+      "two halves, over the largest slip bound (mu p or g), and the change "
+      "of the dissipated energy over the bound force times the zone's "
+      "largest relative displacement (normal approach or slip). "
+      "summary.json gives the sum "
       "over the steps (load_path/path_error), a bound of the whole path's "
       "error.");
     prm.declare_entry(

@@ -959,9 +959,9 @@ namespace ddcontact
            "Contact solver/Max iterations";
       throw NotConvergedError(s.str());
     }
-    if (!tresca_lift_off_note().empty())
+    if (const std::string tresca = tresca_lift_off_note(); !tresca.empty())
     {
-      s << ": the active set does not settle" << tresca_lift_off_note();
+      s << ": the active set does not settle" << tresca;
       throw DivergenceError(s.str());
     }
     s << ": the active set does not settle; raise " << penalty_entries();

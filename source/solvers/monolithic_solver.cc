@@ -527,13 +527,15 @@ namespace ddcontact
     const std::string unsettled =
       "the monolithic Newton solver did not settle its active set in " +
       std::to_string(max_iterations) + " iterations";
-    // No active set met twice: still moving, stopped by the limit alone.
+    const std::string tresca = tresca_lift_off_note();
+    // No active set met twice: still moving, stopped by the limit alone
+    // (with Tresca, more likely nodes lifted off by g: tresca says so).
     if (iteration == max_iterations && !damped)
       throw NotConvergedError(
         unsettled + " (no active set repeated)" +
-        (tresca_lift_off_note().empty()
+        (tresca.empty()
            ? "; raise Contact solver/Monolithic/Max Newton iterations"
-           : tresca_lift_off_note()));
+           : tresca));
     if (iteration == max_iterations)
       throw DivergenceError(
         unsettled +
@@ -542,7 +544,7 @@ namespace ddcontact
         "Penalty (c) or Contact solver/Monolithic/Max Newton iterations" +
         (on_nodes ? std::string()
                   : ", or set Contact solver/Contact pressure = nodes") +
-        tresca_lift_off_note());
+        tresca);
     return iteration;
   }
 

@@ -139,7 +139,8 @@ namespace ddcontact
     record_load_step(const Results &results, unsigned int step, double t);
 
     /** record_load_step() with the step's estimated load-path error
-     * (Loading/Steps = auto or Check path), written as path_error. */
+     * (Loading/Steps = auto or Check path), written as path_error if
+     * finite (NaN: not estimated). */
     void
     record_load_step(const Results &results,
                      unsigned int   step,

@@ -155,6 +155,13 @@ namespace ddcontact
     }
 
   private:
+    /** The load steps' history (ContactSolver::load_step_start()). */
+    FrictionHistory *
+    friction_history() override
+    {
+      return &history;
+    }
+
     /** The data d_0 change with the multipliers: recomputed (without
      * solves) at the next step. */
     void
@@ -323,11 +330,6 @@ namespace ddcontact
     };
     FrictionHistory history;
 
-    FrictionHistory *
-    friction_history() override
-    {
-      return &history;
-    }
     RobinPreconditioner  preconditioner{problem};
     RigidModeCoarseSpace coarse{problem, interface};
     bool                 mesh_ready = false; // interface, u_0, S p

@@ -144,6 +144,13 @@ namespace ddcontact
     }
 
   private:
+    /** The load steps' history (ContactSolver::load_step_start()). */
+    FrictionHistory *
+    friction_history() override
+    {
+      return &history;
+    }
+
     /** One term of J_theta: d = sum_j g[j] u(dofs[j]) - f (global dofs);
      * with friction the slip s = sum_j h[j] u(dofs[j]) on the same dofs,
      * its law, the bound g_i or coefficient mu_i (averaged like d), and
@@ -261,11 +268,6 @@ namespace ddcontact
     bool            warm_start = false; // from last_multipliers (a load step)
     FrictionHistory history;
 
-    FrictionHistory *
-    friction_history() override
-    {
-      return &history;
-    }
     SparsityPattern sparsity;
   };
 } // namespace ddcontact
