@@ -11,6 +11,7 @@
 
 #include "scene_tools.h"
 
+#include <array>
 #include <cmath>
 #include <iostream>
 
@@ -103,6 +104,53 @@ namespace
     check(name + ": the slip goes along t at every node", against, 1e-9);
   }
 
+  /**
+   * The L2 errors of the pressure and of the tangential traction at the
+   * points against Hertz's and Cattaneo-Mindlin's closed forms (at the
+   * computed P, Q), each relative to the closed form's norm, and the same
+   * errors of the closed forms' own interpolants on the nodes of S_1 (the
+   * hat functions the reported fields are made of): the best a piecewise
+   * linear field on these nodes does, up to a factor near 1. The order is
+   * {p, t, interpolant of p, interpolant of t}.
+   */
+  std::array<double, 4>
+  l2_errors(const Simulation &sim, const double P, const double Q)
+  {
+    const auto  state = sim.get_contact_solver().contact_state(0);
+    const auto &pair  = *sim.get_contact_pairs()[0];
+    const auto &pts   = pair.points();
+    const auto &faces = pair.zone_faces_1();
+    const double a    = std::sqrt(4. * P * R / (M_PI * E_star));
+    const double p0   = 2. * P / (M_PI * a);
+    const double c    = a * std::sqrt(1. - Q / (mu * P));
+    const auto   root = [](const double r, const double x)
+    { return std::sqrt(std::max(0., r * r - x * x)); };
+    const auto p_exact = [&](const double x) { return p0 / a * root(a, x); };
+    // t > 0 against the upper body's slip along +e_1.
+    const auto t_exact = [&](const double x)
+    { return mu * p0 / a * (root(a, x) - root(c, x)); };
+    std::array<double, 4> squares = {{0., 0., 0., 0.}};
+    double                p_norm = 0, t_norm = 0;
+    for (unsigned int q = 0; q < pts.size(); ++q)
+    {
+      const double x = pts[q].x[0], w = pts[q].JxW;
+      const auto  &f = faces[pts[q].face];
+      const double s = (x - f[0][0]) / (f[1][0] - f[0][0]);
+      const auto   interpolant = [&](const auto &exact)
+      { return (1. - s) * exact(f[0][0]) + s * exact(f[1][0]); };
+      squares[0] += w * std::pow(-state.sigma_n[q] - p_exact(x), 2);
+      squares[1] += w * std::pow(state.t[q] - t_exact(x), 2);
+      squares[2] += w * std::pow(interpolant(p_exact) - p_exact(x), 2);
+      squares[3] += w * std::pow(interpolant(t_exact) - t_exact(x), 2);
+      p_norm += w * std::pow(p_exact(x), 2);
+      t_norm += w * std::pow(t_exact(x), 2);
+    }
+    return {{std::sqrt(squares[0] / p_norm),
+             std::sqrt(squares[1] / t_norm),
+             std::sqrt(squares[2] / p_norm),
+             std::sqrt(squares[3] / t_norm)}};
+  }
+
   /** Part 1's checks of the run @p sim (normal load, then shear). */
   void
   check_partial_slip(const Simulation &sim, const std::string &name)
@@ -153,7 +201,14 @@ namespace
     // peak 0.47 % and 0.35 % high at refinements 6 and 7 (the former
     // 0.2-deep box: a 0.6-0.8 % low, the peak 0.9-1.4 % high, what these
     // bounds exclude); the blocks' finite size is below 0.1 %.
-    check(name + ": a against Hertz's", relative(a, a_hertz), 0.01);
+    // a from the root fit over the points with p > 0: those of the last
+    // active face, where the field falls linearly to the first open node,
+    // pull it outwards by a fraction of that face (measured: 0.15 of a
+    // cell at refinement 6, 1.6 % of a). The L2 checks below bound the
+    // profile as a whole.
+    check(name + ": a against Hertz's, to a quarter of a cell",
+          relative(a, a_hertz),
+          std::max(0.01, 0.25 * h / a));
     check(name + ": peak pressure against Hertz's 2 P / (pi a)",
           relative(p0_1,
                    2. * P1 / (M_PI * std::sqrt(4. * P1 * R / (M_PI * E_star)))),
@@ -177,6 +232,25 @@ namespace
     check(name + ": c/a from the extent of the stick points, to a cell",
           std::abs(extent - c_exact) / a,
           h / a);
+
+    // The fields against the closed forms in L2. The dual basis decouples
+    // a sticking node from its slipping neighbour, so t follows the
+    // closed form up to its interpolation error (measured: 0.98 and 0.89
+    // of it at refinements 6 and 7, p 1.1 and 0.85); with the hat
+    // functions as test functions the weak slip of the stick zone's last
+    // nodes is tied to the slip zone through the mass matrix, and t
+    // oscillates there (Multiplier basis = standard: 1.9 times the
+    // interpolation error at refinement 7).
+    const auto errors = l2_errors(sim, P, Q);
+    std::cout << name << ": L2 error of p " << errors[0] << " (interpolant "
+              << errors[2] << "), of t " << errors[1] << " (interpolant "
+              << errors[3] << ")" << std::endl;
+    check(name + ": L2 error of p within 1.5 times the interpolant's",
+          errors[0] / errors[2],
+          1.5);
+    check(name + ": L2 error of t within 1.5 times the interpolant's",
+          errors[1] / errors[3],
+          1.5);
     check_invariants(sim, name);
     check(steps[1].at("pairs")[0].at("dissipated_energy").get<double>() > 0,
           name + ": the shear step dissipates");
@@ -217,6 +291,11 @@ main(int argc, char **argv)
           {"Body upper/Mesh/Box refinement=6",
            "Body lower/Mesh/Box refinement=6",
            "Loading/Steps=10",
+           // Nearly all nodes stick, so the largest slip increment, the
+           // scale of check_invariants(), is that of an edge node: a
+           // sticking node's slip of the order of the Tolerance counts
+           // 10 times more than in the shear step (1.6e-9 at 1e-10).
+           "Contact solver/Tolerance=1e-11",
            "Body upper/Boundary conditions/Dirichlet=3: xy: U*t; -Delta*t"});
     const auto   state = sim->get_contact_solver().contact_state(0);
     const double P = state.force_1[1], Q = -state.tangential_force;
@@ -226,16 +305,21 @@ main(int argc, char **argv)
       n_contact += (s != ContactLaw::SlipState::open);
       n_stick += (s == ContactLaw::SlipState::stick);
     }
-    const double fraction = double(n_stick) / n_contact;
+    // The points of the outermost face at each end: the pressure falls to
+    // zero there, and the bound mu p with it; a node that enters contact
+    // within a step may slip (doc/friction.md 4.4).
+    unsigned int per_face = 0;
+    for (const auto &point : sim->get_contact_pairs()[0]->points())
+      per_face += (point.face == sim->get_contact_pairs()[0]->points()[0].face);
     std::cout << name << ": Q/(mu P) " << Q / (mu * P) << ", " << n_stick
               << " of " << n_contact
               << " points in contact stick; the stick half-width "
-              << state.stick_half_width << " of " << state.half_width
-              << std::endl;
+              << state.stick_half_width << " of " << state.half_width << ", "
+              << per_face << " points per face" << std::endl;
     check(Q < mu * P, name + ": Q < mu P");
-    check(fraction > 0.9,
-          name + ": (nearly) every point sticks (Cattaneo: "
-                 "about 57 %)");
+    check(n_stick + 2 * per_face >= n_contact,
+          name + ": every point sticks but those of the zone's two "
+                 "outermost faces (Cattaneo: about 57 %)");
     check_invariants(*sim, name);
   }
   return report();

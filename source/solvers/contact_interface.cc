@@ -10,11 +10,13 @@ namespace ddcontact
   ContactInterface::ContactInterface(const ContactProblem &problem,
                                      const bool            on_nodes,
                                      const bool            exact_contact,
-                                     const bool            friction)
+                                     const bool            friction,
+                                     const bool            dual_basis)
     : problem(problem)
     , nodal(on_nodes)
     , exact(exact_contact)
     , tangential(friction)
+    , dual(dual_basis)
   {
     Assert(on_nodes || !friction,
            ExcMessage("friction lives on the nodes of S_1"));
@@ -40,7 +42,7 @@ namespace ddcontact
       else
         for (unsigned int q = 0; q < pairs[k]->points().size(); ++q)
         {
-          point_shares.push_back({{k, q, 1.}});
+          point_shares.push_back({{k, q, 1., 1.}});
           points.push_back(pairs[k]->points()[q].x);
         }
 
@@ -98,16 +100,43 @@ namespace ddcontact
   {
     // The vertices of adjacent faces of S_1 are the same doubles
     // (ContactPair::zone_faces_1()), so they are matched exactly.
-    const auto &pair  = *problem.get_pairs()[k];
-    const auto &faces = pair.zone_faces_1();
-    std::map<std::pair<double, double>, unsigned int> node_of;
-    for (unsigned int q = 0; q < pair.points().size(); ++q)
+    const auto &pair   = *problem.get_pairs()[k];
+    const auto &faces  = pair.zone_faces_1();
+    const auto &points = pair.points();
+    const auto  hats   = [&](const ContactPoint &p)
     {
-      const auto  &x = pair.points()[q].x;
-      const auto  &f = faces[pair.points()[q].face];
+      const auto  &f = faces[p.face];
       const double t =
-        std::clamp(x.distance(f[0]) / f[0].distance(f[1]), 0., 1.);
-      const double psi[2] = {1. - t, t};
+        std::clamp(p.x.distance(f[0]) / f[0].distance(f[1]), 0., 1.);
+      return std::array<double, 2>{{1. - t, t}};
+    };
+
+    // The dual basis phi_a = 2 psi_a - psi_b of a face, biorthogonal to
+    // the hat functions: int phi_a psi_b = delta_ab int psi_a (Wohlmuth's
+    // dual mortar basis). Only on a face wholly facing S_2 (its points'
+    // weights sum to its length); a face partly facing it, at an end of
+    // S_2 and not where a contact or stick zone ends, keeps the hat
+    // functions (the dual functions of a sliver grow like the inverse of
+    // its length and spoil the conditioning of S).
+    std::vector<bool> dual_face(faces.size(), false);
+    if (dual)
+    {
+      std::vector<double> covered(faces.size(), 0.);
+      for (const auto &p : points)
+        covered[p.face] += p.JxW;
+      for (unsigned int f = 0; f < faces.size(); ++f)
+        dual_face[f] =
+          covered[f] > (1. - 1e-10) * faces[f][0].distance(faces[f][1]);
+    }
+
+    std::map<std::pair<double, double>, unsigned int> node_of;
+    for (unsigned int q = 0; q < points.size(); ++q)
+    {
+      const auto  &f   = faces[points[q].face];
+      const auto   psi = hats(points[q]);
+      const bool   d   = dual_face[points[q].face];
+      const double phi[2] = {d ? 2. * psi[0] - psi[1] : psi[0],
+                             d ? 2. * psi[1] - psi[0] : psi[1]};
       for (unsigned int v = 0; v < 2; ++v)
       {
         const auto [it, inserted] = node_of.emplace(
@@ -115,9 +144,9 @@ namespace ddcontact
         if (inserted)
         {
           point_shares.emplace_back();
-          points.push_back(f[v]);
+          this->points.push_back(f[v]);
         }
-        point_shares[it->second].push_back({k, q, psi[v]});
+        point_shares[it->second].push_back({k, q, psi[v], phi[v]});
       }
     }
   }
@@ -152,7 +181,8 @@ namespace ddcontact
   std::vector<std::vector<double>>
   ContactInterface::at_points(const PointVector &x,
                               const unsigned int first,
-                              const double       factor) const
+                              const double       factor,
+                              const bool         load) const
   {
     const auto                      &pairs = problem.get_pairs();
     std::vector<std::vector<double>> values(pairs.size());
@@ -160,7 +190,8 @@ namespace ddcontact
       values[k].assign(pairs[k]->points().size(), 0.);
     for (unsigned int i = 0; i < size(); ++i)
       for (const auto &share : point_shares[i])
-        values[share.pair][share.point] += factor * share.psi * x[first + i];
+        values[share.pair][share.point] +=
+          factor * (load ? share.phi : share.psi) * x[first + i];
     return values;
   }
 
@@ -169,14 +200,22 @@ namespace ddcontact
   {
     Assert(p.size() == size() || p.size() == n_unknowns(),
            ExcDimensionMismatch(p.size(), size()));
-    return at_points(p, 0, -1.);
+    return at_points(p, 0, -1., true);
+  }
+
+  std::vector<std::vector<double>>
+  ContactInterface::pressure_field(const PointVector &p) const
+  {
+    Assert(p.size() == size() || p.size() == n_unknowns(),
+           ExcDimensionMismatch(p.size(), size()));
+    return at_points(p, 0, 1., false);
   }
 
   std::vector<std::vector<double>>
   ContactInterface::tangential_tractions(const PointVector &x) const
   {
     AssertDimension(x.size(), 2 * size());
-    return at_points(x, size(), 1.);
+    return at_points(x, size(), 1., true);
   }
 
   std::vector<double>
@@ -229,7 +268,7 @@ namespace ddcontact
     {
       double sum = 0;
       for (const auto &share : point_shares[i])
-        sum += share.psi * pairs[share.pair]->points()[share.point].JxW *
+        sum += share.phi * pairs[share.pair]->points()[share.point].JxW *
                values[share.pair][share.point];
       averages.push_back(sum / weights[i]);
     }

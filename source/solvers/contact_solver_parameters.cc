@@ -210,6 +210,20 @@ namespace ddcontact
       "default): nodes wherever the solver takes them (dd-newton; monolithic "
       "with the penalty), points with dd and with monolithic exact contact. "
       "Exact contact with dd-newton always uses nodes.");
+    prm.declare_entry(
+      "Multiplier basis",
+      "dual",
+      Patterns::Selection("dual|standard"),
+      "The functions that test the gap and the slip of a node of S_1 and "
+      "spread its pressure and traction as a load, wherever the unknowns "
+      "are on the nodes (exact contact; Contact pressure = nodes). 'dual' "
+      "(the default): on every face of S_1 biorthogonal to the hat "
+      "functions (the dual mortar basis), so that a node's weak gap and "
+      "slip are its own, and a sticking node is not tied to its slipping "
+      "neighbour through a mass matrix, which made the tangential traction "
+      "oscillate before the stick edge (doc/friction.md 5.2). 'standard': "
+      "the hat functions. The reported pressure and traction are the nodal "
+      "values joined by the hat functions either way.");
     prm.declare_entry("Write every iteration",
                       "false",
                       Patterns::Bool(),
@@ -241,6 +255,7 @@ namespace ddcontact
                        "called 'elastic-layer'");
     initial_guess    = parse_selection<InitialGuess>(prm.get("Initial guess"));
     contact_pressure = prm.get("Contact pressure");
+    dual_multipliers = prm.get("Multiplier basis") == "dual";
     write_every_iteration = prm.get_bool("Write every iteration");
 
     prm.enter_subsection("Uzawa");

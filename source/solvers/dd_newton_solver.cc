@@ -669,7 +669,10 @@ namespace ddcontact
       copy_stored(last_u_tilde[b], bodies[b]->get_solution());
     iterate_complete = false;
     // u_0 + u_p solves the body problems (20) loaded by sigma_n = -p.
-    last_sigma_n = interface.normal_stresses(p);
+    last_sigma_n = interface.pressure_field(p);
+    for (auto &values : last_sigma_n)
+      for (double &v : values)
+        v = -v;
     if (interface.on_nodes())
     {
       const auto peak = interface.peak_pressures(p);

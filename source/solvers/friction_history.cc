@@ -102,7 +102,7 @@ namespace ddcontact
     last_point_slips.assign(pairs.size(), {});
     last_dissipation.assign(pairs.size(), 0.);
     const auto &bodies  = problem.get_bodies();
-    const auto  minus_t = interface.normal_stresses(t);
+    const auto  field_t = interface.pressure_field(t);
     // The points with a sticking node.
     std::vector<std::vector<bool>> sticks(pairs.size());
     for (unsigned int k = 0; k < pairs.size(); ++k)
@@ -144,7 +144,7 @@ namespace ddcontact
         }
       for (unsigned int q = 0; q < pair.points().size(); ++q)
       {
-        result.t.push_back(-minus_t[k][q]);
+        result.t.push_back(field_t[k][q]);
         result.state.push_back(sigma_n[k][q] == 0. ? ContactLaw::SlipState::open
                                : sticks[k][q] ? ContactLaw::SlipState::stick
                                               : ContactLaw::SlipState::slip);

@@ -19,7 +19,11 @@ namespace ddcontact
     , on_nodes(parameters.pressure_on_nodes)
     , friction(parameters.friction)
     , max_iterations(parameters.monolithic.max_newton_iterations)
-    , interface(this->problem, on_nodes, parameters.exact_contact())
+    , interface(this->problem,
+                on_nodes,
+                parameters.exact_contact(),
+                false, // its own tangential rows
+                parameters.dual_multipliers)
   {
   }
 
@@ -177,7 +181,8 @@ namespace ddcontact
       {
         const auto        &pair      = *pairs[share.pair];
         const auto        &p         = pair.points()[share.point];
-        const double       s         = share.psi * p.JxW / d.weight;
+        // The node's test function phi_i (ContactInterface).
+        const double       s         = share.phi * p.JxW / d.weight;
         const unsigned int b1        = problem.body_index(pair.get_body_1());
         const unsigned int b2        = problem.body_index(pair.get_body_2());
         const bool         with_slip = friction && pair.has_friction();
@@ -562,7 +567,10 @@ namespace ddcontact
     // The pressure p(x) = sum_i p_i psi_i(x) at the points, and its peak.
     const unsigned int n_nodes = penetrations.size();
     const PointVector  pressure(p.begin(), p.begin() + n_nodes);
-    const auto         sigma_n = interface.normal_stresses(pressure);
+    auto               sigma_n = interface.pressure_field(pressure);
+    for (auto &values : sigma_n)
+      for (double &v : values)
+        v = -v;
     const auto         peaks   = interface.peak_pressures(pressure);
     for (unsigned int k = 0; k < sigma_n.size(); ++k)
       problem.law(k).set_contact_pressure(sigma_n[k], peaks[k]);

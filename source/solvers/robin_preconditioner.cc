@@ -49,8 +49,9 @@ namespace ddcontact
       // does along n (the same load and dofs, ContactPoint).
       const auto &c = tangential ? (body_1 ? point.load_t1 : point.load_t2)
                                  : (body_1 ? point.load_1 : point.load_2);
-      // psi w / m: exactly 1 for a point's own unknown.
-      const double factor = (share.psi * point.JxW) / m;
+      // phi w / m, the node's test function as in S (ContactInterface):
+      // exactly 1 for a point's own unknown.
+      const double factor = (share.phi * point.JxW) / m;
       if (shares.size() == 1)
       {
         row.dofs = dofs;

@@ -27,16 +27,29 @@ namespace ddcontact
    *   ContactSolverParameters::multipliers_on_nodes()): one
    *   multiplier per vertex of the faces of S_1, the pressure
    *   p(x) = sum_i p_i psi_i(x) piecewise linear (psi_i the hat functions
-   *   of the zone mesh of body 1), and the contact condition tested with
-   *   the same functions: the weak gap of node i is the average
-   *   d_i = (1/m_i) int_S1 psi_i d, m_i = int_S1 psi_i. As many multipliers
+   *   of the zone mesh of body 1) as reported, and the contact condition
+   *   tested with functions phi_i: the weak gap of node i is the average
+   *   d_i = (1/m_i) int_S1 phi_i d, m_i = int_S1 psi_i = int_S1 phi_i,
+   *   and the load of the pressure is sum_i p_i phi_i. With Contact
+   *   solver/Multiplier basis = standard phi_i = psi_i; with dual (the
+   *   default) phi_i is Wohlmuth's dual basis, 2 psi_i - psi_j on every
+   *   face of S_1 wholly facing S_2 (j the face's other vertex), so that
+   *   int phi_i psi_j = m_i delta_ij: on matching meshes d_i and the slip
+   *   s_i are the values at node i, and the state of a node (open, stick,
+   *   slip) does not reach its neighbours through the mass matrix int
+   *   psi_i psi_j, which with the hat functions made the tangential
+   *   traction oscillate before the stick edge (doc/friction.md 5.2). The
+   *   force sum_i m_i p_i is the same either way; the moments of the
+   *   reported field and of the load differ at the ends of a zone by
+   *   O(h^2) with the dual basis (tests/floating_body.cc). As many
+   *   multipliers
    *   as normal displacements of body 1 on S_1 (no boundary vertex hangs in
    *   2D), so that the trace of body 1 determines them (the mortar method's
    *   choice of the slave side). The integrals use the pair's points (the
    *   common refinement of the two zone meshes, doc/method.md section 7).
    *
-   * Both are written with Psi, psi_i at the points (the identity for
-   * points): p at the points = Psi^T p. With the bodies solved under p the
+   * Both are written with Psi, phi_i at the points (the identity for
+   * points): the load of p at the points = Psi^T p. With the bodies solved under p the
    * penetration is
    *   d(p) = M^{-1} Psi W (u_1n + u_2n - f~_n) = d_0 - S p,
    * affine in p: d_0 that of the bodies without contact load, and
@@ -70,19 +83,24 @@ namespace ddcontact
   public:
     /** With @p on_nodes the nodal space, otherwise the points; theta = 0
      * with @p exact_contact, otherwise the pairs' penalties; with
-     * @p friction (on the nodes) a tangential multiplier per node. */
+     * @p friction (on the nodes) a tangential multiplier per node; with
+     * @p dual_basis the nodes' test and load functions are the dual
+     * basis phi_i, otherwise the hat functions psi_i. */
     ContactInterface(const ContactProblem &problem,
                      bool                  on_nodes,
                      bool                  exact_contact,
-                     bool                  friction = false);
+                     bool                  friction   = false,
+                     bool                  dual_basis = false);
 
-    /** The share psi_i(x_q) of point @p point of pair @p pair in an
-     * unknown. */
+    /** The share of point @p point of pair @p pair in an unknown: the hat
+     * function psi_i(x_q) (the reported field) and the test and load
+     * function phi_i(x_q) (psi_i, or the dual basis). */
     struct PointShare
     {
       unsigned int pair;
       unsigned int point;
       double       psi;
+      double       phi;
     };
 
     /** The unknowns, their weights, penalties and shares of the pairs'
@@ -256,6 +274,12 @@ namespace ddcontact
     std::vector<std::vector<double>>
     tangential_tractions(const PointVector &x) const;
 
+    /** The pressure field sum_i p_i psi_i at the points, one vector per
+     * pair, as -normal_stresses() but with the hat functions also for dual
+     * multipliers: what the reports show. */
+    std::vector<std::vector<double>>
+    pressure_field(const PointVector &p) const;
+
     /** The largest value of @p p on every pair (the peak of the piecewise
      * linear pressure of the nodes, which the points between them miss; 0
      * for a pair without positive value). */
@@ -314,7 +338,10 @@ namespace ddcontact
     /** @p factor Psi^T of the size() values of @p x from index @p first:
      * the field sum_i x_i psi_i at the points, one vector per pair. */
     std::vector<std::vector<double>>
-    at_points(const PointVector &x, unsigned int first, double factor) const;
+    at_points(const PointVector &x,
+              unsigned int       first,
+              double             factor,
+              bool               load) const;
 
     /** M^{-1} Psi W @p values (values at the points, per pair). */
     PointVector
@@ -330,7 +357,7 @@ namespace ddcontact
     add_nodes(unsigned int k);
 
     const ContactProblem                &problem;
-    const bool                           nodal, exact, tangential;
+    const bool                           nodal, exact, tangential, dual;
     PointVector                          weights, thetas, scales, references;
     PointVector                          bounds; // per node, friction_bound()
     std::vector<FrictionLaw>             laws;   // per node

@@ -141,6 +141,9 @@ namespace ddcontact
     bool write_every_iteration = false;
     bool print_every_iteration = false; // Output/Verbosity = full
     bool pressure_on_nodes     = false; // Contact pressure
+    /** Multiplier basis = dual: the nodal multipliers' test and load
+     * functions biorthogonal to the hat functions (ContactInterface). */
+    bool dual_multipliers = true;
     /** A pair has friction (Contact pair/Friction): set by the scene. */
     bool        friction         = false;
     std::string contact_pressure = "auto"; // the entry

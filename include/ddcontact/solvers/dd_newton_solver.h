@@ -326,7 +326,7 @@ namespace ddcontact
 
     ContactInterface interface {
       problem, parameters.multipliers_on_nodes(), parameters.exact_contact(),
-        parameters.friction
+        parameters.friction, parameters.dual_multipliers
     };
     FrictionHistory history;
 
