@@ -116,14 +116,14 @@ namespace
   std::array<double, 4>
   l2_errors(const Simulation &sim, const double P, const double Q)
   {
-    const auto  state = sim.get_contact_solver().contact_state(0);
-    const auto &pair  = *sim.get_contact_pairs()[0];
-    const auto &pts   = pair.points();
-    const auto &faces = pair.zone_faces_1();
-    const double a    = std::sqrt(4. * P * R / (M_PI * E_star));
-    const double p0   = 2. * P / (M_PI * a);
-    const double c    = a * std::sqrt(1. - Q / (mu * P));
-    const auto   root = [](const double r, const double x)
+    const auto   state = sim.get_contact_solver().contact_state(0);
+    const auto  &pair  = *sim.get_contact_pairs()[0];
+    const auto  &pts   = pair.points();
+    const auto  &faces = pair.zone_faces_1();
+    const double a     = std::sqrt(4. * P * R / (M_PI * E_star));
+    const double p0    = 2. * P / (M_PI * a);
+    const double c     = a * std::sqrt(1. - Q / (mu * P));
+    const auto   root  = [](const double r, const double x)
     { return std::sqrt(std::max(0., r * r - x * x)); };
     const auto p_exact = [&](const double x) { return p0 / a * root(a, x); };
     // t > 0 against the upper body's slip along +e_1.
@@ -134,8 +134,8 @@ namespace
     for (unsigned int q = 0; q < pts.size(); ++q)
     {
       const double x = pts[q].x[0], w = pts[q].JxW;
-      const auto  &f = faces[pts[q].face];
-      const double s = (x - f[0][0]) / (f[1][0] - f[0][0]);
+      const auto  &f           = faces[pts[q].face];
+      const double s           = (x - f[0][0]) / (f[1][0] - f[0][0]);
       const auto   interpolant = [&](const auto &exact)
       { return (1. - s) * exact(f[0][0]) + s * exact(f[1][0]); };
       squares[0] += w * std::pow(-state.sigma_n[q] - p_exact(x), 2);

@@ -132,9 +132,9 @@ namespace ddcontact
     std::map<std::pair<double, double>, unsigned int> node_of;
     for (unsigned int q = 0; q < points.size(); ++q)
     {
-      const auto  &f   = faces[points[q].face];
-      const auto   psi = hats(points[q]);
-      const bool   d   = dual_face[points[q].face];
+      const auto  &f      = faces[points[q].face];
+      const auto   psi    = hats(points[q]);
+      const bool   d      = dual_face[points[q].face];
       const double phi[2] = {d ? 2. * psi[0] - psi[1] : psi[0],
                              d ? 2. * psi[1] - psi[0] : psi[1]};
       for (unsigned int v = 0; v < 2; ++v)

@@ -179,8 +179,8 @@ namespace ddcontact
       };
       for (const auto &share : interface.shares(i))
       {
-        const auto        &pair      = *pairs[share.pair];
-        const auto        &p         = pair.points()[share.point];
+        const auto &pair = *pairs[share.pair];
+        const auto &p    = pair.points()[share.point];
         // The node's test function phi_i (ContactInterface).
         const double       s         = share.phi * p.JxW / d.weight;
         const unsigned int b1        = problem.body_index(pair.get_body_1());
@@ -571,7 +571,7 @@ namespace ddcontact
     for (auto &values : sigma_n)
       for (double &v : values)
         v = -v;
-    const auto         peaks   = interface.peak_pressures(pressure);
+    const auto peaks = interface.peak_pressures(pressure);
     for (unsigned int k = 0; k < sigma_n.size(); ++k)
       problem.law(k).set_contact_pressure(sigma_n[k], peaks[k]);
     if (!friction)

@@ -49,17 +49,15 @@ namespace ddcontact
    *   common refinement of the two zone meshes, doc/method.md section 7).
    *
    * Both are written with Psi, phi_i at the points (the identity for
-   * points): the load of p at the points = Psi^T p. With the bodies solved under p the
-   * penetration is
-   *   d(p) = M^{-1} Psi W (u_1n + u_2n - f~_n) = d_0 - S p,
-   * affine in p: d_0 that of the bodies without contact load, and
-   * S p = M^{-1} Psi W B K^{-1} B^T W Psi^T p the averaged approach of the
-   * bodies loaded by p alone (homogeneous data): B evaluates both bodies'
-   * normal displacements at the points, B^T W Psi^T p is the load (20) of
-   * the pressure p (W the weights of the contact integral), K =
-   * blockdiag(K_a), M = diag(m_i) (M = W for points). f~_n = f_n + theta
-   * lambda is the gap shifted by the augmented Lagrangian's multipliers
-   * (ContactLaw::shifted_gap()).
+   * points): the load of p at the points = Psi^T p. With the bodies solved
+   * under p the penetration is d(p) = M^{-1} Psi W (u_1n + u_2n - f~_n) = d_0 -
+   * S p, affine in p: d_0 that of the bodies without contact load, and S p =
+   * M^{-1} Psi W B K^{-1} B^T W Psi^T p the averaged approach of the bodies
+   * loaded by p alone (homogeneous data): B evaluates both bodies' normal
+   * displacements at the points, B^T W Psi^T p is the load (20) of the pressure
+   * p (W the weights of the contact integral), K = blockdiag(K_a), M =
+   * diag(m_i) (M = W for points). f~_n = f_n + theta lambda is the gap shifted
+   * by the augmented Lagrangian's multipliers (ContactLaw::shifted_gap()).
    *
    * M S is symmetric positive semidefinite: S is self-adjoint in the inner
    * product (x, y)_M = sum_i m_i x_i y_i. Every application of S is one set
