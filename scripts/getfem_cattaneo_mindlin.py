@@ -33,10 +33,14 @@ The quasi-static friction law of step 2 acts on the slip since step 1:
 the brick's data wt is the displacement of step 1 and gamma = 1 (the
 slip in the law is BT (u - wt)).
 
-The multipliers are nodal forces; the traction of node i is
-lambda_i / m_i (columns pressure, tangential_traction), and also the L2
-representative M^-1 lambda of the forces with the line's mass matrix M
-(columns *_consistent). Sign convention of ddcontact (doc/output.md):
+Tractions at the nodes (columns pressure, tangential_traction): in the
+nodal variant the multipliers are nodal forces, and the traction of node
+i is its force over m_i (lumped); in the mortar variant lambda_i / m_i is
+the nodal value of the traction t_h = sum_i t_i psi_i whose work
+int t_h psi_j gives the nodal forces (as ddcontact's nodal multipliers).
+The columns *_consistent hold M^-1 f, the L2 representative of the nodal
+forces f with the line's mass matrix M (for the mortar variant the same
+values). Sign convention of ddcontact (doc/output.md):
 pressure >= 0, and tangential_traction t with the traction -t e_x on the
 upper block (t > 0 under the shear U > 0).
 
@@ -189,12 +193,23 @@ def main():
     # traction on the upper block is +lambda_t e_x, i.e. t = -lambda_t in
     # ddcontact's convention (-t e_x on the upper block).
     fn = -ln
-    ft = W.T @ (-lt)
+    ft = -lt
+    # Nodal forces on the upper block: W^T times the multipliers.
     fn_nodes = W.T @ fn
-    p_lumped = fn_nodes / m_i
-    t_lumped = ft / m_i
+    ft_nodes = W.T @ ft
+    if args.variant == "nodal":
+        # Node to node: the multipliers are the nodal forces; the traction
+        # of node i is its force over int psi_i (lumped).
+        p_nodes, t_nodes = fn_nodes / m_i, ft_nodes / m_i
+    else:
+        # Weighted rows: the forces are int t_h psi_j with t_h = sum_i
+        # (lambda_i / m_i) psi_i, so lambda_i / m_i is the traction's nodal
+        # value (as the nodal multipliers of ddcontact).
+        p_nodes, t_nodes = fn / m_i, ft / m_i
+    # The L2 representative of the nodal forces: M t = f (for the mortar
+    # variant the same as above).
     p_cons = np.linalg.solve(M, fn_nodes)
-    t_cons = np.linalg.solve(M, ft)
+    t_cons = np.linalg.solve(M, ft_nodes)
     Pn, Qt = float(fn.sum()), float(ft.sum())
 
     total = time.perf_counter() - T_START
@@ -204,9 +219,9 @@ def main():
                 "tangential_traction_consistent,force_n,force_t,weight,"
                 "gap\n")
         for k in range(nbc):
-            f.write(f"{xs[k]:.15g},{p_lumped[k]:.15g},{t_lumped[k]:.15g},"
+            f.write(f"{xs[k]:.15g},{p_nodes[k]:.15g},{t_nodes[k]:.15g},"
                     f"{p_cons[k]:.15g},{t_cons[k]:.15g},{fn_nodes[k]:.15g},"
-                    f"{ft[k]:.15g},{m_i[k]:.15g},{gap_nodes[k]:.15g}\n")
+                    f"{ft_nodes[k]:.15g},{m_i[k]:.15g},{gap_nodes[k]:.15g}\n")
     summary = {
         "code": "getfem-" + args.variant,
         "getfem_version": getattr(gf, "__version__", "5.4"),
