@@ -23,6 +23,8 @@ OMP_NUM_THREADS=1) and niced.
 """
 import argparse
 import csv
+import hashlib
+import shutil
 import json
 import math
 import os
@@ -133,14 +135,17 @@ def gauss_legendre(n):
     return (x + 1) / 2, w / 2
 
 
-def evaluate(xs, p, t, P, Q, n_gauss=20):
+def evaluate(xs, p, t, P, Q, n_gauss=20, h_zone=None):
     """The errors of the piecewise-linear interpolants of the nodal values
     p, t at the nodes xs (sorted) against the closed form at the code's own
     P, Q: L2 over the line, relative to the norm of the closed form, the
     largest error (relative to p0, resp. mu p0), and the error profile.
     Every cell of the line is split at +-a and +-c, where the closed form
-    has a square-root kink, and integrated with n_gauss Gauss points."""
+    has a square-root kink, and integrated with n_gauss Gauss points.
+    With h_zone, also the shares of the squared L2 error of t within 2
+    h_zone of the contact edges +-a and of the stick edges +-c."""
     a, p0, c = closed_form(P, Q)
+    near_a = near_c = 0.0
     gx, gw = gauss_legendre(n_gauss)
     kinks = [-a, -c, c, a]
     ep2 = et2 = np2 = nt2 = 0.0
@@ -159,6 +164,10 @@ def evaluate(xs, p, t, P, Q, n_gauss=20):
                 pe, te = exact_p(x, a, p0), exact_t(x, a, p0, c)
                 ep2 += w * L * (ph - pe) ** 2
                 et2 += w * L * (th - te) ** 2
+                if h_zone and abs(abs(x) - a) < 2 * h_zone:
+                    near_a += w * L * (th - te) ** 2
+                elif h_zone and abs(abs(x) - c) < 2 * h_zone:
+                    near_c += w * L * (th - te) ** 2
                 np2 += w * L * pe * pe
                 nt2 += w * L * te * te
                 max_ep = max(max_ep, abs(ph - pe))
@@ -168,6 +177,8 @@ def evaluate(xs, p, t, P, Q, n_gauss=20):
     return {"a": a, "p0": p0, "c": c,
             "L2_t": math.sqrt(et2 / nt2), "L2_p": math.sqrt(ep2 / np2),
             "max_t": max_et / (MU * p0), "max_p": max_ep / p0,
+            "share_a": near_a / et2 if et2 else 0.0,
+            "share_c": near_c / et2 if et2 else 0.0,
             "profile": profile}
 
 
@@ -231,14 +242,18 @@ def run_ddcontact(exe, upper, lower, work):
             "dofs": sum(b["dofs"] for b in s["bodies"]),
             "newton_steps": s.get("newton_steps", ""),
             "status": s.get("status", ""),
+            "revision": s.get("code_revision", "?"),
             "time_solve": timings.get("contact solve", ""),
             "time_total_own": sum(v for v in timings.values()
                                   if isinstance(v, (int, float))),
             "wall": wall}
 
 
-def run_getfem(python, variant, upper, lower, work):
+def run_getfem(python, variant, upper, lower, work, reuse=False):
     out = os.path.join(work, f"getfem_{variant}.csv")
+    summary = os.path.splitext(out)[0] + ".json"
+    if reuse and os.path.exists(summary) and "wall" in json.load(open(summary)):
+        return read_getfem(out)
     t0 = time.perf_counter()
     log = subprocess.run(["nice", python,
                           os.path.join(HERE, "getfem_cattaneo_mindlin.py"),
@@ -250,6 +265,15 @@ def run_getfem(python, variant, upper, lower, work):
         f.write(log.stdout + log.stderr)
     if log.returncode != 0:
         raise RuntimeError(f"GetFEM ({variant}) failed, see its log in {work}")
+    s = json.load(open(summary))
+    s["wall"] = wall
+    with open(summary, "w") as f:
+        json.dump(s, f, indent=1)
+    return read_getfem(out)
+
+
+def read_getfem(out):
+    """A GetFEM run's summary and its nodal values on the contact line."""
     s = json.load(open(os.path.splitext(out)[0] + ".json"))
     rows = list(csv.DictReader(open(out)))
     s["x"] = [float(r["x"]) for r in rows]
@@ -258,11 +282,19 @@ def run_getfem(python, variant, upper, lower, work):
     s["p_consistent"] = [float(r["pressure_consistent"]) for r in rows]
     s["t_consistent"] = [float(r["tangential_traction_consistent"])
                          for r in rows]
-    s["wall"] = wall
     return s
 
 
 # ---------------------------------------------------------------------------
+
+def gf_version(python, cache={}):
+    """GetFEM's version as the Debian package names it (or '5.4')."""
+    if "v" not in cache:
+        q = subprocess.run(["dpkg-query", "-W", "-f=${Version}",
+                            "python3-getfem"], capture_output=True, text=True)
+        cache["v"] = q.stdout.split("+")[0] if q.returncode == 0 else "5.4"
+    return cache["v"]
+
 
 def time_to(rows, code, target=0.02, key="L2_t_rel", time_key="wall_s"):
     """The time at which the code's L2 error of t reaches target, by
@@ -288,10 +320,18 @@ def main():
     ap.add_argument("--h", help="comma-separated h at the zone")
     ap.add_argument("--csv")
     ap.add_argument("--no-plot", action="store_true")
+    ap.add_argument("--reuse-getfem", action="store_true",
+                    help="take the GetFEM results already in the work "
+                    "directory (GetFEM does not depend on the ddcontact "
+                    "binary; the meshes are deterministic)")
     args = ap.parse_args()
-    exe = os.path.abspath(args.ddcontact)
     work = args.work or tempfile.mkdtemp(prefix="friction-getfem-")
     os.makedirs(work, exist_ok=True)
+    # A copy of the binary, so that a rebuild during the study does not
+    # mix two versions; its hash goes into the table.
+    exe = os.path.join(work, "ddcontact-under-study")
+    shutil.copy2(os.path.abspath(args.ddcontact), exe)
+    binary_hash = hashlib.sha256(open(exe, "rb").read()).hexdigest()[:12]
     hs = ([float(v) for v in args.h.split(",")] if args.h
           else H_QUICK if args.quick else H_ALL)
     csv_path = args.csv or (os.path.join(work, "friction-getfem.csv")
@@ -301,8 +341,9 @@ def main():
 
     keys = ["mesh", "h_zone", "unknowns", "contact_nodes", "code", "P", "Q",
             "Q_over_muP", "a", "c_over_a", "L2_t_rel", "L2_p_rel",
-            "max_t_rel", "max_p_rel", "ratio_L2_t_to_getfem_nodal",
-            "newton_steps", "residual", "solve_s", "wall_s"]
+            "max_t_rel", "max_p_rel", "share_near_a", "share_near_c",
+            "ratio_L2_t_to_getfem_nodal",
+            "newton_steps", "residual", "solve_s", "wall_s", "build"]
     rows, profiles = [], {}
     for h in hs:
         name = f"h{h:g}"
@@ -313,26 +354,28 @@ def main():
                 "unknowns": 4 * nx * ny, "contact_nodes": nx}
         results = []
         for variant in GETFEM_VARIANTS:
-            g = run_getfem(args.python, variant, upper, lower, mdir)
+            g = run_getfem(args.python, variant, upper, lower, mdir,
+                           args.reuse_getfem)
             for recovery in ("", "_consistent"):
                 if recovery and variant == "mortar":
                     continue  # its multipliers are the traction's nodal values
                 ev = evaluate(g["x"], g["p" + recovery], g["t" + recovery],
-                              g["P"], g["Q"])
+                              g["P"], g["Q"], h_zone=h)
                 code = f"getfem-{variant}" + ("-M" if recovery else "")
                 results.append((code, g["P"], g["Q"], ev, g["newton_steps"],
                                 g["final_residual"], g["time_solve"],
-                                g["wall"]))
+                                g["wall"], "GetFEM " + gf_version(args.python)))
         d = run_ddcontact(exe, upper, lower, mdir)
         p, t, mismatch = ddcontact_nodal(d["out"], xs)
         if mismatch > 1e-8:
             print(f"  warning: ddcontact's point values are not one P1 "
                   f"interpolant (faces disagree by {mismatch:.2e})")
-        ev = evaluate(xs, p, t, d["P"], d["Q"])
+        ev = evaluate(xs, p, t, d["P"], d["Q"], h_zone=h)
         results.append(("ddcontact", d["P"], d["Q"], ev, d["newton_steps"],
-                        d["status"], d["time_solve"], d["wall"]))
+                        d["status"], d["time_solve"], d["wall"],
+                        f"{d['revision']} sha256:{binary_hash}"))
         ref = next(r[3]["L2_t"] for r in results if r[0] == "getfem-nodal")
-        for code, P, Q, ev, nit, res, ts, wall in results:
+        for code, P, Q, ev, nit, res, ts, wall, build in results:
             row = dict(base, code=code, P=f"{P:.10g}", Q=f"{Q:.10g}",
                        Q_over_muP=f"{Q / (MU * P):.6f}", a=f"{ev['a']:.6f}",
                        c_over_a=f"{ev['c'] / ev['a']:.6f}",
@@ -340,12 +383,14 @@ def main():
                        L2_p_rel=f"{ev['L2_p']:.5g}",
                        max_t_rel=f"{ev['max_t']:.4g}",
                        max_p_rel=f"{ev['max_p']:.4g}",
+                       share_near_a=f"{ev['share_a']:.3f}",
+                       share_near_c=f"{ev['share_c']:.3f}",
                        ratio_L2_t_to_getfem_nodal=f"{ev['L2_t'] / ref:.4f}",
                        newton_steps=nit,
                        residual=(f"{res:.2e}" if isinstance(res, float)
                                  else res),
                        solve_s=f"{ts:.3f}" if ts != "" else "",
-                       wall_s=f"{wall:.3f}")
+                       wall_s=f"{wall:.3f}", build=build)
             rows.append(row)
             profiles[(h, code)] = ev["profile"]
             print(f"h {h:<7g} {code:16s} P {P:.8f} Q {Q:.8f} "
@@ -395,12 +440,13 @@ def plot(rows, profiles, hs, path):
     ax[0].set_xlabel("displacement unknowns (both blocks)")
     ax[1].set_xlabel("wall time [s], one thread")
     mid = hs[len(hs) // 2]
-    for code in codes:
+    for code in ("ddcontact", "getfem-nodal", "getfem-nodal-M"):
         prof = profiles.get((mid, code))
         if prof:
             prof = sorted(prof)
-            ax[2].plot([v[0] for v in prof], [abs(v[1]) for v in prof],
-                       "-", lw=0.9, label=code)
+            ax[2].plot([v[0] for v in prof], [v[1] for v in prof],
+                       "-", lw=0.9, label=code +
+                       (" (= getfem-mortar)" if code == "ddcontact" else ""))
     ev_rows = [r for r in rows if r["h_zone"] == mid and r["code"] == "ddcontact"]
     if ev_rows:
         a = float(ev_rows[0]["a"])
@@ -410,7 +456,7 @@ def plot(rows, profiles, hs, path):
         for v in (-c, c):
             ax[2].axvline(v, color="r", lw=0.6, ls=":")
     ax[2].set_xlabel("x (dashed: +-a, dotted: +-c)")
-    ax[2].set_ylabel("|t_h - t|")
+    ax[2].set_ylabel("t_h - t (closed form at the code's P, Q)")
     ax[2].set_title(f"h = {mid:g} at the zone")
     ax[2].legend(fontsize=8)
     fig.tight_layout()
