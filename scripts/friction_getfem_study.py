@@ -343,7 +343,8 @@ def main():
             "Q_over_muP", "a", "c_over_a", "L2_t_rel", "L2_p_rel",
             "max_t_rel", "max_p_rel", "share_near_a", "share_near_c",
             "ratio_L2_t_to_getfem_nodal",
-            "newton_steps", "residual", "solve_s", "wall_s", "build"]
+            "newton_steps", "residual", "solve_s", "own_s", "wall_s",
+            "t_diff_to_getfem_nodal", "t_diff_to_getfem_mortar", "build"]
     rows, profiles = [], {}
     for h in hs:
         name = f"h{h:g}"
@@ -364,18 +365,27 @@ def main():
                 code = f"getfem-{variant}" + ("-M" if recovery else "")
                 results.append((code, g["P"], g["Q"], ev, g["newton_steps"],
                                 g["final_residual"], g["time_solve"],
-                                g["wall"], "GetFEM " + gf_version(args.python)))
+                                g["wall"], "GetFEM " + gf_version(args.python),
+                                g["time_total"], {}))
         d = run_ddcontact(exe, upper, lower, mdir)
         p, t, mismatch = ddcontact_nodal(d["out"], xs)
         if mismatch > 1e-8:
             print(f"  warning: ddcontact's point values are not one P1 "
                   f"interpolant (faces disagree by {mismatch:.2e})")
         ev = evaluate(xs, p, t, d["P"], d["Q"], h_zone=h)
+        # How far ddcontact's nodal t is from each GetFEM variant's, over
+        # the largest |t|: 1e-9 means the same discrete solution.
+        diffs = {}
+        for variant in GETFEM_VARIANTS:
+            g = read_getfem(os.path.join(mdir, f"getfem_{variant}.csv"))
+            diffs[variant] = (max(abs(u - v) for u, v in zip(t, g["t"])) /
+                              max(abs(v) for v in t))
         results.append(("ddcontact", d["P"], d["Q"], ev, d["newton_steps"],
                         d["status"], d["time_solve"], d["wall"],
-                        f"{d['revision']} sha256:{binary_hash}"))
+                        f"{d['revision']} sha256:{binary_hash}",
+                        d["time_total_own"], diffs))
         ref = next(r[3]["L2_t"] for r in results if r[0] == "getfem-nodal")
-        for code, P, Q, ev, nit, res, ts, wall, build in results:
+        for code, P, Q, ev, nit, res, ts, wall, build, own, diffs in results:
             row = dict(base, code=code, P=f"{P:.10g}", Q=f"{Q:.10g}",
                        Q_over_muP=f"{Q / (MU * P):.6f}", a=f"{ev['a']:.6f}",
                        c_over_a=f"{ev['c'] / ev['a']:.6f}",
@@ -390,7 +400,12 @@ def main():
                        residual=(f"{res:.2e}" if isinstance(res, float)
                                  else res),
                        solve_s=f"{ts:.3f}" if ts != "" else "",
-                       wall_s=f"{wall:.3f}", build=build)
+                       own_s=f"{own:.3f}", wall_s=f"{wall:.3f}",
+                       t_diff_to_getfem_nodal=(f"{diffs['nodal']:.2e}"
+                                               if diffs else ""),
+                       t_diff_to_getfem_mortar=(f"{diffs['mortar']:.2e}"
+                                                if diffs else ""),
+                       build=build)
             rows.append(row)
             profiles[(h, code)] = ev["profile"]
             print(f"h {h:<7g} {code:16s} P {P:.8f} Q {Q:.8f} "
@@ -403,9 +418,11 @@ def main():
 
     print(f"wrote {csv_path}")
     for code in sorted({r["code"] for r in rows}):
-        t2 = time_to(rows, code)
-        print(f"time to 2 % L2 error of t, {code}: "
-              + (f"{t2:.2f} s (wall, interpolated)" if t2 else "not reached"))
+        for time_key, what in (("wall_s", "wall"), ("own_s", "own timers")):
+            t2 = time_to(rows, code, time_key=time_key)
+            print(f"time to 2 % L2 error of t, {code}: "
+                  + (f"{t2:.2f} s ({what}, interpolated)" if t2
+                     else f"not reached ({what})"))
     if not args.no_plot:
         plot(rows, profiles, hs, os.path.splitext(csv_path)[0] + ".png")
 
@@ -440,13 +457,20 @@ def plot(rows, profiles, hs, path):
     ax[0].set_xlabel("displacement unknowns (both blocks)")
     ax[1].set_xlabel("wall time [s], one thread")
     mid = hs[len(hs) // 2]
-    for code in ("ddcontact", "getfem-nodal", "getfem-nodal-M"):
+    same = {}
+    for r in rows:
+        if r["code"] == "ddcontact" and r["h_zone"] == mid:
+            for variant in GETFEM_VARIANTS:
+                if float(r[f"t_diff_to_getfem_{variant}"]) < 1e-6:
+                    same = {"getfem-" + variant: True}
+    for code, st in (("ddcontact", "-"), ("getfem-nodal", "--"),
+                     ("getfem-mortar", ":")):
         prof = profiles.get((mid, code))
         if prof:
             prof = sorted(prof)
             ax[2].plot([v[0] for v in prof], [v[1] for v in prof],
-                       "-", lw=0.9, label=code +
-                       (" (= getfem-mortar)" if code == "ddcontact" else ""))
+                       st, lw=1.0, label=code + (" (= ddcontact)"
+                                                 if code in same else ""))
     ev_rows = [r for r in rows if r["h_zone"] == mid and r["code"] == "ddcontact"]
     if ev_rows:
         a = float(ev_rows[0]["a"])
