@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Conforming, graded Q1 meshes of the Cattaneo-Mindlin blocks of
 prm/cattaneo_mindlin.prm for the GetFEM comparison
-(scripts/friction_getfem_study.py, doc/friction-getfem.md).
+(scripts/friction_getfem_study.py, doc/friction.md section 5.6).
 
 Both blocks are tensor-product meshes of the same node lines:
 - x: uniform spacing h on |x| <= L (L >= 0.45, a whole number of cells),

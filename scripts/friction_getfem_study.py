@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Side-by-side study of ddcontact and GetFEM on Cattaneo-Mindlin
-(issue 48 item 4, doc/friction-getfem.md): the same graded, conforming Q1
+(issue 48 item 4, doc/friction.md section 5.6): the same graded, conforming Q1
 meshes of the two blocks of prm/cattaneo_mindlin.prm
 (scripts/cattaneo_mindlin_meshes.py), solved by ddcontact (monolithic,
 exact contact, Coulomb mu = 0.3, 2 load steps) and by GetFEM

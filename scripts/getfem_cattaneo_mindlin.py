@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The Cattaneo-Mindlin scene of prm/cattaneo_mindlin.prm solved with
 GetFEM (python3-getfem, GetFEM 5.4) on given Gmsh meshes of the two blocks
-(scripts/cattaneo_mindlin_meshes.py), for doc/friction-getfem.md.
+(scripts/cattaneo_mindlin_meshes.py), for doc/friction.md section 5.6.
 
     /usr/bin/python3 scripts/getfem_cattaneo_mindlin.py UPPER.msh LOWER.msh
         OUT.csv [--variant nodal|mortar] [--r R] [--max-res TOL]
