@@ -235,12 +235,12 @@ namespace
 
     // The fields against the closed forms in L2. The dual basis decouples
     // a sticking node from its slipping neighbour, so t follows the
-    // closed form up to its interpolation error (measured: 0.98 and 0.89
-    // of it at refinements 6 and 7, p 1.1 and 0.85); with the hat
+    // closed form up to its interpolation error (measured: 0.98 and 0.99
+    // of it at refinements 6 and 7, p 1.00 and 1.02); with the hat
     // functions as test functions the weak slip of the stick zone's last
     // nodes is tied to the slip zone through the mass matrix, and t
-    // oscillates there (Multiplier basis = standard: 1.9 times the
-    // interpolation error at refinement 7).
+    // zigzags there (Multiplier basis = standard: 2.1 times the
+    // interpolation error at refinement 7, doc/friction.md 5.2).
     const auto errors = l2_errors(sim, P, Q);
     std::cout << name << ": L2 error of p " << errors[0] << " (interpolant "
               << errors[2] << "), of t " << errors[1] << " (interpolant "
