@@ -204,11 +204,12 @@ namespace ddcontact
   }
 
   std::vector<std::vector<double>>
-  ContactInterface::pressure_field(const PointVector &p) const
+  ContactInterface::reported_field(const PointVector &x,
+                                   const double       factor) const
   {
-    Assert(p.size() == size() || p.size() == n_unknowns(),
-           ExcDimensionMismatch(p.size(), size()));
-    return at_points(p, 0, 1., false);
+    Assert(x.size() == size() || x.size() == n_unknowns(),
+           ExcDimensionMismatch(x.size(), size()));
+    return at_points(x, 0, factor, false);
   }
 
   std::vector<std::vector<double>>

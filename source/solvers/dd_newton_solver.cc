@@ -669,10 +669,7 @@ namespace ddcontact
       copy_stored(last_u_tilde[b], bodies[b]->get_solution());
     iterate_complete = false;
     // u_0 + u_p solves the body problems (20) loaded by sigma_n = -p.
-    last_sigma_n = interface.pressure_field(p);
-    for (auto &values : last_sigma_n)
-      for (double &v : values)
-        v = -v;
+    last_sigma_n = interface.reported_field(p, -1.);
     if (interface.on_nodes())
     {
       const auto peak = interface.peak_pressures(p);

@@ -102,7 +102,7 @@ namespace ddcontact
     last_point_slips.assign(pairs.size(), {});
     last_dissipation.assign(pairs.size(), 0.);
     const auto &bodies  = problem.get_bodies();
-    const auto  field_t = interface.pressure_field(t);
+    const auto  field_t = interface.reported_field(t);
     // The points with a sticking node.
     std::vector<std::vector<bool>> sticks(pairs.size());
     for (unsigned int k = 0; k < pairs.size(); ++k)

@@ -567,11 +567,8 @@ namespace ddcontact
     // The pressure p(x) = sum_i p_i psi_i(x) at the points, and its peak.
     const unsigned int n_nodes = penetrations.size();
     const PointVector  pressure(p.begin(), p.begin() + n_nodes);
-    auto               sigma_n = interface.pressure_field(pressure);
-    for (auto &values : sigma_n)
-      for (double &v : values)
-        v = -v;
-    const auto peaks = interface.peak_pressures(pressure);
+    const auto         sigma_n = interface.reported_field(pressure, -1.);
+    const auto         peaks   = interface.peak_pressures(pressure);
     for (unsigned int k = 0; k < sigma_n.size(); ++k)
       problem.law(k).set_contact_pressure(sigma_n[k], peaks[k]);
     if (!friction)

@@ -272,11 +272,12 @@ namespace ddcontact
     std::vector<std::vector<double>>
     tangential_tractions(const PointVector &x) const;
 
-    /** The pressure field sum_i p_i psi_i at the points, one vector per
-     * pair, as -normal_stresses() but with the hat functions also for dual
-     * multipliers: what the reports show. */
+    /** The field @p factor sum_i x_i psi_i of the first size() values of
+     * @p x at the points, one vector per pair: with the hat functions also
+     * for dual multipliers, what the reports show (factor -1 for the
+     * normal stress of a pressure). */
     std::vector<std::vector<double>>
-    pressure_field(const PointVector &p) const;
+    reported_field(const PointVector &x, double factor = 1.) const;
 
     /** The largest value of @p p on every pair (the peak of the piecewise
      * linear pressure of the nodes, which the points between them miss; 0
