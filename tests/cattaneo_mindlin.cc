@@ -178,7 +178,7 @@ namespace
     std::vector<double> x, deficit;
     double              extent = 0;
     for (unsigned int q = 0; q < pts.size(); ++q)
-      if (state.slip_state[q] == ContactLaw::SlipState::stick)
+      if (state.slip_state[q] == NodeState::stick)
       {
         x.push_back(pts[q].x[0]);
         deficit.push_back(mu * -state.sigma_n[q] - std::abs(state.t[q]));
@@ -302,8 +302,8 @@ main(int argc, char **argv)
     unsigned int n_contact = 0, n_stick = 0;
     for (const auto s : state.slip_state)
     {
-      n_contact += (s != ContactLaw::SlipState::open);
-      n_stick += (s == ContactLaw::SlipState::stick);
+      n_contact += (s != NodeState::open);
+      n_stick += (s == NodeState::stick);
     }
     // The points of the outermost face at each end: the pressure falls to
     // zero there, and the bound mu p with it; a node that enters contact

@@ -110,9 +110,8 @@ namespace
       bound_excess   = std::max(bound_excess, (std::abs(t) - b) / b);
       against_t =
         std::max(against_t, -t * state.slip_increment[q] / std::abs(S * k.U));
-      states = states &&
-               state.slip_state[q] == (k.sticks ? ContactLaw::SlipState::stick
-                                                : ContactLaw::SlipState::slip);
+      states = states && state.slip_state[q] ==
+                           (k.sticks ? NodeState::stick : NodeState::slip);
     }
     std::cout << name << ": P = " << P << ", t = " << S << ", slip " << slip
               << "; largest relative errors: p " << p_error << ", t " << t_error
@@ -207,7 +206,7 @@ namespace
     {
       increment  = std::max(increment, std::abs(state.slip_increment[q]));
       slip_error = std::max(slip_error, relative(state.slip[q], s2));
-      sticks = sticks && state.slip_state[q] == ContactLaw::SlipState::stick;
+      sticks     = sticks && state.slip_state[q] == NodeState::stick;
     }
     check(sticks, path + ", step 3: every point sticks");
     check(path + ", step 3: no slip increment", increment / U1, 1e-9);

@@ -58,7 +58,7 @@ namespace
           result.deviation,
           std::abs(std::abs(state.t[q]) + result.ratio * state.sigma_n[q]) /
             peak);
-        if (state.slip_state[q] == ContactLaw::SlipState::slip)
+        if (state.slip_state[q] == NodeState::slip)
           ++result.n_slipping;
       }
     return result;

@@ -261,9 +261,8 @@ namespace ddcontact
         state.tangential_force -= friction.t[q] * pair.points()[q].JxW;
       state.stick_half_width =
         half_extent(pair,
-                    [&](const unsigned int q) {
-                      return friction.state[q] == ContactLaw::SlipState::stick;
-                    });
+                    [&](const unsigned int q)
+                    { return friction.state[q] == NodeState::stick; });
     }
     for (unsigned int q = 0; q < state.sigma_n.size(); ++q)
     {

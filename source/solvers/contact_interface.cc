@@ -29,8 +29,7 @@ namespace ddcontact
     thetas.clear();
     scales.clear();
     references.clear();
-    bounds.clear();
-    laws.clear();
+    nodal_law.clear();
     points.clear();
     point_shares.clear();
     const auto &pairs = problem.get_pairs();
@@ -68,8 +67,7 @@ namespace ddcontact
         thetas.push_back(theta);
         scales.push_back(m * c);
         references.push_back(reference);
-        bounds.push_back(bound);
-        laws.push_back(pairs[k]->friction_law());
+        nodal_law.add_node(pairs[k]->friction_law(), bound);
       }
     }
   }

@@ -198,26 +198,6 @@ namespace ddcontact
     return entries;
   }
 
-  std::string
-  ContactSolver::tresca_lift_off_note() const
-  {
-    std::string pairs;
-    for (const auto *pair : problem.get_pairs())
-      if (pair->friction_law() == FrictionLaw::tresca)
-        pairs += (pairs.empty() ? "Contact pair " : ", ") + pair->name();
-    if (pairs.empty())
-      return "";
-    return ". With Tresca friction (" + pairs +
-           ") the slip bound g holds where the bodies touch and drops to 0 "
-           "where a node opens: where the tangential traction g itself lifts "
-           "nodes off (a large g against the pressure, bodies of different "
-           "materials), no state of such a node is consistent (slipping it "
-           "opens, open it penetrates) and the active set cycles between "
-           "open and slip, which more Newton steps do not cure; Coulomb's "
-           "bound mu p vanishes with the pressure (Friction = coulomb), or "
-           "a smaller Friction bound keeps the zone closed";
-  }
-
   void
   ContactSolver::reinit_after_refinement()
   {

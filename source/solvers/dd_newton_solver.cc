@@ -282,101 +282,76 @@ namespace ddcontact
     PointVector        F(x.size());
     const unsigned int n = interface.size();
     for (unsigned int q = 0; q < n; ++q)
-    {
-      const double theta = interface.penalty(q);
-      F[q]               = std::min(interface.complementarity_scale(q) * x[q],
-                      theta * x[q] - (d_0[q] - Sx[q] + Gx[q]));
-    }
+      F[q] = NodalContactLaw::normal_residual(trial(q, x, Sx, Gx));
     // Friction: c (t - the trial traction cut to the bound) at the closed
     // nodes, c t at the others (as MonolithicContactSolver's residual).
     for (unsigned int q = n; q < x.size(); ++q)
-    {
-      const unsigned int i = q - n;
-      double             t = x[q];
-      if (interface.friction_law(i) != FrictionLaw::none &&
-          closed(i, x, Sx, Gx))
-      {
-        const auto [trial, bound] = trial_traction(i, x, Sx, Gx);
-        t -= std::clamp(trial, -bound, bound);
-      }
-      F[q] = interface.complementarity_scale(q) * t;
-    }
+      F[q] =
+        interface.complementarity_scale(q) *
+        interface.law().tangential_residual(q - n, trial(q - n, x, Sx, Gx));
     return F;
   }
 
-  bool
-  DDNewtonSolver::closed(const unsigned int i,
-                         const PointVector &x,
-                         const PointVector &Sx,
-                         const PointVector &Gx) const
+  NodalContactLaw::Trial
+  DDNewtonSolver::trial(const unsigned int i,
+                        const PointVector &x,
+                        const PointVector &Sx,
+                        const PointVector &Gx) const
   {
-    const double d = d_0[i] - Sx[i] + Gx[i];
-    return d + (interface.complementarity_scale(i) - interface.penalty(i)) *
-                 x[i] >
-           0;
-  }
-
-  std::pair<double, double>
-  DDNewtonSolver::trial_traction(const unsigned int i,
-                                 const PointVector &x,
-                                 const PointVector &Sx,
-                                 const PointVector &Gx) const
-  {
-    // d_0 holds s_0 - s_old + theta t_old at the tangential unknown j, so
-    // that d_0,j - (S x)_j - theta t_j = ds - theta (t - t_old).
-    const unsigned int j = interface.size() + i;
-    const double trial = x[j] + (d_0[j] - Sx[j] - interface.penalty(j) * x[j]) /
-                                  interface.complementarity_scale(j);
-    double bound = interface.friction_bound(i);
-    if (interface.friction_law(i) == FrictionLaw::coulomb)
+    NodalContactLaw::Trial v;
+    v.p     = x[i];
+    v.d     = d_0[i] - Sx[i] + Gx[i];
+    v.theta = interface.penalty(i);
+    v.c     = interface.complementarity_scale(i);
+    if (interface.has_friction())
     {
-      const double d = d_0[i] - Sx[i] + Gx[i];
-      bound *= std::max(0.,
-                        x[i] + (d - interface.penalty(i) * x[i]) /
-                                 interface.complementarity_scale(i));
+      // d_0 holds s_0 - s_old + theta t_old at the tangential unknown j,
+      // so that d_0,j - (S x)_j - theta t_j = ds - theta (t - t_old).
+      const unsigned int j = interface.size() + i;
+      v.t                  = x[j];
+      v.r                  = d_0[j] - Sx[j] - interface.penalty(j) * x[j];
+      v.c_t                = interface.complementarity_scale(j);
     }
-    return {trial, bound};
+    return v;
   }
 
   std::vector<bool>
   DDNewtonSolver::active_set(unsigned int &n_changed, const bool stick)
   {
     // The active set of the semismooth Newton step on min(c p, lambda):
-    // lambda < c p, i.e. d(p) + (c - theta) p > 0.
-    const unsigned int n = interface.size();
-    std::vector<bool>  active(p.size(), false);
-    PointVector        d(n);
-    for (unsigned int q = 0; q < n; ++q)
-    {
-      d[q]      = d_0[q] - Sp[q] + Ga[q];
-      active[q] = closed(q, p, Sp, Ga);
-    }
-    // Friction: a closed node sticks while its trial traction is within
-    // the bound, else it slips with t = sigma b. With @p stick, it keeps
-    // its state of the last load step (slipping the same way), or sticks.
-    slip_values.assign(interface.has_friction() ? n : 0, 0.);
+    // lambda < c p, i.e. d(p) + (c - theta) p > 0; with friction the
+    // sticking nodes' tangentials, and on the slipping ones
+    // t = value + coupling p. With @p stick, a closed node keeps its state
+    // of the last load step (slipping the same way), or sticks.
+    const unsigned int n        = interface.size();
+    const auto        &law      = interface.law();
+    const bool         friction = interface.has_friction();
+    const bool last_step = step_slip_directions.size() == (friction ? n : 0);
+    const bool linearise =
+      !stick && parameters.dd_newton.coulomb == CoulombLinearization::newton;
+    std::vector<bool> active(p.size(), false);
+    PointVector       d(n);
+    slip_values.assign(friction ? n : 0, 0.);
     slip_coupling.assign(slip_values.size(), 0.);
     slip_directions.assign(slip_values.size(), 0);
-    const bool last_step = step_slip_directions.size() == slip_values.size();
-    for (unsigned int i = 0; i < slip_values.size(); ++i)
-      if (active[i] && interface.friction_law(i) != FrictionLaw::none)
-      {
-        const auto [trial, bound] = trial_traction(i, p, Sp, Ga);
-        const double direction    = !stick      ? trial
-                                    : last_step ? step_slip_directions[i]
-                                                : 0.;
-        if (direction == 0 || (!stick && std::abs(trial) <= bound))
-          active[n + i] = true;
-        else
-        {
-          slip_directions[i] = direction > 0 ? 1 : -1;
-          slip_values[i]     = slip_directions[i] * bound;
-          // Coulomb linearization = newton: t = sigma mu p in the step.
-          if (!stick && interface.friction_law(i) == FrictionLaw::coulomb &&
-              parameters.dd_newton.coulomb == CoulombLinearization::newton)
-            slip_coupling[i] = slip_directions[i] * interface.friction_bound(i);
-        }
-      }
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      const auto x = trial(i, p, Sp, Ga);
+      d[i]         = x.d;
+      const NodeStatus status =
+        !stick ? law.status(i, x)
+               : law.prescribed_status(
+                   i, x, last_step && friction ? step_slip_directions[i] : 0);
+      active[i] = status.closed();
+      if (!friction)
+        continue;
+      active[n + i]      = status.state == NodeState::stick;
+      slip_directions[i] = status.direction;
+      const auto slip =
+        law.slip_equation(i, status, law.bound(i, x), linearise);
+      slip_values[i]   = slip.value;
+      slip_coupling[i] = slip.coupling;
+    }
     // Floating bodies need active unknowns that hold their rigid modes:
     // add those nearest to contact (largest d) until they do.
     forced.assign(p.size(), false);
@@ -959,7 +934,8 @@ namespace ddcontact
            "Contact solver/Max iterations";
       throw NotConvergedError(s.str());
     }
-    if (const std::string tresca = tresca_lift_off_note(); !tresca.empty())
+    if (const std::string tresca = tresca_lift_off_note(problem.get_pairs());
+        !tresca.empty())
     {
       s << ": the active set does not settle" << tresca;
       throw DivergenceError(s.str());

@@ -139,15 +139,14 @@ namespace ddcontact
           result.nodal_t.push_back(t[i]);
           result.nodal_slip_increment.push_back(ds);
           result.nodal_bound.push_back(
-            interface.friction_bound(i) *
-            (interface.friction_law(i) == FrictionLaw::tresca ? 1. : p[i]));
+            interface.law().converged_bound(i, p[i]));
         }
       for (unsigned int q = 0; q < pair.points().size(); ++q)
       {
         result.t.push_back(field_t[k][q]);
-        result.state.push_back(sigma_n[k][q] == 0. ? ContactLaw::SlipState::open
-                               : sticks[k][q] ? ContactLaw::SlipState::stick
-                                              : ContactLaw::SlipState::slip);
+        result.state.push_back(sigma_n[k][q] == 0. ? NodeState::open
+                               : sticks[k][q]      ? NodeState::stick
+                                                   : NodeState::slip);
       }
       last_point_slips[k] = result.slip;
       last_dissipation[k] = result.dissipation;

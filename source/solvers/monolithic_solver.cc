@@ -151,12 +151,6 @@ namespace ddcontact
       d.weight = interface.weight(i);
       d.theta  = interface.penalty(i);
       d.scale  = interface.complementarity_scale(i);
-      // The friction law and its bound g_i or mu_i, averaged like d.
-      if (friction)
-      {
-        d.law   = interface.friction_law(i);
-        d.bound = interface.friction_bound(i);
-      }
       // The normal (v) and, with friction, tangential (w) coefficient of
       // a dof.
       const auto add =
@@ -239,50 +233,46 @@ namespace ddcontact
     return p;
   }
 
-  std::pair<double, double>
-  MonolithicContactSolver::trial_traction(const unsigned int    i,
-                                          const Vector<double> &u,
-                                          const PointVector    &p) const
+  NodalContactLaw::Trial
+  MonolithicContactSolver::trial(const unsigned int    i,
+                                 const Vector<double> &u,
+                                 const PointVector    &p) const
   {
-    const auto  &d = penetrations[i];
-    const double t = p[penetrations.size() + i];
-    // t + (ds - theta (t - t_old)) / c: the traction that the slip
-    // increment would add beyond the law's elastic slip.
-    const double trial =
-      t + (d.slip(u) - d.s_old - d.theta * (t - d.t_old)) / d.scale;
-    const double bound =
-      d.law == FrictionLaw::tresca
-        ? d.bound
-        : d.bound * std::max(0., p[i] + (d(u) - d.theta * p[i]) / d.scale);
-    return {trial, bound};
+    const auto            &d = penetrations[i];
+    NodalContactLaw::Trial x;
+    x.p     = p[i];
+    x.d     = d(u);
+    x.theta = d.theta;
+    x.c     = d.scale;
+    if (friction)
+    {
+      // r = ds - theta (t - t_old): the slip increment beyond the law's
+      // elastic slip.
+      x.t   = p[penetrations.size() + i];
+      x.r   = d.slip(u) - d.s_old - d.theta * (x.t - d.t_old);
+      x.c_t = d.scale;
+    }
+    return x;
   }
 
-  std::vector<MonolithicContactSolver::NodeState>
+  std::vector<NodeStatus>
   MonolithicContactSolver::active_set(const Vector<double> &u,
                                       const PointVector    &p,
                                       const bool            stick) const
   {
-    std::vector<NodeState> active(penetrations.size(), open);
+    const auto             &law = interface.law();
+    std::vector<NodeStatus> active(penetrations.size());
     for (unsigned int i = 0; i < active.size(); ++i)
-    {
-      const auto &d = penetrations[i];
-      if (!d.closed(u, p[i]))
-        continue;
-      active[i] = closed;
-      if (d.law == FrictionLaw::none || stick)
-        continue;
-      const auto [trial, bound] = trial_traction(i, u, p);
-      if (std::abs(trial) > bound)
-        active[i] = trial > 0 ? slip_forward : slip_backward;
-    }
+      active[i] = stick ? law.prescribed_status(i, trial(i, u, p), 0)
+                        : law.status(i, trial(i, u, p));
     return active;
   }
 
   void
   MonolithicContactSolver::solve_linearised(
-    const std::vector<NodeState> &active,
-    Vector<double>               &u,
-    PointVector                  &p) const
+    const std::vector<NodeStatus> &active,
+    Vector<double>                &u,
+    PointVector                   &p) const
   {
     const auto          &bodies = problem.get_bodies();
     const auto           n      = offset.back();
@@ -312,7 +302,7 @@ namespace ddcontact
         const unsigned int size = friction ? k + 2 : k + 1;
         FullMatrix<double> local_matrix(size, size);
         Vector<double>     local_rhs(size);
-        if (active[i] != open)
+        if (active[i].closed())
         {
           for (unsigned int j = 0; j < k; ++j)
             local_matrix(j, k) = local_matrix(k, j) = d.weight * d.g[j];
@@ -330,7 +320,7 @@ namespace ddcontact
           dofs.push_back(n + n_t + i);
           for (unsigned int j = 0; j < d.h.size(); ++j)
             local_matrix(j, kt) = d.weight * d.h[j];
-          if (active[i] == closed && d.law != FrictionLaw::none)
+          if (active[i].state == NodeState::stick)
           {
             for (unsigned int j = 0; j < d.h.size(); ++j)
               local_matrix(kt, j) = d.weight * d.h[j];
@@ -339,20 +329,18 @@ namespace ddcontact
           }
           else
           {
+            // t = value + coupling p (Coulomb linearised: t = sigma mu p).
+            const auto slip = interface.law().slip_equation(
+              i, active[i], interface.law().bound(i, trial(i, u, p)), true);
             local_matrix(kt, kt) = 1;
-            const double sigma   = active[i] == slip_forward    ? 1.
-                                   : active[i] == slip_backward ? -1.
-                                                                : 0.;
-            if (d.law == FrictionLaw::tresca)
-              local_rhs(kt) = sigma * d.bound;
-            else
-              local_matrix(kt, k) = -sigma * d.bound;
+            local_matrix(kt, k)  = -slip.coupling;
+            local_rhs(kt)        = slip.value;
           }
         }
         constraints.distribute_local_to_global(
           local_matrix, local_rhs, dofs, matrix, rhs);
       }
-      else if (active[i] != open)
+      else if (active[i].closed())
       {
         // (m/theta) g g^T and (m/theta) f g (f shifted by theta lambda).
         FullMatrix<double> local_matrix(k, k);
@@ -403,6 +391,7 @@ namespace ddcontact
     for (unsigned int i = 0; i < penetrations.size(); ++i)
     {
       const auto    &d = penetrations[i];
+      const auto     x = trial(i, u, p);
       Vector<double> local(d.g.size());
       for (unsigned int j = 0; j < d.g.size(); ++j)
         local(j) = d.weight * p[i] * d.g[j];
@@ -410,21 +399,15 @@ namespace ddcontact
       // to the bound (0 where the node is open).
       if (friction)
       {
-        const double t = p[penetrations.size() + i];
         for (unsigned int j = 0; j < d.h.size(); ++j)
-          local(j) += d.weight * t * d.h[j];
-        double law = t;
-        if (d.closed(u, p[i]) && d.law != FrictionLaw::none)
-        {
-          const auto [trial, bound] = trial_traction(i, u, p);
-          law                       = t - std::clamp(trial, -bound, bound);
-        }
+          local(j) += d.weight * x.t * d.h[j];
+        const double law = interface.law().tangential_residual(i, x);
         sum += d.weight * law * d.weight * law;
       }
       constraints.distribute_local_to_global(local, d.dofs, r);
-      // The law, as a nodal force: m min(p, (theta p - d) / c).
+      // The normal law, as a nodal force: (m / c) min(c p, theta p - d).
       const double law =
-        d.weight * std::min(p[i], (d.theta * p[i] - d(u)) / d.scale);
+        d.weight * NodalContactLaw::normal_residual(x) / d.scale;
       sum += law * law;
     }
     constraints.set_zero(r);
@@ -476,22 +459,25 @@ namespace ddcontact
 
     // The active sets met so far: one met again without settling is a
     // cycle, and damping starts.
-    std::vector<std::vector<NodeState>> seen;
-    bool                                full_step = false, damped = false;
-    const std::string                   what =
+    std::vector<std::vector<NodeStatus>> seen;
+    bool                                 full_step = false, damped = false;
+    const std::string                    what =
       on_nodes ? " active nodes" : " active contact points";
     unsigned int iteration = 0;
     for (; iteration < max_iterations; ++iteration)
     {
       const auto active = active_set(u, p, iteration == 0);
       pcout << "  Newton " << iteration << ": "
-            << active.size() - std::count(active.begin(), active.end(), open)
+            << std::count_if(active.begin(),
+                             active.end(),
+                             [](const NodeStatus &s) { return s.closed(); })
             << what;
       if (friction)
         pcout << " ("
-              << active.size() -
-                   std::count(active.begin(), active.end(), open) -
-                   std::count(active.begin(), active.end(), closed)
+              << std::count_if(active.begin(),
+                               active.end(),
+                               [](const NodeStatus &s)
+                               { return s.direction != 0; })
               << " slipping)";
       pcout << std::endl;
       // Settled: (u, p) solves the linear system of its own active set.
@@ -532,7 +518,7 @@ namespace ddcontact
     const std::string unsettled =
       "the monolithic Newton solver did not settle its active set in " +
       std::to_string(max_iterations) + " iterations";
-    const std::string tresca = tresca_lift_off_note();
+    const std::string tresca = tresca_lift_off_note(problem.get_pairs());
     // No active set met twice: still moving, stopped by the limit alone
     // (with Tresca, more likely nodes lifted off by g: tresca says so).
     if (iteration == max_iterations && !damped)
@@ -581,9 +567,8 @@ namespace ddcontact
     const auto        states = active_set(u, p);
     for (unsigned int i = 0; i < n_nodes; ++i)
     {
-      slips[i] = penetrations[i].slip(u);
-      sticking[i] =
-        states[i] == closed && penetrations[i].law != FrictionLaw::none;
+      slips[i]    = penetrations[i].slip(u);
+      sticking[i] = states[i].state == NodeState::stick;
     }
     history.publish(problem,
                     interface,

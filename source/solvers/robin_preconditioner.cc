@@ -155,7 +155,7 @@ namespace ddcontact
     for (unsigned int i = 0; i < interface->n_unknowns(); ++i)
     {
       if (interface->is_tangential(i) &&
-          interface->friction_law(interface->node(i)) == FrictionLaw::none)
+          !interface->law().frictional(interface->node(i)))
         continue;
       const unsigned int k    = interface->shares(i)[0].pair;
       const auto        &pair = *pairs[k];

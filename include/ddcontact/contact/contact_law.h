@@ -4,6 +4,7 @@
 #include <deal.II/base/point.h>
 
 #include <ddcontact/contact/contact_pair.h>
+#include <ddcontact/contact/nodal_contact_law.h>
 
 #include <algorithm>
 #include <vector>
@@ -125,14 +126,6 @@ namespace ddcontact
       return peak;
     }
 
-    /** Where a point is in the frictional law (Contact pair/Friction). */
-    enum class SlipState
-    {
-      open  = 0, // no pressure
-      stick = 1, // |t| below the slip bound, no slip
-      slip  = 2  // |t| at the bound, slipping along t
-    };
-
     /** The solver's frictional result at every point: the tangential
      * traction t (the traction -t tau on body 1, see ContactPoint), the
      * slip increment of the load step, the slip since the start, and the
@@ -141,7 +134,7 @@ namespace ddcontact
     struct Friction
     {
       std::vector<double>    t, slip_increment, slip;
-      std::vector<SlipState> state;
+      std::vector<NodeState> state; // open, stick or slip
       double                 dissipation = 0;
       /** The law holds node by node for the averaged slip (doc/friction.md,
        * section 3): the multipliers t_i, the averaged slip increments

@@ -35,11 +35,11 @@ namespace ddcontact
     // each point's tau (included in force_1; the integral of -t), the
     // half-width of the stick zone (by arc length) and the
     // energy dissipated in the load step.
-    std::vector<double>                t, slip_increment, slip;
-    std::vector<ContactLaw::SlipState> slip_state;
-    double                             tangential_force = 0;
-    double                             stick_half_width = 0;
-    double                             dissipation      = 0;
+    std::vector<double>    t, slip_increment, slip;
+    std::vector<NodeState> slip_state;
+    double                 tangential_force = 0;
+    double                 stick_half_width = 0;
+    double                 dissipation      = 0;
   };
 
   /**

@@ -4,6 +4,7 @@
 #include <deal.II/base/point.h>
 
 #include <ddcontact/contact/contact_problem.h>
+#include <ddcontact/contact/nodal_contact_law.h>
 
 #include <vector>
 
@@ -142,20 +143,13 @@ namespace ddcontact
       return is_tangential(q) ? q - size() : q;
     }
 
-    /** The friction law of the pair of node @p i (none without
-     * friction). */
-    FrictionLaw
-    friction_law(const unsigned int i) const
+    /** The contact law of the nodes: the friction law of each node's pair
+     * and its slip bound g_i (Tresca) or coefficient mu_i (Coulomb),
+     * averaged like the gap: (1/m_i) sum_q w_q psi_i(x_q) g(x_q). */
+    const NodalContactLaw &
+    law() const
     {
-      return laws[i];
-    }
-
-    /** The slip bound g_i (Tresca) or coefficient mu_i (Coulomb) of node
-     * @p i, averaged like the gap: (1/m_i) sum_q w_q psi_i(x_q) g(x_q). */
-    double
-    friction_bound(const unsigned int i) const
-    {
-      return bounds[i];
+      return nodal_law;
     }
 
     /** Whether the unknowns are the nodal multipliers of exact contact. */
@@ -358,8 +352,7 @@ namespace ddcontact
     const ContactProblem                &problem;
     const bool                           nodal, exact, tangential, dual;
     PointVector                          weights, thetas, scales, references;
-    PointVector                          bounds; // per node, friction_bound()
-    std::vector<FrictionLaw>             laws;   // per node
+    NodalContactLaw                      nodal_law;
     std::vector<double>                  reference_lengths; // per pair
     double                               continuation = 0;
     std::vector<Point<2>>                points;

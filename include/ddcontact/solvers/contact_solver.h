@@ -323,12 +323,6 @@ namespace ddcontact
     std::string
     penalty_entries() const;
 
-    /** For a message on an active set that does not settle: with a Tresca
-     * pair, why lift-off under the tangential traction cycles (empty
-     * without Tresca). */
-    std::string
-    tresca_lift_off_note() const;
-
     const ContactSolverParameters parameters;
     ContactProblem                problem;
     UzawaLoop                     uzawa;

@@ -223,22 +223,15 @@ namespace ddcontact
     std::vector<bool>
     active_set(unsigned int &n_changed, bool stick = false);
 
-    /** Whether node @p i is in contact at (@p x, @p Sx, @p Gx):
-     * d_i + (c_i - theta_i) x_i > 0. */
-    bool
-    closed(unsigned int       i,
-           const PointVector &x,
-           const PointVector &Sx,
-           const PointVector &Gx) const;
-
-    /** The trial traction t_i + (ds_i - theta_i (t_i - t_i,old)) / c_i of
-     * node @p i at (@p x, @p Sx, @p Gx), and its slip bound: g_i, or mu_i
-     * times the trial pressure x_i + (d_i - theta_i x_i) / c_i. */
-    std::pair<double, double>
-    trial_traction(unsigned int       i,
-                   const PointVector &x,
-                   const PointVector &Sx,
-                   const PointVector &Gx) const;
+    /** The trial values of node @p i at (@p x, @p Sx, @p Gx) for the
+     * law (ContactInterface::law()): the penetration d_i = d_0,i - (S x)_i
+     * + (G x)_i and, with friction, the slip increment beyond the
+     * penalty's ds_i - theta_i (t_i - t_i,old). */
+    NodalContactLaw::Trial
+    trial(unsigned int       i,
+          const PointVector &x,
+          const PointVector &Sx,
+          const PointVector &Gx) const;
 
     /** For floating bodies: the amplitudes alpha that fit the gaps where
      * the pressure is positive, for the pressure of another mesh or

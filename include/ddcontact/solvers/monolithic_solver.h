@@ -152,9 +152,8 @@ namespace ddcontact
     }
 
     /** One term of J_theta: d = sum_j g[j] u(dofs[j]) - f (global dofs);
-     * with friction the slip s = sum_j h[j] u(dofs[j]) on the same dofs,
-     * its law, the bound g_i or coefficient mu_i (averaged like d), and
-     * the slip and traction at the start of the load step. */
+     * with friction the slip s = sum_j h[j] u(dofs[j]) on the same dofs
+     * and the slip and traction at the start of the load step. */
     struct Penetration
     {
       std::vector<types::global_dof_index> dofs;
@@ -163,8 +162,6 @@ namespace ddcontact
       double                               weight = 0; // m_i
       double                               theta  = 0;
       double                               scale  = 0; // c_i
-      FrictionLaw                          law    = FrictionLaw::none;
-      double                               bound  = 0; // g_i or mu_i
       double                               s_old = 0, t_old = 0;
 
       double
@@ -172,24 +169,6 @@ namespace ddcontact
 
       double
       slip(const Vector<double> &u) const;
-
-      /** Whether the node is in contact at (@p u, @p p): d + (c - theta) p
-       * > 0, the active set of the normal law. */
-      bool
-      closed(const Vector<double> &u, const double p) const
-      {
-        return (*this)(u) + (scale - theta) * p > 0;
-      }
-    };
-
-    /** The state of a node in the Newton step: no contact, contact
-     * (frictionless, or sticking), or slipping along +tau or -tau. */
-    enum NodeState : unsigned char
-    {
-      open,
-      closed,
-      slip_forward,
-      slip_backward
     };
 
     /** The bodies' constraints in the global numbering, and the offsets. */
@@ -209,30 +188,27 @@ namespace ddcontact
     PointVector
     penalty_pressure(const Vector<double> &u) const;
 
-    /** closed where d_i + (c_i - theta_i) p_i > 0, else open; with
-     * friction closed nodes whose trial traction exceeds the bound slip
-     * (see the class), or, with @p stick, all stick (the first step,
-     * whose u and t are no Newton iterate: sticking, the zone finds the
-     * direction of every slip from its traction). @p p holds the pressures
-     * and, with friction, the tangential tractions after them. */
-    std::vector<NodeState>
+    /** The states of the nodes at (@p u, @p p) in the law
+     * (ContactInterface::law()), or, with @p stick, all closed nodes
+     * sticking (the first step, whose u and t are no Newton iterate:
+     * sticking, the zone finds the direction of every slip from its
+     * traction). @p p holds the pressures and, with friction, the
+     * tangential tractions after them. */
+    std::vector<NodeStatus>
     active_set(const Vector<double> &u,
                const PointVector    &p,
                bool                  stick = false) const;
 
-    /** The trial traction of node @p i and its slip bound (see the
-     * class). */
-    std::pair<double, double>
-    trial_traction(unsigned int          i,
-                   const Vector<double> &u,
-                   const PointVector    &p) const;
+    /** The trial values of node @p i at (@p u, @p p) for the law. */
+    NodalContactLaw::Trial
+    trial(unsigned int i, const Vector<double> &u, const PointVector &p) const;
 
     /** One Newton step on the states @p active: the new @p u and, on
      * the nodes, @p p. */
     void
-    solve_linearised(const std::vector<NodeState> &active,
-                     Vector<double>               &u,
-                     PointVector                  &p) const;
+    solve_linearised(const std::vector<NodeStatus> &active,
+                     Vector<double>                &u,
+                     PointVector                   &p) const;
 
     /** The Euclidean norm of the Newton residual of (@p u, @p p). */
     double
