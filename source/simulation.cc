@@ -235,12 +235,12 @@ namespace ddcontact
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
       return;
     const std::string summary = parameters.output_directory + "/summary.json";
-    write_json_file(report.progress_summary("running", ""), summary);
+    write_json_file(report.progress_summary(RunOutcome::running, ""), summary);
     std::array<std::string, 2> texts;
     for (const unsigned int s : {0u, 1u})
       texts[s] =
         report
-          .progress_summary("interrupted",
+          .progress_summary(RunOutcome::interrupted,
                             std::string(s == 0 ? "SIGINT" : "SIGTERM") +
                               " received: the run stopped in " + step + ", " +
                               (what.empty() ? "before any step "
@@ -273,7 +273,7 @@ namespace ddcontact
   }
 
   void
-  Simulation::write_failed_run(const std::string &status,
+  Simulation::write_failed_run(const RunOutcome   outcome,
                                const std::string &error)
   {
     report.write_history(contact_solver->history());
@@ -289,7 +289,7 @@ namespace ddcontact
       pcout << "  the last iterate could not be written: " << e.what()
             << std::endl;
     }
-    report.write_summary(results(), status, error);
+    report.write_summary(results(), outcome, error);
   }
 
   template <typename Steps>
@@ -359,7 +359,23 @@ namespace ddcontact
       report.open_statistics(bodies);
     record_progress("");
     run_load_steps();
-    report.write_final(results());
+    // The outcome the run earned: "converged" only if the Uzawa loop met
+    // its tolerance too; a Target error that the adaptation stopped above
+    // is a shortfall of the run (exit code 5). Written, then thrown.
+    const std::string stalled =
+      contact_solver ? contact_solver->augmented_lagrangian_shortfall() : "";
+    const std::string missed =
+      adaptation ? report.target_shortfall(results()) : "";
+    const RunOutcome outcome = !stalled.empty() ? RunOutcome::stalled
+                               : !missed.empty()
+                                 ? RunOutcome::target_not_reached
+                               : contact_solver ? RunOutcome::converged
+                                                : RunOutcome::completed;
+    report.write_final(results(), outcome);
+    if (outcome == RunOutcome::stalled)
+      throw DivergenceError(stalled);
+    if (outcome == RunOutcome::target_not_reached)
+      throw TargetNotReachedError(missed);
 
     timer.print_summary();
     pcout << "wall time " << std::fixed << std::setprecision(2)
@@ -377,17 +393,17 @@ namespace ddcontact
     {
       if (contact_solver)
         write_failed_run(dynamic_cast<const NotConvergedError *>(&error)
-                           ? "not_converged"
-                           : "diverged");
+                           ? RunOutcome::not_converged
+                           : RunOutcome::diverged);
       throw;
     }
     catch (const InterruptedError &error)
     {
       // The history so far, the last iterate and summary.json "interrupted".
       if (contact_solver)
-        write_failed_run("interrupted", error.what());
+        write_failed_run(RunOutcome::interrupted, error.what());
       else
-        report.write_summary(results(), "interrupted", error.what());
+        report.write_summary(results(), RunOutcome::interrupted, error.what());
       throw;
     }
   }

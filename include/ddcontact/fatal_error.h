@@ -11,7 +11,7 @@ namespace ddcontact
 {
   /**
    * The end of a run that failed: the exit code of the error (exit_codes,
-   * README "Exit codes") and its message, printed once.
+   * doc/running.md "Exit codes") and its message, printed once.
    *
    * Under MPI an error may be met by every process (a parameter file, a
    * contact iteration that stopped: the decision follows a reduction) or

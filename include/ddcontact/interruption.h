@@ -9,7 +9,7 @@
 
 namespace ddcontact
 {
-  /** The exit codes of the executable (README, doc/reliability.md). */
+  /** The exit codes of the executable (doc/running.md, doc/reliability.md). */
   namespace exit_codes
   {
     constexpr int success            = 0;

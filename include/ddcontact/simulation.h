@@ -209,13 +209,13 @@ namespace ddcontact
 
     /** After a DivergenceError or an interruption: history.csv, the
      * contact profiles, the VTU/PVD of the last iterate (if Output/Write
-     * vtu) and summary.json with @p status ("diverged", "not_converged",
-     * "interrupted") and the @p error that ended the run. (Any other
+     * vtu) and summary.json with @p outcome (diverged, not_converged,
+     * interrupted) and the @p error that ended the run. (Any other
      * error may come in the middle of a refinement, where the state is
      * not whole: main() then records it in the last progress summary,
      * RunRecord::close_after_error().) */
     void
-    write_failed_run(const std::string &status, const std::string &error = "");
+    write_failed_run(RunOutcome outcome, const std::string &error = "");
 
     const SceneParameters parameters;
     ConditionalOStream    pcout;

@@ -85,7 +85,7 @@ namespace ddcontact
         return s.str();
       }
       s << "an error of the penalty that mesh refinement does not remove; ";
-      if (parameters.contact_solver.augmented_lagrangian)
+      if (parameters.contact_solver.exact_formulation)
         s << "lower Contact solver/Uzawa/Tolerance or raise its Max updates";
       else
         s << "for exact contact set Contact pair " << pair
@@ -658,17 +658,7 @@ namespace ddcontact
     json["target_reached"] =
       (target > 0 && estimate >= 0) ? Json(estimate <= target) : Json();
     if (target > 0 && estimate > target)
-    {
-      std::ostringstream s;
-      s << "Adaptation/Target error " << target
-        << " not reached: the estimated relative energy-norm error is "
-        << estimate << " after " << results.n_adaptation_steps
-        << " refinement cycles, and "
-        << (results.adaptation_stop.empty() ? "the refinement stopped"
-                                            : results.adaptation_stop)
-        << "; raise the cap that stopped it, or set a larger Target error";
-      json["warnings"].push_back(s.str());
-    }
+      json["warnings"].push_back(target_shortfall(results));
     if (!results.adaptation_stop.empty())
       json["adaptation_stopped_by"] = results.adaptation_stop;
   }
@@ -701,13 +691,13 @@ namespace ddcontact
   }
 
   Json
-  RunReport::progress_summary(const std::string &status,
+  RunReport::progress_summary(const RunOutcome   outcome,
                               const std::string &error) const
   {
     Json json;
     json["scene"]         = parameters.scene_name;
     json["code_revision"] = git_revision();
-    json["status"]        = status;
+    json["status"]        = status_name(outcome);
     json["last_completed_step"] =
       last_completed_step.empty() ? Json() : Json(last_completed_step);
     if (!error.empty())
@@ -723,13 +713,13 @@ namespace ddcontact
 
   void
   RunReport::write_summary(const Results     &results,
-                           const std::string &status,
+                           const RunOutcome   outcome,
                            const std::string &error)
   {
     Json json;
     json["scene"]         = parameters.scene_name;
     json["code_revision"] = git_revision();
-    json["status"]        = status;
+    json["status"]        = status_name(outcome);
     if (!error.empty())
       json["error"] = error;
     json["last_completed_step"] =
@@ -768,10 +758,7 @@ namespace ddcontact
     // The penetration is judged only where the contact iteration converged
     // (also "stalled": the DD converged, the Uzawa loop did not).
     if (!results.contact_pairs.empty())
-      add_contact(results,
-                  status == "converged" || status == "stalled" ||
-                    status == "target_not_reached",
-                  json);
+      add_contact(results, contact_converged(outcome), json);
     if (parameters.adaptation.enabled())
       add_adaptation(results, json);
     json["wall_time_s"] = wall_clock.wall_time();
@@ -792,36 +779,36 @@ namespace ddcontact
       write_json_file(json, parameters.output_directory + "/summary.json");
   }
 
-  void
-  RunReport::write_final(const Results &results)
+  std::string
+  RunReport::target_shortfall(const Results &results) const
   {
-    std::string status = "completed", shortfall;
+    const double estimate = relative_energy_error_estimate(results.adaptations);
+    const double target   = parameters.adaptation.target_error;
+    if (!(target > 0 && estimate > target))
+      return "";
+    std::ostringstream s;
+    s << "Adaptation/Target error " << target
+      << " not reached: the estimated relative energy-norm error is "
+      << estimate << " after " << results.n_adaptation_steps
+      << " refinement cycles, and "
+      << (results.adaptation_stop.empty() ? "the refinement stopped"
+                                          : results.adaptation_stop)
+      << "; raise the cap that stopped it, or set a larger Target error";
+    return s.str();
+  }
+
+  void
+  RunReport::write_final(const Results &results, const RunOutcome outcome)
+  {
     if (const auto *solver = results.contact_solver)
     {
       write_history(solver->history());
       write_contact_profiles(results, "");
       print_contact_states(results);
-      // "converged" only if the augmented Lagrangian met its tolerance too.
-      shortfall = solver->augmented_lagrangian_shortfall();
-      status    = shortfall.empty() ? "converged" : "stalled";
     }
-    // A Target error that the adaptation stopped above is a shortfall of
-    // the run, named in summary.json and by the exit code 5.
-    const double target   = parameters.adaptation.target_error;
-    const double estimate = relative_energy_error_estimate(results.adaptations);
-    const bool   missed   = !results.adaptations.empty() && target > 0 &&
-                        estimate > target && shortfall.empty();
-    if (missed)
-      status = "target_not_reached";
-    write_summary(results, status);
+    write_summary(results, outcome);
     print_reactions();
     print_warnings();
-    if (!shortfall.empty())
-      throw DivergenceError(shortfall);
-    if (missed)
-      for (const auto &warning : summary().at("warnings"))
-        if (warning.get<std::string>().rfind("Adaptation/Target error", 0) == 0)
-          throw TargetNotReachedError(warning.get<std::string>());
   }
 
   void

@@ -51,7 +51,7 @@ namespace ddcontact
                               step,
                               *pairs[p],
                               solver.contact_state(p),
-                              parameters.contact_solver.augmented_lagrangian
+                              parameters.contact_solver.exact_formulation
                                 ? solver.get_problem().law(p).multipliers()
                                 : std::vector<double>());
   }

@@ -27,7 +27,7 @@ namespace ddcontact
 
   namespace
   {
-    /** A solver's factory: its checks of the scene, then the solver. */
+    /** A solver's factory. */
     template <typename SolverType>
     std::unique_ptr<ContactSolver>
     make_solver(const ContactSolverParameters       &parameters,
@@ -36,7 +36,6 @@ namespace ddcontact
                 const BodyDistribution              &distribution,
                 ConditionalOStream                  &pcout)
     {
-      SolverType::check_scene(parameters, bodies);
       return std::make_unique<SolverType>(
         parameters, bodies, pairs, distribution, pcout);
     }
@@ -48,12 +47,32 @@ namespace ddcontact
                                          const BodyDistribution &,
                                          ConditionalOStream &);
 
-    /** The registered solvers: one line each. */
-    const std::map<ContactSolverType, SolverFactory> solver_factories = {
-      {ContactSolverType::dd, &make_solver<NeumannDDSolver>},
-      {ContactSolverType::dd_newton, &make_solver<DDNewtonSolver>},
-      {ContactSolverType::monolithic, &make_solver<MonolithicContactSolver>}};
+    /** A registered solver: its factory and what it can take. */
+    struct SolverEntry
+    {
+      SolverFactory      factory;
+      SolverCapabilities can;
+    };
+
+    /** The registered solvers: one line each. Capabilities: friction,
+     * floating bodies, pressure on the nodes, exact contact on the nodes,
+     * (the same only with friction), auto = points for the Uzawa loop. */
+    const std::map<ContactSolverType, SolverEntry> solvers = {
+      {ContactSolverType::dd,
+       {&make_solver<NeumannDDSolver>,
+        {false, false, false, false, false, false}}},
+      {ContactSolverType::dd_newton,
+       {&make_solver<DDNewtonSolver>, {true, true, true, true, true, false}}},
+      {ContactSolverType::monolithic,
+       {&make_solver<MonolithicContactSolver>,
+        {true, false, true, false, true, true}}}};
   } // namespace
+
+  const SolverCapabilities &
+  capabilities_of(const ContactSolverType solver)
+  {
+    return solvers.at(solver).can;
+  }
 
   std::unique_ptr<ContactSolver>
   ContactSolver::create(const ContactSolverParameters       &parameters,
@@ -62,21 +81,22 @@ namespace ddcontact
                         const BodyDistribution              &distribution,
                         ConditionalOStream                  &pcout)
   {
-    return solver_factories.at(parameters.solver)(
-      parameters, bodies, pairs, distribution, pcout);
-  }
-
-  void
-  ContactSolver::check_scene(const ContactSolverParameters       &parameters,
-                             const std::vector<ElasticBody<2> *> &bodies)
-  {
     // A floating body's equilibrium is a constraint on the contact
-    // pressure that only dd-newton's coarse problem imposes (DDNewtonSolver
-    // does not call this).
-    refuse_floating_bodies(bodies,
-                           "; only Contact solver/Solver = dd-newton solves "
-                           "floating bodies, not " +
-                             selection_name(parameters.solver));
+    // pressure that only dd-newton's coarse problem imposes, and that
+    // carries the normal approach only.
+    const auto &entry = solvers.at(parameters.solver);
+    if (!entry.can.floating_bodies)
+      refuse_floating_bodies(bodies,
+                             "; only Contact solver/Solver = dd-newton "
+                             "solves floating bodies, not " +
+                               selection_name(parameters.solver));
+    else if (parameters.friction)
+      refuse_floating_bodies(bodies,
+                             ", and dd-newton solves floating bodies without "
+                             "friction only; hold the body by a Dirichlet "
+                             "condition, or set Friction = none on its "
+                             "contact pairs");
+    return entry.factory(parameters, bodies, pairs, distribution, pcout);
   }
 
   void

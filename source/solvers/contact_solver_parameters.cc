@@ -22,6 +22,10 @@ namespace ddcontact
   DDCONTACT_SELECTION(CoulombLinearization,
                       {"fixed-point", CoulombLinearization::fixed_point},
                       {"newton", CoulombLinearization::newton})
+  DDCONTACT_SELECTION(ContactPressure,
+                      {"auto", ContactPressure::automatic},
+                      {"points", ContactPressure::points},
+                      {"nodes", ContactPressure::nodes})
   DDCONTACT_SELECTION(InitialGuess,
                       {"zero", InitialGuess::zero},
                       {"elastic-layer", InitialGuess::elastic_layer})
@@ -253,9 +257,10 @@ namespace ddcontact
     if (prm.get("Initial guess") == "winkler")
       throw InputError("Contact solver/Initial guess: 'winkler' is now "
                        "called 'elastic-layer'");
-    initial_guess    = parse_selection<InitialGuess>(prm.get("Initial guess"));
-    contact_pressure = prm.get("Contact pressure");
-    dual_multipliers = prm.get("Multiplier basis") == "dual";
+    initial_guess = parse_selection<InitialGuess>(prm.get("Initial guess"));
+    contact_pressure =
+      parse_selection<ContactPressure>(prm.get("Contact pressure"));
+    dual_multipliers      = prm.get("Multiplier basis") == "dual";
     write_every_iteration = prm.get_bool("Write every iteration");
 
     prm.enter_subsection("Uzawa");
@@ -312,39 +317,41 @@ namespace ddcontact
   ContactSolverParameters::set_formulation(const bool         exact,
                                            const std::string &frictional_pair)
   {
-    augmented_lagrangian = exact;
-    friction             = !frictional_pair.empty();
+    exact_formulation = exact;
+    friction          = !frictional_pair.empty();
+    const auto &can   = capabilities_of(solver);
     // Friction lives on the nodes of S_1 (a tangential multiplier beside
-    // the normal one, doc/friction.md): dd-newton and the monolithic
-    // solver; the paper's DD iterates on the pressure at the points.
-    if (friction && solver == ContactSolverType::dd)
+    // the normal one, doc/friction.md).
+    if (friction && !can.friction)
       throw InputError("Contact pair " + frictional_pair +
                        "/Friction: friction is solved by Contact "
                        "solver/Solver = dd-newton or monolithic, not by the "
-                       "paper's dd; set Solver = dd-newton or Friction = "
-                       "none");
-    if (friction && contact_pressure == "points")
+                       "paper's " +
+                       selection_name(solver) +
+                       "; set Solver = dd-newton or Friction = none");
+    if (friction && contact_pressure == ContactPressure::points)
       throw InputError("Contact pair " + frictional_pair +
                        "/Friction: friction needs the pressure on the nodes "
                        "of S_1; set Contact solver/Contact pressure = nodes "
                        "or auto");
-    if (contact_pressure == "auto" || friction)
+    if (contact_pressure == ContactPressure::automatic || friction)
     {
-      pressure_on_nodes =
-        solver == ContactSolverType::dd_newton ||
-        (solver == ContactSolverType::monolithic && (!exact || friction));
+      pressure_on_nodes = can.pressure_on_nodes &&
+                          (!exact || friction || !can.auto_points_for_uzawa);
       return;
     }
-    pressure_on_nodes = (contact_pressure == "nodes");
-    if (pressure_on_nodes && solver == ContactSolverType::dd)
+    pressure_on_nodes = (contact_pressure == ContactPressure::nodes);
+    if (pressure_on_nodes && !can.pressure_on_nodes)
       throw InputError("Contact solver/Contact pressure = nodes needs "
                        "Solver = dd-newton or monolithic (the DD takes the "
                        "pressure at the contact points)");
     // The Uzawa loop updates pointwise multipliers; dd-newton solves exact
     // contact on the nodes directly.
-    if (pressure_on_nodes && exact && solver == ContactSolverType::monolithic)
+    if (pressure_on_nodes && exact && !can.exact_on_nodes)
       throw InputError("Contact solver/Contact pressure = nodes with "
-                       "Solver = monolithic is a penalty; for exact contact "
+                       "Solver = " +
+                       selection_name(solver) +
+                       " is a penalty; for exact contact "
                        "(Contact pair/Formulation = exact) on the nodes use "
                        "Solver = dd-newton, or set Formulation = penalty");
   }

@@ -24,7 +24,7 @@ namespace ddcontact
   UzawaLoop::update(ContactProblem &problem)
   {
     // Exact contact solved directly (dd-newton) needs no updates.
-    if (!parameters.augmented_lagrangian || parameters.exact_contact() ||
+    if (!parameters.exact_formulation || parameters.exact_contact() ||
         n_mesh >= parameters.uzawa.max_updates)
       return false;
 
@@ -69,7 +69,7 @@ namespace ddcontact
   std::string
   UzawaLoop::shortfall(const ContactProblem &problem) const
   {
-    if (!parameters.augmented_lagrangian || parameters.exact_contact())
+    if (!parameters.exact_formulation || parameters.exact_contact())
       return "";
     const double ratio = problem.penetration(problem.current_iterate()).second;
     if (ratio <= parameters.uzawa.tolerance)

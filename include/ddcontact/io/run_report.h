@@ -9,6 +9,7 @@
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/contact/contact_pair.h>
 #include <ddcontact/io/json.h>
+#include <ddcontact/io/run_outcome.h>
 #include <ddcontact/parameters.h>
 #include <ddcontact/solvers/contact_solver.h>
 
@@ -95,21 +96,20 @@ namespace ddcontact
     void
     write_cells(const Results &results, unsigned int step) const;
 
-    /** Build summary.json with the run's @p status ("completed",
-     * "converged", "stalled", "not_converged", "diverged") and its
+    /** Build summary.json with the run's @p outcome as its status and its
      * warnings (and @p error, the message of the error that ended the
      * run, if any), and write it. Collective. */
     void
     write_summary(const Results     &results,
-                  const std::string &status,
+                  RunOutcome         outcome,
                   const std::string &error = "");
 
     /** The summary of a run still under way, or ended at once by a
-     * signal: its @p status, the last step it completed, @p error if
+     * signal: its @p outcome, the last step it completed, @p error if
      * any, and the load steps recorded so far. Local: no collective, no
      * solver state, so that it holds whatever the run is doing. */
     Json
-    progress_summary(const std::string &status, const std::string &error) const;
+    progress_summary(RunOutcome outcome, const std::string &error) const;
 
     /** The last step the run completed (a load step, an adaptation
      * cycle), named in every summary from now on. */
@@ -119,16 +119,16 @@ namespace ddcontact
       last_completed_step = what;
     }
 
-    /**
-     * The end of a solve that returned: history.csv, the contact profiles
-     * and states, and summary.json with the status it earned: "completed"
-     * (no contact), "converged", "stalled" (the augmented Lagrangian's
-     * tolerance missed: DivergenceError thrown after writing) or
-     * "target_not_reached" (above Adaptation/Target error:
-     * TargetNotReachedError thrown after writing). Collective.
-     */
+    /** The end of a solve that returned: history.csv, the contact
+     * profiles and states, and summary.json with the @p outcome the driver
+     * decided. Collective. */
     void
-    write_final(const Results &results);
+    write_final(const Results &results, RunOutcome outcome);
+
+    /** Why the run stopped above Adaptation/Target error (the estimate of
+     * @p results against it), or "" if it did not. */
+    std::string
+    target_shortfall(const Results &results) const;
 
     /** After load step @p step (from 1) of Loading/Steps, at the load
      * parameter @p t: the contact profiles contact_<pair>_step<k>.csv and
@@ -172,7 +172,7 @@ namespace ddcontact
      * the approach of its pair (the largest u_1n + u_2n)... */
     static constexpr double penetration_per_approach = 0.05;
     /** ... and by at most this fraction of the smallest cell diameter
-     * along the contact zone (see README, summary.json `warnings`). */
+     * along the contact zone (doc/running.md, summary.json `warnings`). */
     static constexpr double penetration_per_cell = 0.1;
     /** Linear elasticity (small strains (1), small rotations, the small-gap
      * assumption) is trusted up to strains and rotations of this size, and

@@ -96,12 +96,6 @@ namespace ddcontact
            const BodyDistribution              &distribution,
            ConditionalOStream                  &pcout);
 
-    /** The checks of the scene that the solvers (not dd-newton) share:
-     * no floating body. Throws InputError. */
-    static void
-    check_scene(const ContactSolverParameters       &parameters,
-                const std::vector<ElasticBody<2> *> &bodies);
-
     /** InputError naming the first floating body of @p bodies (its free
      * rigid motions), followed by @p reason. */
     static void

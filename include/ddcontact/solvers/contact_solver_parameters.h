@@ -55,7 +55,41 @@ namespace ddcontact
     newton       // t = sigma mu p coupled into the step (GMRES)
   };
 
+  /** Contact solver/Contact pressure: the discrete pressure's space. */
+  enum class ContactPressure
+  {
+    automatic, // "auto": nodes wherever the solver takes them
+    points,    // a value at every contact point
+    nodes      // one value per node of S_1
+  };
+
+  /** What a contact solver can take; ContactSolverParameters::
+   * set_formulation() and ContactSolver::create() refuse the rest. One
+   * row per solver, beside its factory (contact_solver.cc). */
+  struct SolverCapabilities
+  {
+    /** Tresca and Coulomb friction (tangential multipliers on the nodes
+     * of S_1). */
+    bool friction = false;
+    /** Bodies held by contact alone, without friction. */
+    bool floating_bodies = false;
+    /** One pressure per node of S_1 (Contact pressure = nodes). */
+    bool pressure_on_nodes = false;
+    /** Exact contact solved directly on the nodes, without the Uzawa
+     * loop: always, or only with friction. */
+    bool exact_on_nodes               = false;
+    bool exact_on_nodes_with_friction = false;
+    /** With a frictionless exact contact, auto takes the points (the
+     * Uzawa loop's pointwise multipliers) rather than the nodes. */
+    bool auto_points_for_uzawa = false;
+  };
+
+  /** The capabilities of @p solver (contact_solver.cc). */
+  const SolverCapabilities &
+  capabilities_of(ContactSolverType solver);
+
   DDCONTACT_DECLARE_SELECTION(ContactSolverType)
+  DDCONTACT_DECLARE_SELECTION(ContactPressure)
   DDCONTACT_DECLARE_SELECTION(CoulombLinearization)
   DDCONTACT_DECLARE_SELECTION(RelaxationType)
   DDCONTACT_DECLARE_SELECTION(StoppingTest)
@@ -135,9 +169,10 @@ namespace ddcontact
     unsigned int      max_iterations = 5000;
     double            tolerance      = 1e-8; // relative residual on S
     InitialGuess      initial_guess  = InitialGuess::elastic_layer;
-    /** Exact contact (Contact pair/Formulation = exact): set by the scene
-     * from its pairs, not read here. */
-    bool augmented_lagrangian  = false;
+    /** The pairs' Formulation = exact (exact contact, solved directly or
+     * by the Uzawa loop): set by the scene from its pairs, not read
+     * here. */
+    bool exact_formulation     = false;
     bool write_every_iteration = false;
     bool print_every_iteration = false; // Output/Verbosity = full
     bool pressure_on_nodes     = false; // Contact pressure
@@ -145,8 +180,8 @@ namespace ddcontact
      * functions biorthogonal to the hat functions (ContactInterface). */
     bool dual_multipliers = true;
     /** A pair has friction (Contact pair/Friction): set by the scene. */
-    bool        friction         = false;
-    std::string contact_pressure = "auto"; // the entry
+    bool            friction         = false;
+    ContactPressure contact_pressure = ContactPressure::automatic; // entry
 
     UzawaParameters               uzawa;
     DomainDecompositionParameters dd;
@@ -159,9 +194,10 @@ namespace ddcontact
     bool
     exact_contact() const
     {
-      return augmented_lagrangian &&
-             (solver == ContactSolverType::dd_newton ||
-              (friction && solver == ContactSolverType::monolithic));
+      const auto &can = capabilities_of(solver);
+      return exact_formulation &&
+             (can.exact_on_nodes ||
+              (friction && can.exact_on_nodes_with_friction));
     }
 
     /** dd-newton's unknowns are one pressure per node of S_1: for exact
@@ -170,7 +206,7 @@ namespace ddcontact
     multipliers_on_nodes() const
     {
       return exact_contact() ||
-             (pressure_on_nodes && solver == ContactSolverType::dd_newton);
+             (pressure_on_nodes && capabilities_of(solver).exact_on_nodes);
     }
 
     static void

@@ -4,6 +4,8 @@
 #include <ddcontact/solvers/contact_interface.h>
 #include <ddcontact/solvers/contact_solver.h>
 #include <ddcontact/solvers/friction_history.h>
+#include <ddcontact/solvers/interface_krylov_solver.h>
+#include <ddcontact/solvers/penalty_continuation.h>
 #include <ddcontact/solvers/rigid_mode_coarse_space.h>
 #include <ddcontact/solvers/robin_preconditioner.h>
 
@@ -15,104 +17,41 @@ namespace ddcontact
   using namespace dealii;
 
   /**
-   * Contact solver/Solver = dd-newton: the penalty contact (20)
-   * solved body by body by a semismooth Newton method on the contact
-   * pressure p = -sigma_n at the contact points (ContactInterface).
+   * Contact solver/Solver = dd-newton: contact solved body by body by a
+   * semismooth Newton method on the contact multipliers (ContactInterface:
+   * one pressure per node of S_1 for exact contact, or per contact point
+   * for the penalty (20)).
    *
    * With the penetration d(p) = d_0 - S p of the bodies solved under p,
-   * the law (20), theta p = max(0, d(p)), is the complementarity problem
-   *   p >= 0,  lambda = (Theta + S) p - d_0 >= 0,  p lambda = 0,
-   * the optimality system of the dual of (15), min_{p >= 0}
-   * (1/2) (p, (Theta + S) p)_W - (d_0, p)_W. The semismooth Newton method on
-   * Phi(p) = min(c p, lambda) = 0 (c = theta + w (1 - nu^2)/E summed over
-   * both bodies, ContactInterface::complementarity_scale(): with c = theta
-   * a tension p < 0 at a point counted only theta |p|, invisible for small
-   * theta) is a primal-dual active-set method: on the active set
-   * A = {d(p) + (c - theta) p > 0} solve
-   *   (Theta + S_AA) p_A = d_0,A,   p = 0 off A,
-   * by conjugate gradients in (.,.)_W, preconditioned by the bodies' Robin
-   * problems (RobinPreconditioner), warm-started from the last p. Every CG
-   * iteration applies S once: one set of body solves, each body on its own
-   * (concurrently, on its process) with its factorization, loaded on its
-   * contact zones -- the structure of the paper's DD, whose "DD iteration"
-   * is that set of solves. d(p) and the bodies' displacements follow from
-   * the CG recursions by linearity, without further solves. The inner
-   * tolerance is 0.1 of the Newton residual while the active set changes
-   * and the final one once it has settled. A step that does not reduce
-   * ||Phi||_W is damped (p + tau (p_new - p), tau halved; free, since d is
-   * affine in p).
+   * the law is the complementarity problem p >= 0, lambda = (Theta + S) p
+   * - d_0 >= 0, p lambda = 0 (the dual of (15)); Newton's method on
+   * Phi(p) = min(c p, lambda) (NodalContactLaw, c the complementarity
+   * scale) is a primal-dual active-set method. On the active set A it
+   * solves (Theta + S_AA) p_A = d_0,A by a Krylov method in which every
+   * iteration is one set of independent body solves, the "DD iteration"
+   * of the paper's structure (InterfaceKrylovSolver, preconditioned by the
+   * bodies' Robin problems). A step that does not reduce ||Phi|| is
+   * damped; the stopping test is ||Phi(p)||_W <= Tolerance ||max(0,
+   * d_0)||_W. step() is one Newton step, what the combined algorithm of
+   * Fig. 2 calls between two adaptation steps.
    *
-   * step() is one Newton step, what the combined algorithm of Fig. 2 calls
-   * between two adaptation steps; the stopping test is ||Phi(p)||_W <=
-   * Tolerance ||max(0, d_0)||_W (the overlap of the bodies without
-   * contact pressure).
+   * Its parts: the law of the nodes (NodalContactLaw: states, bounds,
+   * residuals), the interface Krylov solver, the penalty continuation
+   * (PenaltyContinuation), the floating bodies' coarse problem
+   * (RigidModeCoarseSpace, FETI: every step solves for p and the rigid
+   * modes' amplitudes with the bodies' equilibrium as a constraint) and,
+   * with friction, the load steps' history (FrictionHistory: a tangential
+   * multiplier per node beside p; the first step of a load step lets every
+   * closed node stick or keep its last state). Floating bodies are
+   * refused with friction.
    *
-   * With Contact pair/Formulation = exact the solver takes exact contact
-   * directly: theta = 0 and the unknowns are one multiplier per node of
-   * S_1 (ContactInterface's nodal space, W replaced by the lumped weights
-   * M), so that S_AA is positive definite and the same Newton steps
-   * converge; no Uzawa loop runs. The pressure is then the piecewise
-   * linear multiplier field, handed to the pairs' laws
-   * (ContactLaw::set_contact_pressure()) for the output and the
-   * estimator.
-   *
-   * Penalty continuation (Penalty continuation = true, from zero pressure
-   * on zones that overlap on at least 100 unknowns): started from the
-   * overlap, a primal-dual active-set method releases about one unknown at
-   * each end of a zone per step, because the tension of a too-wide zone
-   * sits in a layer of about an element; the steps grow like 1/h (paper
-   * scene, exact contact: 19 sets of body solves at refinement 2, 50 at
-   * 5). The stages theta + t theta_ref, t = 1, 1e-2, ... (theta_ref the
-   * compliance of both bodies across their thickness, or across the
-   * overlap where that is shorter), spread that layer over t theta_ref E:
-   * each stage's active set settles in a few steps and starts the next,
-   * down to the pairs' own theta once t theta_ref is below an element's
-   * compliance (the path following of Hintermueller and Kunisch for the
-   * Moreau-Yosida regularised problem, here the penalty (15) itself).
-   * A stage ends when at most 1 % of its active set changes, with loose
-   * inner solves; only the last one is converged. Paper scene, exact
-   * contact, refinement 3, 4, 5: 26, 24, 25 sets (without: 35, 39, 50).
-   *
-   * Floating bodies (held only by contact, ElasticBody::is_floating()) are
-   * solved with a few components clamped, and their rigid modes enter as a
-   * coarse problem (RigidModeCoarseSpace): the penetration is d_0 - S p +
-   * G alpha, and every Newton step solves for p and the modes' amplitudes
-   * alpha with the bodies' equilibrium as a constraint, by projected CG
-   * (FETI). An active set too small to hold the modes is completed by the
-   * unknowns nearest to contact.
-   *
-   * **Friction** (Contact pair/Friction = tresca or coulomb,
-   * doc/friction.md section 4.2): a tangential multiplier t_i per node
-   * beside p_i (ContactInterface with friction: the unknowns (p, t), S
-   * the response of the normal approach and of the slip to both). Every
-   * node is open, sticks or slips, decided from the trial traction as in
-   * MonolithicContactSolver: a sticking node's row is
-   * S_tn p + (Theta + S_tt) t = s_0 - s_old + theta t_old (the slip
-   * increment is the penalty's elastic slip, zero for exact contact), a
-   * slipping node's t_i is fixed at sigma_i times its bound. On a set of
-   * states the step is again (Theta + S_AA) x_A = b_A - (Theta + S)_AF x_F
-   * on the active unknowns A (closed normals and sticking tangentials),
-   * x_F fixed: symmetric, solved by the same preconditioned CG (the Robin
-   * problems get springs along tau at the sticking nodes), one set of body
-   * solves per iteration. Tresca's bound g_i is a datum. Coulomb's
-   * mu_i p_i is taken at the current iterate's trial pressure and updated
-   * at every Newton step (a fixed point on the slip bound inside the
-   * semismooth Newton method): the operator stays symmetric, and for
-   * elastically similar bodies (S_nt = 0) p does not depend on t, so the
-   * fixed point is exact once p has converged. The first step of a load
-   * step lets every closed node stick. Floating bodies are refused with
-   * friction (the coarse space carries the normal approach only).
+   * The method, its choices and measured counts: doc/contact-solvers.md
+   * (frictionless) and doc/friction.md section 4.2 (friction).
    */
   class DDNewtonSolver : public ContactSolver
   {
   public:
     using ContactSolver::ContactSolver;
-
-    /** dd-newton solves floating bodies too (its coarse space), but not
-     * with friction: InputError then. */
-    static void
-    check_scene(const ContactSolverParameters       &parameters,
-                const std::vector<ElasticBody<2> *> &bodies);
 
     /** Zero pressure; resets the history and the multipliers. */
     void
@@ -184,34 +123,11 @@ namespace ddcontact
                     const PointVector &Sp,
                     const PointVector &Ga) const;
 
-    /** The continuation's stage @p t if it is still much softer than the
-     * pairs' own theta and than an element's compliance somewhere
-     * (t theta_ref,q larger than ten times the first and than the second),
-     * else 0: below, the springs' boundary layer at the zone's ends is
-     * narrower than an element, and the active set is that of the pairs'
-     * theta to a node. */
-    double
-    continuation_stage(double t) const;
-
-    /** The first stage of the penalty continuation, once d_0 is known. */
-    void
-    start_continuation();
-
-    /** Go on to the continuation's stage @p t (0: the pairs' own theta):
-     * the interface's theta and the preconditioner's springs. */
-    void
-    enter_stage(double t);
-
     /** The tolerance of ||Phi||_W at the iterate @p x: Tolerance of the
      * overlap, and on the points at most 1e-3 of ||Theta x||_W (the
      * pressure to 0.1 %). */
     double
     stopping_tolerance(const PointVector &x) const;
-
-    /** Whether the continuation's theta dominates S so much that Theta^{-1}
-     * preconditions better than the Robin problems (soft stages). */
-    bool
-    penalty_dominates() const;
 
     /** The unknowns A of the Newton step, from the current iterate;
      * @p n_changed counts those that changed since the last step;
@@ -245,54 +161,55 @@ namespace ddcontact
     std::vector<double>
     fitted_amplitudes(const PointVector &x, const PointVector &Sx) const;
 
-    /**
-     * Preconditioned CG on (Theta + S_AA) x_A = d_0,A from x (zero off
-     * @p active) until ||r||_W <= @p tolerance; @p Sx = S x and @p u_x,
-     * the bodies' response to x, follow x. Returns the iterations. With
-     * floating bodies x is first put in equilibrium, and the CG is
-     * projected (RigidModeCoarseSpace).
-     */
-    unsigned int
-    solve_active_system(const std::vector<bool> &active,
-                        double                   tolerance,
-                        PointVector             &x,
-                        PointVector             &Sx,
-                        ContactProblem::Iterate &u_x);
+    /** What a step needs before its active set: the data d_0 of a new
+     * phase, the continuation's first stage, the floating modes'
+     * amplitudes; stops at Max Newton iterations. */
+    void
+    prepare_step();
 
-    /**
-     * The Newton step with Coulomb linearization = newton: as
-     * solve_active_system(), but a slipping Coulomb node's t follows its
-     * pressure, t_i = sigma_i mu_i p_i (`slip_coupling`), instead of
-     * being fixed. The rows of the active set then see the slipping
-     * tangentials through S: the step's operator R_A (Theta + S) E (E
-     * extends y on the active set by the coupled tangentials) is not
-     * symmetric. GMRES solves it, right preconditioned by the Robin
-     * problems of the active set, in the inner product of M. It is our
-     * own (deal.II's SolverGMRES does not hand out its Krylov basis): each
-     * direction keeps the bodies' response, so the increment comes with S
-     * x and the displacements without another set of body solves. Returns
-     * the sets of body solves.
-     */
-    unsigned int
-    solve_coupled_system(const std::vector<bool> &active,
-                         double                   tolerance,
-                         PointVector             &x,
-                         PointVector             &Sx,
-                         ContactProblem::Iterate &u_x);
+    /** DivergenceError where only tension holds the floating modes: the
+     * same active set again (@p n_changed = 0), completed by unknowns
+     * that pull. */
+    void
+    check_mechanism(unsigned int n_changed) const;
 
-    /** (Theta + S) y on the rows of @p active, zero on the others, from y
-     * and S y: the operator of a Newton step. */
-    PointVector
-    operator_on_active(const std::vector<bool> &active,
-                       const PointVector       &y,
-                       const PointVector       &Sy) const;
+    /** The start (@p x, @p Sx, @p u_x) of the step's Krylov solve: p,
+     * with the unknowns off @p active at their fixed values. */
+    void
+    warm_start(const std::vector<bool> &active,
+               PointVector             &x,
+               PointVector             &Sx,
+               ContactProblem::Iterate &u_x) const;
 
-    /** The step's residual d_0 - (Theta + S) x on the rows of @p active,
-     * zero on the others. */
-    PointVector
-    active_residual(const std::vector<bool> &active,
-                    const PointVector       &x,
-                    const PointVector       &Sx) const;
+    /** The step length tau toward (@p x, @p Sx, @p Gx) from the iterate of
+     * residual @p psi: the largest 1, 1/2, ... that reduces ||Phi||_W, 1
+     * with @p full_step; @p psi_new the residual there. */
+    double
+    damping(double             psi,
+            bool               full_step,
+            const PointVector &x,
+            const PointVector &Sx,
+            const PointVector &Gx,
+            double            &psi_new) const;
+
+    /** p + tau (x - p) with S p, u_p, G alpha and alpha alike; the bodies'
+     * solutions and the step's record. */
+    IterationRecord
+    take_step(double                         tau,
+              const PointVector             &x,
+              const PointVector             &Sx,
+              const ContactProblem::Iterate &u_x,
+              const PointVector             &Gx,
+              const std::vector<double>     &alpha_x,
+              double                         psi_new);
+
+    /** The step's line of progress; DivergenceError on a non-finite
+     * residual. */
+    void
+    print_step(const IterationRecord   &record,
+               const std::vector<bool> &active,
+               unsigned int             n_changed,
+               unsigned int             cg) const;
 
     /** The value of the unknown @p q off the active set for the iterate
      * @p x: zero, or a slipping node's sigma b (Coulomb linearization =
@@ -323,9 +240,11 @@ namespace ddcontact
     };
     FrictionHistory history;
 
-    RobinPreconditioner  preconditioner{problem};
-    RigidModeCoarseSpace coarse{problem, interface};
-    bool                 mesh_ready = false; // interface, u_0, S p
+    RobinPreconditioner   preconditioner{problem};
+    RigidModeCoarseSpace  coarse{problem, interface};
+    PenaltyContinuation   continuation{interface, preconditioner, pcout};
+    InterfaceKrylovSolver krylov{interface, preconditioner, coarse};
+    bool                  mesh_ready = false; // interface, u_0, S p
     bool same_mesh   = false; // a load step: the preconditioner is kept
     bool phase_ready = false; // d_0 with the multipliers
 
@@ -345,7 +264,6 @@ namespace ddcontact
     PointVector             Ga;     // G alpha
     bool                    alpha_stale = false; // estimate_amplitudes()
     bool                    balanced    = true;  // p in equilibrium
-    bool continuation_pending = false; // start_continuation() at next step
 
     unsigned int n_data_solves     = 0;
     unsigned int n_factorizations  = 0; // of the preconditioner, all meshes
