@@ -31,6 +31,8 @@ namespace
            "documentation\n"
            "                             (of FILE.prm if given, else the "
            "defaults)\n"
+           "  --print-parameters-json    the same in JSON, with every entry's "
+           "pattern\n"
            "  --version                  the git revision and deal.II "
            "version\n"
            "  --help                     this text\n";
@@ -59,7 +61,7 @@ main(int argc, char **argv)
 
     std::string              parameter_file, output_directory;
     std::vector<std::string> overrides;
-    bool                     print_parameters = false, output_given = false;
+    bool print_parameters = false, json = false, output_given = false;
     for (int i = 1; i < argc; ++i)
     {
       const std::string arg = argv[i];
@@ -77,6 +79,8 @@ main(int argc, char **argv)
       }
       else if (arg == "--print-parameters")
         print_parameters = true;
+      else if (arg == "--print-parameters-json")
+        print_parameters = json = true;
       else if (arg == "--output" || arg == "--set")
       {
         if (i + 1 == argc)
@@ -101,7 +105,7 @@ main(int argc, char **argv)
     if (print_parameters && parameter_file.empty())
     {
       if (root)
-        ParameterReader::print_defaults(std::cout);
+        ParameterReader::print_defaults(std::cout, json);
       return 0;
     }
     if (parameter_file.empty())
@@ -117,7 +121,7 @@ main(int argc, char **argv)
     if (print_parameters)
     {
       if (root)
-        reader.print(std::cout);
+        reader.print(std::cout, json);
       return 0;
     }
 

@@ -889,8 +889,15 @@ namespace ddcontact
   } // namespace
 
   void
-  ParameterReader::print(std::ostream &out) const
+  ParameterReader::print(std::ostream &out, const bool json) const
   {
+    // JSON (--print-parameters-json): with every entry's pattern, for
+    // scripts/generate_parameters_doc.py.
+    if (json)
+    {
+      prm.print_parameters(out, ParameterHandler::JSON);
+      return;
+    }
     print_units(out);
     prm.print_parameters(out, ParameterHandler::PRM);
   }
@@ -904,10 +911,17 @@ namespace ddcontact
   }
 
   void
-  ParameterReader::print_defaults(std::ostream &out)
+  ParameterReader::print_defaults(std::ostream &out, const bool json)
   {
     ParameterHandler prm;
     SceneParameters::declare(prm, {"<name>"}, {"<name>"});
+    // JSON (--print-parameters-json): with every entry's pattern, for
+    // scripts/generate_parameters_doc.py.
+    if (json)
+    {
+      prm.print_parameters(out, ParameterHandler::JSON);
+      return;
+    }
     print_units(out);
     prm.print_parameters(out, ParameterHandler::PRM);
   }

@@ -128,7 +128,7 @@ def judge(code, stderr, outdir):
             if re.search(r"\bnan\b|\binf\b", open(name).read(), re.I):
                 return "NaN or inf in " + os.path.basename(name)
         return "converged"
-    # The documented exit codes of a clean refusal (README): bad input,
+    # The documented exit codes of a clean refusal (doc/running.md): bad input,
     # failed iteration, target not reached, write failure, out of memory.
     if code in (1, 4, 5, 7, 8) and len(lines) == 1 and \
             lines[0].startswith("ddcontact: error: ") and \

@@ -92,9 +92,10 @@ namespace ddcontact
       return scene_parameters;
     }
 
-    /** Print all entries with their documentation (and current values). */
+    /** Print all entries with their documentation (and current values);
+     * with @p json in deal.II's JSON, with the entries' patterns. */
     void
-    print(std::ostream &out) const;
+    print(std::ostream &out, bool json = false) const;
 
     /** The parameters as used, to copy into the output directory. */
     void
@@ -102,7 +103,7 @@ namespace ddcontact
 
     /** Declared but empty: for --print-parameters without a file. */
     static void
-    print_defaults(std::ostream &out);
+    print_defaults(std::ostream &out, bool json = false);
 
   private:
     mutable ParameterHandler prm;
