@@ -22,6 +22,10 @@ namespace ddcontact
 {
   using namespace dealii;
 
+  /** "(x1, x2)" in full precision, for messages. */
+  std::string
+  point_coordinates(const Point<2> &x);
+
   /**
    * One integration point of the contact integral over S_1 (15)-(16). It
    * carries everything an iteration needs, so that the point-to-cell search
