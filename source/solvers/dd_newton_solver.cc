@@ -1,6 +1,5 @@
 #include <ddcontact/contact/contact_law.h>
 #include <ddcontact/solvers/dd_newton_solver.h>
-#include <ddcontact/solvers/interface_vectors.h>
 
 #include <algorithm>
 #include <cmath>

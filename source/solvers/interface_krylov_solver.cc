@@ -1,5 +1,4 @@
 #include <ddcontact/solvers/interface_krylov_solver.h>
-#include <ddcontact/solvers/interface_vectors.h>
 
 #include <algorithm>
 #include <cmath>

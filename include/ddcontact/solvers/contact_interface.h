@@ -359,6 +359,41 @@ namespace ddcontact
     std::vector<std::vector<PointShare>> point_shares;
     mutable unsigned int                 applications = 0;
   };
+
+  /** x += a y, for the interface unknowns of dd-newton. */
+  inline void
+  add(PointVector &x, const double a, const PointVector &y)
+  {
+    for (unsigned int q = 0; q < x.size(); ++q)
+      x[q] += a * y[q];
+  }
+
+  /** u += a v for the bodies' responses. */
+  inline void
+  add(ContactProblem::Iterate       &u,
+      const double                   a,
+      const ContactProblem::Iterate &v)
+  {
+    for (unsigned int b = 0; b < u.size(); ++b)
+      u[b].add(a, v[b]);
+  }
+
+  /** x <- (1 - tau) x + tau y. */
+  inline void
+  blend(PointVector &x, const double tau, const PointVector &y)
+  {
+    for (unsigned int q = 0; q < x.size(); ++q)
+      x[q] = (1 - tau) * x[q] + tau * y[q];
+  }
+
+  inline void
+  blend(ContactProblem::Iterate       &u,
+        const double                   tau,
+        const ContactProblem::Iterate &v)
+  {
+    for (unsigned int b = 0; b < u.size(); ++b)
+      u[b].sadd(1 - tau, tau, v[b]);
+  }
 } // namespace ddcontact
 
 #endif
