@@ -9,7 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <vector>
 
 namespace ddcontact
 {
@@ -47,31 +47,64 @@ namespace ddcontact
                                          const BodyDistribution &,
                                          ConditionalOStream &);
 
-    /** A registered solver: its factory and what it can take. */
+    /** A registered solver: its entry value, its factory and what it can
+     * take. */
     struct SolverEntry
     {
+      const char        *name;
+      ContactSolverType  type;
       SolverFactory      factory;
       SolverCapabilities can;
     };
 
-    /** The registered solvers: one line each. Capabilities: friction,
-     * floating bodies, pressure on the nodes, exact contact on the nodes,
-     * (the same only with friction), auto = points for the Uzawa loop. */
-    const std::map<ContactSolverType, SolverEntry> solvers = {
-      {ContactSolverType::dd,
-       {&make_solver<NeumannDDSolver>,
-        {false, false, false, false, false, false}}},
-      {ContactSolverType::dd_newton,
-       {&make_solver<DDNewtonSolver>, {true, true, true, true, true, false}}},
-      {ContactSolverType::monolithic,
-       {&make_solver<MonolithicContactSolver>,
-        {true, false, true, false, true, true}}}};
+    /** The registered solvers, one line each: a new solver is its header,
+     * its source, its value in ContactSolverType and its line here.
+     * Capabilities: friction, floating bodies, pressure on the nodes, exact
+     * contact on the nodes, (the same only with friction), auto = points
+     * for the Uzawa loop. */
+    const std::vector<SolverEntry> solvers = {
+      {"dd",
+       ContactSolverType::dd,
+       &make_solver<NeumannDDSolver>,
+       {false, false, false, false, false, false}},
+      {"monolithic",
+       ContactSolverType::monolithic,
+       &make_solver<MonolithicContactSolver>,
+       {true, false, true, false, true, true}},
+      {"dd-newton",
+       ContactSolverType::dd_newton,
+       &make_solver<DDNewtonSolver>,
+       {true, true, true, true, true, false}}};
+
+    const SolverEntry &
+    entry_of(const ContactSolverType solver)
+    {
+      for (const auto &entry : solvers)
+        if (entry.type == solver)
+          return entry;
+      AssertThrow(false, ExcInternalError());
+      return solvers.front();
+    }
   } // namespace
+
+  // Contact solver/Solver's entry values come from the registry above.
+  template <>
+  const std::vector<std::pair<std::string, ContactSolverType>> &
+  selection_names<ContactSolverType>()
+  {
+    static const auto names = [] {
+      std::vector<std::pair<std::string, ContactSolverType>> list;
+      for (const auto &entry : solvers)
+        list.emplace_back(entry.name, entry.type);
+      return list;
+    }();
+    return names;
+  }
 
   const SolverCapabilities &
   capabilities_of(const ContactSolverType solver)
   {
-    return solvers.at(solver).can;
+    return entry_of(solver).can;
   }
 
   std::unique_ptr<ContactSolver>
@@ -84,7 +117,7 @@ namespace ddcontact
     // A floating body's equilibrium is a constraint on the contact
     // pressure that only dd-newton's coarse problem imposes, and that
     // carries the normal approach only.
-    const auto &entry = solvers.at(parameters.solver);
+    const auto &entry = entry_of(parameters.solver);
     if (!entry.can.floating_bodies)
       refuse_floating_bodies(bodies,
                              "; only Contact solver/Solver = dd-newton "

@@ -6,10 +6,6 @@
 
 namespace ddcontact
 {
-  DDCONTACT_SELECTION(ContactSolverType,
-                      {"dd", ContactSolverType::dd},
-                      {"monolithic", ContactSolverType::monolithic},
-                      {"dd-newton", ContactSolverType::dd_newton})
   DDCONTACT_SELECTION(RelaxationType,
                       {"fixed", RelaxationType::fixed},
                       {"auto", RelaxationType::automatic},
