@@ -52,6 +52,14 @@ namespace ddcontact
                       "0",
                       Patterns::Integer(0),
                       "Number of threads (0: one per core).");
+    prm.declare_entry(
+      "Geometry",
+      "plane strain",
+      selection_pattern<Geometry>(),
+      "plane strain: the mesh is a slice of unit thickness, forces per unit "
+      "thickness; axisymmetric: the mesh is a meridian section (x = r >= 0, "
+      "y = z the axis), every force, reaction and energy a total over the "
+      "ring (2 pi r); doc/axisymmetric.md.");
     prm.declare_entry("Contact pairs",
                       "",
                       Patterns::Anything(),
@@ -137,6 +145,7 @@ namespace ddcontact
     body_names = split(prm.get("Bodies"), ',');
     constants  = parse_constants(prm.get("Constants"), "Constants");
     n_threads  = prm.get_integer("Threads");
+    geometry   = parse_selection<Geometry>(prm.get("Geometry"));
     if (body_names.empty())
       throw InputError("Bodies: no body is listed");
 
@@ -150,6 +159,7 @@ namespace ddcontact
       prm.enter_subsection("Body " + name);
       body.parse(prm);
       prm.leave_subsection();
+      body.geometry = geometry;
       // The boundary conditions are parsed here too, with the parser the
       // body uses, so that a scene read without error is fully checked.
       make_boundary_conditions(body, constants);
@@ -218,6 +228,18 @@ namespace ddcontact
           std::to_string(body_parameters(b).degree) +
           "; use Estimator = kelly or residual, or Degree = 1 or 2");
     }
+
+    // The BEM's kernels (Kelvin's solution) and the residual estimator's
+    // strong residual are those of plane strain; an axisymmetric body
+    // would need ring-load kernels and the hoop terms (doc/axisymmetric.md).
+    if (geometry == Geometry::axisymmetric && adaptation.enabled() &&
+        adaptation.mode != AdaptationMode::uniform &&
+        adaptation.estimator != EstimatorType::kelly)
+      throw InputError("Adaptation/Estimator: " +
+                       to_string(adaptation.estimator) +
+                       " is written for plane strain; with Geometry = "
+                       "axisymmetric use Estimator = kelly (or Mode = "
+                       "uniform)");
 
     contact_pairs.clear();
     for (const auto &name : split(prm.get("Contact pairs"), ','))

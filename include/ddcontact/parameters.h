@@ -42,6 +42,7 @@ namespace ddcontact
     bool                     write_vtu         = true;
     bool                     smoothed_stresses = true;
     unsigned int             n_threads         = 0; // 0 = all cores
+    Geometry                 geometry          = Geometry::plane_strain;
     /** Loading: the quasi-static load steps of the load parameter t. */
     LoadingParameters loading;
 

@@ -6,6 +6,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
 
+#include <ddcontact/body/axis_of_symmetry.h>
 #include <ddcontact/body/body_stresses.h>
 #include <ddcontact/body/elastic_body.h>
 
@@ -21,31 +22,90 @@ namespace ddcontact
                                   const BodyVector       &u)
     : body(body)
     , u(u)
+    , axisymmetric(body.get_geometry() == Geometry::axisymmetric)
+    , axis_tolerance(
+        axisymmetric ? AxisOfSymmetry::tolerance(body.get_triangulation()) : 0.)
   {
     const Quadrature<dim> *reduced = body.get_volumetric_quadrature();
     if (reduced == nullptr)
       return;
     dilatation.assign(body.get_triangulation().n_active_cells(), 0.);
-    FEValues<dim> fe_values(
-      body.get_mapping(), body.get_fe(), *reduced, update_gradients);
-    const FEValuesExtractors::Vector displacement(0);
-    std::vector<double>              div(reduced->size());
+    FEValues<dim>                        fe_values(body.get_mapping(),
+                            body.get_fe(),
+                            *reduced,
+                            strain_flags(update_gradients));
+    std::vector<SymmetricTensor<2, dim>> strain(reduced->size());
+    std::vector<double>                  hoop(reduced->size());
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (body.computes(cell))
       {
         fe_values.reinit(cell);
-        fe_values[displacement].get_function_divergences(u, div);
-        dilatation[cell->active_cell_index()] = div[0];
+        strains(fe_values, strain, hoop);
+        dilatation[cell->active_cell_index()] =
+          axisymmetric ? trace(strain[0]) + hoop[0] : trace(strain[0]);
       }
+  }
+
+  template <int dim>
+  UpdateFlags
+  BodyStresses<dim>::strain_flags(const UpdateFlags flags) const
+  {
+    return axisymmetric ? flags | update_values | update_gradients |
+                            update_quadrature_points :
+                          flags | update_gradients;
+  }
+
+  template <int dim>
+  void
+  BodyStresses<dim>::strains(const FEValues<dim>                  &fe_values,
+                             std::vector<SymmetricTensor<2, dim>> &strain,
+                             std::vector<double>                  &hoop) const
+  {
+    const FEValuesExtractors::Vector displacement(0);
+    fe_values[displacement].get_function_symmetric_gradients(u, strain);
+    hoop.assign(strain.size(), 0.);
+    if (!axisymmetric)
+      return;
+    std::vector<Tensor<1, dim>> value(strain.size());
+    std::vector<Tensor<2, dim>> gradient(strain.size());
+    fe_values[displacement].get_function_values(u, value);
+    fe_values[displacement].get_function_gradients(u, gradient);
+    for (unsigned int q = 0; q < strain.size(); ++q)
+      hoop[q] =
+        hoop_strain(fe_values.quadrature_point(q), value[q], gradient[q]);
+  }
+
+  template <int dim>
+  double
+  BodyStresses<dim>::hoop_strain(const Point<dim>     &x,
+                                 const Tensor<1, dim> &value,
+                                 const Tensor<2, dim> &gradient) const
+  {
+    if (!axisymmetric)
+      return 0.;
+    // Output evaluates at vertices, some on the axis: there u_r = 0 and
+    // u_r / r tends to du_r/dr.
+    return x[0] > axis_tolerance ? value[0] / x[0] : gradient[0][0];
   }
 
   template <int dim>
   SymmetricTensor<2, dim>
   BodyStresses<dim>::stress(const SymmetricTensor<2, dim> &strain,
-                            const unsigned int             cell) const
+                            const unsigned int             cell,
+                            const double                   hoop_strain) const
   {
     const Material &material = body.get_material();
     auto            s        = material.stress(strain);
+    if (axisymmetric)
+    {
+      // lambda (tr eps + eps_tt) I + 2 mu eps, the volumetric part
+      // possibly from the reduced point.
+      const double volumetric =
+        dilatation.empty() ? trace(strain) + hoop_strain : dilatation[cell];
+      s += material.lambda() * (volumetric - trace(strain)) *
+           unit_symmetric_tensor<dim>();
+      return s;
+    }
     if (!dilatation.empty())
       s += material.lambda() * (dilatation[cell] - trace(strain)) *
            unit_symmetric_tensor<dim>();
@@ -53,25 +113,48 @@ namespace ddcontact
   }
 
   template <int dim>
-  std::vector<std::vector<SymmetricTensor<2, dim>>>
-  BodyStresses<dim>::at_quadrature_points() const
+  double
+  BodyStresses<dim>::out_of_plane(const SymmetricTensor<2, dim> &strain,
+                                  const unsigned int             cell,
+                                  const double hoop_strain) const
   {
-    std::vector<std::vector<SymmetricTensor<2, dim>>> result(
-      body.get_triangulation().n_active_cells());
+    const Material &material = body.get_material();
+    if (!axisymmetric)
+      return material.out_of_plane_stress(stress(strain, cell));
+    const double volumetric =
+      dilatation.empty() ? trace(strain) + hoop_strain : dilatation[cell];
+    return material.lambda() * volumetric + 2. * material.mu() * hoop_strain;
+  }
+
+  template <int dim>
+  std::vector<std::vector<SymmetricTensor<2, dim>>>
+  BodyStresses<dim>::at_quadrature_points(
+    std::vector<std::vector<double>> *third) const
+  {
+    const unsigned int n_cells = body.get_triangulation().n_active_cells();
+    std::vector<std::vector<SymmetricTensor<2, dim>>> result(n_cells);
+    if (third)
+      third->assign(n_cells, {});
     const Quadrature<dim> &quadrature = body.get_cell_quadrature();
-    FEValues<dim>          fe_values(
-      body.get_mapping(), body.get_fe(), quadrature, update_gradients);
-    const FEValuesExtractors::Vector     displacement(0);
+    FEValues<dim>          fe_values(body.get_mapping(),
+                            body.get_fe(),
+                            quadrature,
+                            strain_flags(update_gradients));
     std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
+    std::vector<double>                  hoop(quadrature.size());
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (body.computes(cell))
       {
         fe_values.reinit(cell);
-        fe_values[displacement].get_function_symmetric_gradients(u, strain);
-        auto &s = result[cell->active_cell_index()];
+        strains(fe_values, strain, hoop);
+        const unsigned int c = cell->active_cell_index();
+        auto              &s = result[c];
         s.resize(strain.size());
         for (unsigned int q = 0; q < strain.size(); ++q)
-          s[q] = stress(strain[q], cell->active_cell_index());
+          s[q] = stress(strain[q], c, hoop[q]);
+        if (third)
+          for (unsigned int q = 0; q < strain.size(); ++q)
+            (*third)[c].push_back(out_of_plane(strain[q], c, hoop[q]));
       }
     return result;
   }
@@ -86,21 +169,27 @@ namespace ddcontact
 
   template <int dim>
   std::vector<SymmetricTensor<2, dim>>
-  BodyStresses<dim>::at_cell_centres() const
+  BodyStresses<dim>::at_cell_centres(std::vector<double> *third) const
   {
-    std::vector<SymmetricTensor<2, dim>> result(
-      body.get_triangulation().n_active_cells());
-    FEValues<dim> fe_values(
-      body.get_mapping(), body.get_fe(), cell_centre(), update_gradients);
-    const FEValuesExtractors::Vector     displacement(0);
+    const unsigned int n_cells = body.get_triangulation().n_active_cells();
+    std::vector<SymmetricTensor<2, dim>> result(n_cells);
+    if (third)
+      third->assign(n_cells, 0.);
+    FEValues<dim>                        fe_values(body.get_mapping(),
+                            body.get_fe(),
+                            cell_centre(),
+                            strain_flags(update_gradients));
     std::vector<SymmetricTensor<2, dim>> strain(1);
+    std::vector<double>                  hoop(1);
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (body.computes(cell))
       {
         fe_values.reinit(cell);
-        fe_values[displacement].get_function_symmetric_gradients(u, strain);
-        result[cell->active_cell_index()] =
-          stress(strain[0], cell->active_cell_index());
+        strains(fe_values, strain, hoop);
+        const unsigned int c = cell->active_cell_index();
+        result[c]            = stress(strain[0], c, hoop[0]);
+        if (third)
+          (*third)[c] = out_of_plane(strain[0], c, hoop[0]);
       }
     return result;
   }
@@ -109,11 +198,15 @@ namespace ddcontact
   std::pair<double, double>
   BodyStresses<dim>::largest_strain_and_rotation() const
   {
-    FEValues<dim> fe_values(
-      body.get_mapping(), body.get_fe(), cell_centre(), update_gradients);
+    FEValues<dim>                    fe_values(body.get_mapping(),
+                            body.get_fe(),
+                            cell_centre(),
+                            strain_flags(update_gradients));
     const FEValuesExtractors::Vector displacement(0);
     std::vector<Tensor<2, dim>>      gradient(1);
-    double                           strain = 0, rotation = 0;
+    std::vector<SymmetricTensor<2, dim>> unused(1);
+    std::vector<double>                  hoop(1);
+    double                               strain = 0, rotation = 0;
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (body.computes(cell))
       {
@@ -122,6 +215,11 @@ namespace ddcontact
         const SymmetricTensor<2, dim> eps = symmetrize(gradient[0]);
         for (const double e : eigenvalues(eps))
           strain = std::max(strain, std::abs(e));
+        if (axisymmetric)
+        {
+          strains(fe_values, unused, hoop);
+          strain = std::max(strain, std::abs(hoop[0]));
+        }
         rotation = std::max(
           rotation, 0.5 * std::abs(gradient[0][1][0] - gradient[0][0][1]));
       }
@@ -137,21 +235,41 @@ namespace ddcontact
     FEValues<dim>                    fe_values(body.get_mapping(),
                             body.get_fe(),
                             quadrature,
-                            update_gradients | update_JxW_values);
+                            strain_flags(update_gradients | update_JxW_values |
+                                         update_quadrature_points));
     const FEValuesExtractors::Vector displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
+    std::vector<double>                  hoop(quadrature.size());
     const bool                           reduced = !dilatation.empty();
-    double                               energy  = 0;
+    const Geometry                       geometry = body.get_geometry();
+    double                               energy   = 0;
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (body.computes(cell))
       {
         fe_values.reinit(cell);
-        fe_values[displacement].get_function_symmetric_gradients(u, strain);
+        strains(fe_values, strain, hoop);
         for (const unsigned int q : fe_values.quadrature_point_indices())
+        {
+          const double JxW =
+            fe_values.JxW(q) *
+            section_measure(geometry, fe_values.quadrature_point(q));
+          if (axisymmetric)
+          {
+            // 1/2 (sigma : eps + sigma_tt eps_tt), as assembled.
+            const double shear = strain[q] * strain[q] + hoop[q] * hoop[q];
+            const double volumetric = trace(strain[q]) + hoop[q];
+            energy += 0.5 *
+                      (2. * material.mu() * shear +
+                       (reduced ? 0. :
+                                  material.lambda() * volumetric * volumetric)) *
+                      JxW;
+            continue;
+          }
           energy += 0.5 *
                     (reduced ? 2. * material.mu() * (strain[q] * strain[q])
                              : material.stress(strain[q]) * strain[q]) *
-                    fe_values.JxW(q);
+                    JxW;
+        }
       }
     if (reduced)
     {
@@ -159,14 +277,16 @@ namespace ddcontact
       FEValues<dim> fe_reduced(body.get_mapping(),
                                body.get_fe(),
                                *body.get_volumetric_quadrature(),
-                               update_JxW_values);
+                               update_JxW_values | update_quadrature_points);
       for (const auto &cell : body.get_dof_handler().active_cell_iterators())
         if (body.computes(cell))
         {
           fe_reduced.reinit(cell);
           const double d = dilatation[cell->active_cell_index()];
           for (const unsigned int q : fe_reduced.quadrature_point_indices())
-            energy += 0.5 * material.lambda() * d * d * fe_reduced.JxW(q);
+            energy += 0.5 * material.lambda() * d * d * fe_reduced.JxW(q) *
+                      section_measure(geometry,
+                                      fe_reduced.quadrature_point(q));
         }
     }
     return body.get_mesh().sum(energy);
@@ -193,17 +313,24 @@ namespace ddcontact
       FEValues<dim>         fe_values(body.get_mapping(),
                               body.get_fe(),
                               at_xi,
-                              update_values | update_gradients);
+                              update_values | update_gradients |
+                                update_quadrature_points);
       fe_values.reinit(cell);
       const FEValuesExtractors::Vector     displacement(0);
       std::vector<Tensor<1, dim>>          value(1);
+      std::vector<Tensor<2, dim>>          gradient(1);
       std::vector<SymmetricTensor<2, dim>> strain(1);
       fe_values[displacement].get_function_values(u, value);
+      fe_values[displacement].get_function_gradients(u, gradient);
       fe_values[displacement].get_function_symmetric_gradients(u, strain);
-      PointValues<dim> result;
+      const double hoop =
+        hoop_strain(fe_values.quadrature_point(0), value[0], gradient[0]);
+      const unsigned int c = cell->active_cell_index();
+      PointValues<dim>   result;
       result.x            = x;
       result.displacement = value[0];
-      result.stress       = stress(strain[0], cell->active_cell_index());
+      result.stress       = stress(strain[0], c, hoop);
+      result.out_of_plane = out_of_plane(strain[0], c, hoop);
       return result;
     };
 
@@ -212,8 +339,8 @@ namespace ddcontact
     {
       // The process owning the cell around x evaluates and sends
       // (collective over the mesh's processes, which all ask for x).
-      static_assert(dim == 2, "five values: u and the plane stress");
-      using Values = std::array<double, 5>;
+      static_assert(dim == 2, "six values: u and the stress");
+      using Values = std::array<double, 6>;
       Utilities::MPI::RemotePointEvaluation<dim> remote(1e-6, true);
       remote.reinit({x}, tria, body.get_mapping());
       if (!remote.all_points_found())
@@ -240,7 +367,8 @@ namespace ddcontact
                             v.displacement[1],
                             v.stress[0][0],
                             v.stress[1][1],
-                            v.stress[0][1]}};
+                            v.stress[0][1],
+                            v.out_of_plane}};
             }
           }
         });
@@ -250,6 +378,7 @@ namespace ddcontact
       result.stress[0][0] = v[2];
       result.stress[1][1] = v[3];
       result.stress[0][1] = v[4];
+      result.out_of_plane = v[5];
     }
     else
     {
@@ -265,7 +394,8 @@ namespace ddcontact
                                      &body.get_dof_handler()),
                         found.second);
     }
-    result.von_mises = body.get_material().von_mises(result.stress);
+    result.von_mises =
+      body.get_material().von_mises(result.stress, result.out_of_plane);
     return result;
   }
 

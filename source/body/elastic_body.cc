@@ -17,6 +17,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <ddcontact/body/boundary_data_checks.h>
+#include <ddcontact/body/axis_of_symmetry.h>
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/body/refinement_transfer.h>
 #include <ddcontact/tasks.h>
@@ -57,6 +58,8 @@ namespace ddcontact
   ElasticBody<dim>::make_mesh(const std::string &work_directory)
   {
     mesh.make(boundary_conditions, work_directory);
+    if (get_geometry() == Geometry::axisymmetric)
+      AxisOfSymmetry::check_meridian_section(mesh.triangulation(), name());
   }
 
   template <int dim>
@@ -211,6 +214,8 @@ namespace ddcontact
     for (const auto &[id, d] : boundary_conditions.dirichlet)
       VectorTools::interpolate_boundary_values(
         get_mapping(), dof_handler, id, *d.displacement, constraints, d.mask);
+    if (get_geometry() == Geometry::axisymmetric)
+      AxisOfSymmetry::constrain_axis(dof_handler, constraints);
     setup_rigid_modes();
     constraints.close();
     if (mesh.is_distributed())
@@ -249,7 +254,12 @@ namespace ddcontact
     closed.copy_from(constraints);
     closed.close();
     rigid_modes.reinit(
-      dof_handler, get_mapping(), boundary_conditions, closed, partitioner);
+      dof_handler,
+      get_mapping(),
+      boundary_conditions,
+      closed,
+      partitioner,
+      get_geometry() == Geometry::axisymmetric);
     // Every process that stores a fixed dof holds its line.
     for (const auto i : rigid_modes.fixing_dofs())
       if (constraints.can_store_line(i))

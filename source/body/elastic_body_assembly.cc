@@ -158,6 +158,8 @@ namespace ddcontact
     // With reduced volumetric integration the lambda term is added below,
     // on its own quadrature.
     const double lambda_full = (volumetric_quadrature != nullptr) ? 0. : lambda;
+    const Geometry geometry     = get_geometry();
+    const bool     axisymmetric = geometry == Geometry::axisymmetric;
 
     const UpdateFlags cell_flags = update_values | update_gradients |
                                    update_quadrature_points | update_JxW_values;
@@ -183,19 +185,26 @@ namespace ddcontact
 
       std::vector<SymmetricTensor<2, dim>> eps(dofs_per_cell);
       std::vector<double>                  div(dofs_per_cell);
+      // The hoop strain u_r / r of an axisymmetric body (0 in plane
+      // strain, where the sums below then add exact zeros).
+      std::vector<double> hoop(dofs_per_cell, 0.);
       for (const unsigned int q : fe_values.quadrature_point_indices())
       {
+        const Point<dim> &x = fe_values.quadrature_point(q);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
         {
           eps[i] = fe_values[displacement].symmetric_gradient(i, q);
-          div[i] = trace(eps[i]);
+          if (axisymmetric)
+            hoop[i] = fe_values[displacement].value(i, q)[0] / x[0];
+          div[i] = trace(eps[i]) + hoop[i];
         }
-        const double JxW = fe_values.JxW(q);
+        const double JxW = fe_values.JxW(q) * section_measure(geometry, x);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
         {
           for (unsigned int j = 0; j < dofs_per_cell; ++j)
             cell_matrix(i, j) +=
-              (lambda_full * div[i] * div[j] + 2. * mu * (eps[i] * eps[j])) *
+              (lambda_full * div[i] * div[j] +
+               2. * mu * (eps[i] * eps[j] + hoop[i] * hoop[j])) *
               JxW;
           if (boundary_conditions.body_force)
           {
@@ -233,8 +242,9 @@ namespace ddcontact
           if (dirichlet != boundary_conditions.dirichlet.end() &&
               dirichlet->second.mask[c])
             continue;
-          cell_rhs(i) +=
-            fe_face.shape_value(i, q) * traction[q](c) * fe_face.JxW(q);
+          cell_rhs(i) += fe_face.shape_value(i, q) * traction[q](c) *
+                         fe_face.JxW(q) *
+                         section_measure(geometry, fe_face.quadrature_point(q));
         }
     };
 
@@ -268,7 +278,9 @@ namespace ddcontact
     using Iterator = typename DoFHandler<dim>::active_cell_iterator;
     const FEValuesExtractors::Vector displacement(0);
     const double                     lambda = material.lambda();
-    const UpdateFlags flags = update_gradients | update_JxW_values;
+    const Geometry                   geometry = get_geometry();
+    const UpdateFlags flags = update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values;
 
     // Selective reduced integration: lambda div u div v on one Gauss point
     // per cell. For nu -> 1/2 (lambda/mu -> infinity) the full rule forces
@@ -295,12 +307,18 @@ namespace ddcontact
       std::vector<double> div(dofs_per_cell);
       for (const unsigned int q : fe_values.quadrature_point_indices())
       {
+        // div u + u_r / r in axisymmetry: the whole volumetric strain.
+        const Point<dim> &x = fe_values.quadrature_point(q);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
           div[i] = fe_values[displacement].divergence(i, q);
+          if (geometry == Geometry::axisymmetric)
+            div[i] += fe_values[displacement].value(i, q)[0] / x[0];
+        }
+        const double JxW = fe_values.JxW(q) * section_measure(geometry, x);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           for (unsigned int j = 0; j < dofs_per_cell; ++j)
-            copy.matrices[0](i, j) +=
-              lambda * div[i] * div[j] * fe_values.JxW(q);
+            copy.matrices[0](i, j) += lambda * div[i] * div[j] * JxW;
       }
     };
     MeshWorker::ScratchData<dim> volumetric_scratch(

@@ -24,7 +24,8 @@ namespace ddcontact
     const Mapping<dim>                                       &mapping,
     const BoundaryConditions<dim>                            &conditions,
     const AffineConstraints<double>                          &constraints,
-    const std::shared_ptr<const Utilities::MPI::Partitioner> &layout)
+    const std::shared_ptr<const Utilities::MPI::Partitioner> &layout,
+    const bool                                                axisymmetric)
   {
     static_assert(dim == 2, "rigid modes are written for 2D");
     modes.clear();
@@ -131,6 +132,15 @@ namespace ddcontact
     for (unsigned int a = 0; a < 3; ++a)
       for (unsigned int b = 0; b < 3; ++b)
         gram(a, b) = total(own_gram[a][b]);
+    // Axisymmetric: the translation in x and the rotation are no motions
+    // of a body of revolution; held, they leave the kernel (the Gram
+    // matrix is semidefinite, so the kernel of the sum is the axial part
+    // of its own).
+    if (axisymmetric)
+    {
+      gram(0, 0) += 1.;
+      gram(2, 2) += 1.;
+    }
     gram.compute_svd();
     const auto &vt = gram.get_svd_vt();
     for (unsigned int k = 0; k < 3; ++k)

@@ -21,8 +21,14 @@ namespace ddcontact
 {
   template <int dim>
   std::vector<std::string>
-  SmoothedStresses<dim>::names()
+  SmoothedStresses<dim>::names() const
   {
+    if (axisymmetric)
+      return {"sigma_rr_smoothed",
+              "sigma_zz_smoothed",
+              "sigma_rz_smoothed",
+              "sigma_hoop_smoothed",
+              "von_mises_smoothed"};
     return {"sigma_11_smoothed",
             "sigma_22_smoothed",
             "sigma_12_smoothed",
@@ -34,6 +40,7 @@ namespace ddcontact
   SmoothedStresses<dim>::SmoothedStresses(const ElasticBody<dim> &body,
                                           const BodyVector       &u)
     : dof_handler(body.get_triangulation())
+    , axisymmetric(body.get_geometry() == Geometry::axisymmetric)
   {
     Assert(!body.is_mesh_distributed(), ExcNotImplemented());
     dof_handler.distribute_dofs(body.get_fe().base_element(0));
@@ -57,7 +64,11 @@ namespace ddcontact
 
     // The stress of u at the quadrature points of the body's assembly
     // (BodyStresses applies a reduced dilatation if the body has one).
-    const auto             stress     = body.stresses(u).at_quadrature_points();
+    std::vector<std::vector<double>> hoop;
+    const auto                       stress =
+      body.stresses(u).at_quadrature_points(axisymmetric ? &hoop : nullptr);
+    // The hoop stress of an axisymmetric body is a fourth field.
+    const unsigned int n_fields = axisymmetric ? 4 : 3;
     const Quadrature<dim> &quadrature = body.get_cell_quadrature();
     FEValues<dim>          fe_values(body.get_mapping(),
                             dof_handler.get_fe(),
@@ -65,9 +76,10 @@ namespace ddcontact
                             update_values | update_JxW_values);
     const std::array<std::array<unsigned int, 2>, 3> components = {
       {{{0, 0}}, {{1, 1}}, {{0, 1}}}};
-    std::vector<Vector<double>> load(3, Vector<double>(dof_handler.n_dofs()));
+    std::vector<Vector<double>> load(n_fields,
+                                     Vector<double>(dof_handler.n_dofs()));
     FullMatrix<double>          cell_mass(n, n);
-    std::vector<Vector<double>> cell_load(3, Vector<double>(n));
+    std::vector<Vector<double>> cell_load(n_fields, Vector<double>(n));
     for (const auto &cell : dof_handler.active_cell_iterators())
     {
       fe_values.reinit(cell);
@@ -83,10 +95,12 @@ namespace ddcontact
             cell_mass(i, j) += phi_i * fe_values.shape_value(j, q);
           for (unsigned int c = 0; c < 3; ++c)
             cell_load[c](i) += phi_i * s[q][components[c][0]][components[c][1]];
+          if (axisymmetric)
+            cell_load[3](i) += phi_i * hoop[cell->active_cell_index()][q];
         }
       cell->get_dof_indices(dofs);
       constraints.distribute_local_to_global(cell_mass, dofs, mass);
-      for (unsigned int c = 0; c < 3; ++c)
+      for (unsigned int c = 0; c < n_fields; ++c)
         constraints.distribute_local_to_global(cell_load[c], dofs, load[c]);
     }
 
@@ -99,7 +113,7 @@ namespace ddcontact
     PreconditionJacobi<SparseMatrix<double>> jacobi;
     jacobi.initialize(mass);
     projected.resize(5, Vector<double>(dof_handler.n_dofs()));
-    for (unsigned int c = 0; c < 3; ++c)
+    for (unsigned int c = 0; c < n_fields; ++c)
     {
       // The last iterate of a diverged run, written for diagnosis, may
       // hold inf or NaN: its projection is NaN, not a failed CG.
@@ -130,8 +144,9 @@ namespace ddcontact
       s[0][0]         = projected[0](i);
       s[1][1]         = projected[1](i);
       s[0][1]         = projected[2](i);
-      projected[3](i) = material.out_of_plane_stress(s);
-      projected[4](i) = material.von_mises(s);
+      if (!axisymmetric)
+        projected[3](i) = material.out_of_plane_stress(s);
+      projected[4](i) = material.von_mises(s, projected[3](i));
     }
   }
 

@@ -270,12 +270,28 @@ namespace ddcontact
       state.max_pressure = std::max(state.max_pressure, -state.sigma_n[q]);
       state.normal_force -= state.sigma_n[q] * pt.JxW;
       if (state.sigma_n[q] < 0)
-        state.contact_length += pt.JxW;
+        state.contact_length += pt.ds;
       state.max_penetration =
         std::max(state.max_penetration, state.u_1n[q] + state.u_2n[q] - pt.gap);
     }
     state.half_width = half_extent(
       pair, [&](const unsigned int q) { return state.sigma_n[q] < 0; });
+    if (pair.get_body_1().get_geometry() == Geometry::axisymmetric)
+    {
+      state.contact_radius = 0;
+      for (unsigned int q = 0; q < state.sigma_n.size(); ++q)
+        if (state.sigma_n[q] < 0)
+          state.contact_radius =
+            std::max(state.contact_radius, pair.points()[q].x[0]);
+      if (!state.slip_state.empty())
+      {
+        state.stick_radius = 0;
+        for (unsigned int q = 0; q < state.slip_state.size(); ++q)
+          if (state.slip_state[q] == NodeState::stick)
+            state.stick_radius =
+              std::max(state.stick_radius, pair.points()[q].x[0]);
+      }
+    }
     // The peak is that of the field written to the CSV and the VTU, at the
     // contact points; the largest nodal multiplier (exact contact, Contact
     // pressure = nodes) lies at a node of S_1 and is kept beside it.

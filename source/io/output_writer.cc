@@ -28,6 +28,7 @@ namespace ddcontact
       StressPostprocessor(const ElasticBody<dim> &body, const BodyVector &u)
         : stresses(body, u)
         , material(body.get_material())
+        , axisymmetric(body.get_geometry() == Geometry::axisymmetric)
       {
       }
 
@@ -44,32 +45,54 @@ namespace ddcontact
               strain[i][j] = 0.5 * (inputs.solution_gradients[q][i][j] +
                                     inputs.solution_gradients[q][j][i]);
           // The body's own stress (2), with its reduced dilatation if any.
-          const auto s = stresses.stress(
-            strain, inputs.template get_cell<dim>()->active_cell_index());
-          auto &out = computed_quantities[q];
-          out(0)    = s[0][0];
-          out(1)    = s[1][1];
-          out(2)    = s[0][1];
-          out(3)    = material.out_of_plane_stress(s);
-          out(4)    = material.von_mises(s);
+          const unsigned int cell =
+            inputs.template get_cell<dim>()->active_cell_index();
+          double hoop = 0.;
+          if (axisymmetric)
+          {
+            Tensor<1, dim> value;
+            Tensor<2, dim> gradient;
+            for (unsigned int i = 0; i < dim; ++i)
+            {
+              value[i]    = inputs.solution_values[q][i];
+              gradient[i] = inputs.solution_gradients[q][i];
+            }
+            hoop = stresses.hoop_strain(inputs.evaluation_points[q],
+                                        value,
+                                        gradient);
+          }
+          const auto   s     = stresses.stress(strain, cell, hoop);
+          const double third = stresses.out_of_plane(strain, cell, hoop);
+          auto        &out   = computed_quantities[q];
+          out(0)             = s[0][0];
+          out(1)             = s[1][1];
+          out(2)             = s[0][1];
+          out(3)             = third;
+          out(4)             = material.von_mises(s, third);
         }
       }
 
       std::vector<std::string>
       get_names() const override
       {
+        // Axisymmetric: r, z and the hoop direction (doc/output.md).
+        if (axisymmetric)
+          return {"sigma_rr", "sigma_zz", "sigma_rz", "sigma_hoop", "von_mises"};
         return {"sigma_11", "sigma_22", "sigma_12", "sigma_33", "von_mises"};
       }
 
       UpdateFlags
       get_needed_update_flags() const override
       {
-        return update_gradients;
+        return axisymmetric ?
+                 update_values | update_gradients | update_quadrature_points :
+                 update_gradients;
       }
 
     private:
       const BodyStresses<dim> stresses;
       const Material          material;
+      const bool              axisymmetric;
     };
 
     std::string
@@ -146,7 +169,7 @@ namespace ddcontact
       if (smooth)
       {
         smoothed = std::make_unique<SmoothedStresses<2>>(body, *solutions[b]);
-        const auto names = SmoothedStresses<2>::names();
+        const auto names = smoothed->names();
         for (unsigned int i = 0; i < names.size(); ++i)
           data_out.add_data_vector(
             smoothed->get_dof_handler(), smoothed->fields()[i], names[i]);

@@ -219,6 +219,8 @@ namespace ddcontact
       c["normal_force"] = state.normal_force;
       c["max_pressure"] = state.max_pressure;
       c["half_width"]   = state.half_width;
+      if (state.contact_radius >= 0)
+        c["contact_radius"] = state.contact_radius;
       add_friction(state, c);
       pairs.push_back(c);
     }
@@ -244,6 +246,8 @@ namespace ddcontact
             << " (at the contact points, as written)";
       if (state.max_nodal_pressure > 0)
         pcout << ", largest nodal multiplier " << state.max_nodal_pressure;
+      if (state.contact_radius >= 0)
+        pcout << ", contact radius " << state.contact_radius;
       pcout << ", half-width " << state.half_width << ", max penetration "
             << state.max_penetration;
       if (!state.t.empty())
@@ -267,7 +271,8 @@ namespace ddcontact
       rows << std::setprecision(8);
       // The von Mises stress at the cell's centre.
       const auto &eta    = a->indicators();
-      const auto  stress = body.stresses().at_cell_centres();
+      std::vector<double> third;
+      const auto          stress = body.stresses().at_cell_centres(&third);
       for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       {
         if (!body.computes(cell))
@@ -280,7 +285,7 @@ namespace ddcontact
         for (const unsigned int v : corners)
           rows << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ',';
         const unsigned int c = cell->active_cell_index();
-        rows << cell->level() << ',' << body.get_material().von_mises(stress[c])
+        rows << cell->level() << ',' << body.get_material().von_mises(stress[c], third[c])
              << ','
              << (eta.size() == body.get_triangulation().n_active_cells()
                    ? eta(c)

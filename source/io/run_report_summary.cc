@@ -247,6 +247,10 @@ namespace ddcontact
         c["max_nodal_pressure"] = state.max_nodal_pressure;
       c["contact_length"]  = state.contact_length;
       c["half_width"]      = state.half_width;
+      if (state.contact_radius >= 0)
+        c["contact_radius"] = state.contact_radius;
+      if (state.stick_radius >= 0)
+        c["stick_radius"] = state.stick_radius;
       c["max_penetration"] = state.max_penetration;
       if (!state.t.empty())
         c["friction"] =

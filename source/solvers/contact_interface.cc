@@ -121,20 +121,57 @@ namespace ddcontact
     {
       std::vector<double> covered(faces.size(), 0.);
       for (const auto &p : points)
-        covered[p.face] += p.JxW;
+        covered[p.face] += p.ds;
       for (unsigned int f = 0; f < faces.size(); ++f)
         dual_face[f] =
           covered[f] > (1. - 1e-10) * faces[f][0].distance(faces[f][1]);
     }
 
+    // With the weight 2 pi r of an axisymmetric zone the biorthogonal
+    // basis of a face is phi = D M^{-1} psi, from its weighted mass matrix
+    // M_ab = int psi_a psi_b w and D = diag(int psi_a w) (the points'
+    // Gauss rule integrates both exactly); for a constant weight this is
+    // 2 psi_a - psi_b above.
+    std::vector<std::array<std::array<double, 2>, 2>> weighted_dual;
+    if (dual &&
+        pair.get_body_1().get_geometry() == Geometry::axisymmetric)
+    {
+      std::vector<std::array<double, 5>> sums(faces.size(), {{0, 0, 0, 0, 0}});
+      for (const auto &p : points)
+      {
+        const auto psi = hats(p);
+        auto      &m   = sums[p.face];
+        m[0] += psi[0] * psi[0] * p.JxW;
+        m[1] += psi[0] * psi[1] * p.JxW;
+        m[2] += psi[1] * psi[1] * p.JxW;
+        m[3] += psi[0] * p.JxW;
+        m[4] += psi[1] * p.JxW;
+      }
+      weighted_dual.resize(faces.size());
+      for (unsigned int f = 0; f < faces.size(); ++f)
+        if (dual_face[f])
+        {
+          const auto  &m   = sums[f];
+          const double det = m[0] * m[2] - m[1] * m[1];
+          weighted_dual[f] = {{{{m[3] * m[2] / det, -m[3] * m[1] / det}},
+                               {{-m[4] * m[1] / det, m[4] * m[0] / det}}}};
+        }
+    }
+
     std::map<std::pair<double, double>, unsigned int> node_of;
     for (unsigned int q = 0; q < points.size(); ++q)
     {
-      const auto  &f      = faces[points[q].face];
-      const auto   psi    = hats(points[q]);
-      const bool   d      = dual_face[points[q].face];
-      const double phi[2] = {d ? 2. * psi[0] - psi[1] : psi[0],
-                             d ? 2. * psi[1] - psi[0] : psi[1]};
+      const auto &f   = faces[points[q].face];
+      const auto  psi = hats(points[q]);
+      const bool  d   = dual_face[points[q].face];
+      double      phi[2] = {d ? 2. * psi[0] - psi[1] : psi[0],
+                            d ? 2. * psi[1] - psi[0] : psi[1]};
+      if (d && !weighted_dual.empty())
+        for (unsigned int a = 0; a < 2; ++a)
+        {
+          const auto &c = weighted_dual[points[q].face][a];
+          phi[a]        = c[0] * psi[0] + c[1] * psi[1];
+        }
       for (unsigned int v = 0; v < 2; ++v)
       {
         const auto [it, inserted] = node_of.emplace(

@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 
 #include <ddcontact/body/boundary_conditions.h>
+#include <ddcontact/body/geometry.h>
 #include <ddcontact/body/material.h>
 #include <ddcontact/parameter_tools.h>
 
@@ -82,6 +83,8 @@ namespace ddcontact
     VolumetricIntegration volumetric_integration = VolumetricIntegration::full;
 
     Material material;
+    // The scene's Geometry (SceneParameters sets it on every body).
+    Geometry geometry = Geometry::plane_strain;
 
     // Boundary conditions as written in the file, parsed by
     // make_boundary_conditions() once the constants are known.

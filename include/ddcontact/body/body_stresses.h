@@ -5,6 +5,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <deal.II/fe/fe_values.h>
+
 #include <deal.II/lac/vector.h>
 
 #include <ddcontact/body/body_vector.h>
@@ -25,7 +27,9 @@ namespace ddcontact
     Point<dim>              x;
     Tensor<1, dim>          displacement;
     SymmetricTensor<2, dim> stress;
-    double                  von_mises = 0.;
+    /** sigma_33 of plane strain, sigma_thetatheta of an axisymmetric body. */
+    double out_of_plane = 0.;
+    double von_mises    = 0.;
   };
 
   /**
@@ -53,20 +57,41 @@ namespace ddcontact
      * outlive this object. */
     BodyStresses(const ElasticBody<dim> &body, const BodyVector &u);
 
-    /** The stress (2) from the strain at a point of the active cell with
-     * index @p cell. */
+    /** The in-plane stress (2) from the strain at a point of the active
+     * cell with index @p cell, and the hoop strain u_r / r there
+     * (axisymmetric bodies; 0 in plane strain). */
     SymmetricTensor<2, dim>
     stress(const SymmetricTensor<2, dim> &strain,
-           const unsigned int             cell) const;
+           const unsigned int             cell,
+           const double                   hoop_strain = 0.) const;
+
+    /** The third normal stress: nu (sigma_11 + sigma_22) in plane strain,
+     * sigma_thetatheta = lambda (tr eps + eps_tt) + 2 mu eps_tt in
+     * axisymmetry (with the cell's reduced dilatation if it has one). */
+    double
+    out_of_plane(const SymmetricTensor<2, dim> &strain,
+                 const unsigned int             cell,
+                 const double                   hoop_strain = 0.) const;
+
+    /** The hoop strain u_r / r at @p x of a displacement with @p value and
+     * @p gradient there; on the axis (where u_r = 0) its limit du_r/dr. 0
+     * in plane strain. */
+    double
+    hoop_strain(const Point<dim>     &x,
+                const Tensor<1, dim> &value,
+                const Tensor<2, dim> &gradient) const;
 
     /** sigma(u) at every quadrature point of every active cell, indexed
-     * [active_cell_index][q]. */
+     * [active_cell_index][q]; the third normal stress (out_of_plane())
+     * into @p third if given. */
     std::vector<std::vector<SymmetricTensor<2, dim>>>
-    at_quadrature_points() const;
+    at_quadrature_points(
+      std::vector<std::vector<double>> *third = nullptr) const;
 
-    /** sigma(u) at the centre of every active cell, by active_cell_index. */
+    /** sigma(u) at the centre of every active cell, by active_cell_index;
+     * the third normal stress into @p third if given. */
     std::vector<SymmetricTensor<2, dim>>
-    at_cell_centres() const;
+    at_cell_centres(std::vector<double> *third = nullptr) const;
 
     /** Displacement, stress and von Mises stress at @p x; throws InputError
      * naming Output/Points if @p x lies outside the body. */
@@ -93,10 +118,25 @@ namespace ddcontact
     Quadrature<dim>
     cell_centre() const;
 
+    /** The strain and the hoop strain of u at the points of @p fe_values
+     * (reinit on a cell; values, gradients and points updated in
+     * axisymmetry). */
+    void
+    strains(const FEValues<dim>                  &fe_values,
+            std::vector<SymmetricTensor<2, dim>> &strain,
+            std::vector<double>                  &hoop) const;
+
+    /** The update flags strains() needs besides @p flags. */
+    UpdateFlags
+    strain_flags(UpdateFlags flags) const;
+
     const ElasticBody<dim> &body;
     const BodyVector       &u;
-    /** div u at the reduced point of every active cell; empty with full
-     * integration. */
+    const bool              axisymmetric;
+    /** Below this r a point is on the axis (AxisOfSymmetry::tolerance). */
+    const double axis_tolerance;
+    /** div u (+ u_r / r in axisymmetry) at the reduced point of every
+     * active cell; empty with full integration. */
     std::vector<double> dilatation;
   };
 } // namespace ddcontact

@@ -22,6 +22,7 @@
 #include <ddcontact/body/body_stresses.h>
 #include <ddcontact/body/body_vector.h>
 #include <ddcontact/body/boundary_conditions.h>
+#include <ddcontact/body/geometry.h>
 #include <ddcontact/body/material.h>
 #include <ddcontact/body/parallel_parameters.h>
 #include <ddcontact/body/rigid_body_modes.h>
@@ -357,6 +358,13 @@ namespace ddcontact
     get_material() const
     {
       return material;
+    }
+
+    /** Plane strain, or an axisymmetric section (x = r, y = z). */
+    Geometry
+    get_geometry() const
+    {
+      return parameters.geometry;
     }
 
     const BoundaryConditions<dim> &

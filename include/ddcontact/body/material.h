@@ -12,7 +12,8 @@ namespace ddcontact
    * doc/method.md with the Lamé parameters
    *   lambda = E nu / ((1+nu)(1-2nu)),  mu = E / (2(1+nu)).
    * The out-of-plane stress of plane strain is sigma_33 = nu (sigma_11 +
-   * sigma_22); it enters the von Mises stress as in the paper.
+   * sigma_22); it enters the von Mises stress as in the paper. An
+   * axisymmetric body's hoop stress is BodyStresses::out_of_plane().
    */
   struct Material
   {
@@ -54,8 +55,17 @@ namespace ddcontact
     double
     von_mises(const SymmetricTensor<2, dim> &s) const
     {
+      return von_mises(s, out_of_plane_stress(s));
+    }
+
+    /** Von Mises stress of the in-plane stress @p s and the third normal
+     * stress @p s33 (sigma_33 of plane strain, sigma_thetatheta of an
+     * axisymmetric body); the third axis is a principal one in both. */
+    template <int dim>
+    double
+    von_mises(const SymmetricTensor<2, dim> &s, const double s33) const
+    {
       const double s11 = s[0][0], s22 = s[1][1], s12 = s[0][1];
-      const double s33 = out_of_plane_stress(s);
       return std::sqrt(0.5 * ((s11 - s22) * (s11 - s22) +
                               (s22 - s33) * (s22 - s33) +
                               (s33 - s11) * (s33 - s11)) +

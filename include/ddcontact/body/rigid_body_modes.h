@@ -62,14 +62,17 @@ namespace ddcontact
      * which dofs are already constrained and may not be chosen (it must
      * hold the lines of the dofs this process owns). The modes are
      * vectors of @p layout (ElasticBody::reinit_vector()). Collective
-     * over a p4est mesh's processes.
+     * over a p4est mesh's processes. An @p axisymmetric section has one
+     * rigid motion only, the translation along the axis (y): a radial
+     * displacement strains the hoops, a rotation leaves the section.
      */
     void
     reinit(const DoFHandler<dim>           &dof_handler,
            const Mapping<dim>              &mapping,
            const BoundaryConditions<dim>   &conditions,
            const AffineConstraints<double> &constraints,
-           const std::shared_ptr<const Utilities::MPI::Partitioner> &layout);
+           const std::shared_ptr<const Utilities::MPI::Partitioner> &layout,
+           bool axisymmetric = false);
 
     /** The modes as vectors of @p layout, which owns the same dofs as the
      * layout they have (ElasticBody::distribute_vectors() adds ghosts). */

@@ -60,13 +60,16 @@ namespace ddcontact
     }
 
     /** sigma_11_smoothed, sigma_22_smoothed, sigma_12_smoothed,
-     * sigma_33_smoothed, von_mises_smoothed. */
-    static std::vector<std::string>
-    names();
+     * sigma_33_smoothed, von_mises_smoothed; sigma_rr_smoothed, ...,
+     * sigma_hoop_smoothed for an axisymmetric body, whose hoop stress is
+     * projected as well. */
+    std::vector<std::string>
+    names() const;
 
   private:
     DoFHandler<dim>             dof_handler;
     std::vector<Vector<double>> projected;
+    bool                        axisymmetric = false;
   };
 } // namespace ddcontact
 

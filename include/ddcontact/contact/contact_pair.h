@@ -60,7 +60,11 @@ namespace ddcontact
   {
     Point<2>                             x;
     Point<2>                             projection;
+    /** The weight of the point: ds of the zone times the section's
+     * measure (2 pi r for an axisymmetric body, Geometry); ds alone for
+     * lengths. */
     double                               JxW = 0;
+    double                               ds  = 0;
     Tensor<1, 2>                         normal;
     double                               gap = 0;
     std::vector<types::global_dof_index> dofs_1, dofs_2;
