@@ -199,6 +199,10 @@ namespace ddcontact
       p["u"]    = Json::array({v.displacement[0], v.displacement[1]});
       p["stress"] =
         Json::array({v.stress[0][0], v.stress[1][1], v.stress[0][1]});
+      // An axisymmetric body's hoop stress (plane strain's sigma_33 is
+      // nu (sigma_11 + sigma_22), not written).
+      if ((*it)->get_geometry() == Geometry::axisymmetric)
+        p["sigma_hoop"] = v.out_of_plane;
       p["von_mises"] = v.von_mises;
       points.push_back(p);
       pcout << "  point " << point.body << " (" << point.x << "): u = ("
