@@ -111,12 +111,12 @@ namespace
            const unsigned int n_r)
   {
     BodyParameters p;
-    p.name                   = "cylinder";
-    p.geometry               = Geometry::axisymmetric;
-    p.degree                 = degree;
-    p.corner_1               = Point<2>(a, 0);
-    p.corner_2               = Point<2>(b, L);
-    p.subdivisions           = {n_r, 1};
+    p.name                    = "cylinder";
+    p.geometry                = Geometry::axisymmetric;
+    p.degree                  = degree;
+    p.corner_1                = Point<2>(a, 0);
+    p.corner_2                = Point<2>(b, L);
+    p.subdivisions            = {n_r, 1};
     p.material.youngs_modulus = 200.;
     p.material.poisson_ratio  = 0.3;
     // Ids of the subdivided rectangle: 0 left (r = a), 1 right, 2 bottom,
@@ -134,21 +134,16 @@ namespace
     // Hanging nodes near the bore, where the solution varies most.
     p.refinement_box = {a, 0, a + 0.5, L};
     p.box_refinement = 1;
-    const Lame lame{a,
-                    b,
-                    pressure,
-                    p.material.lambda(),
-                    p.material.mu()};
-    std::cout << "\nthick cylinder, Q" << degree
-              << ": expected rates L2 " << degree + 1 << ", H1 " << degree
-              << std::endl;
+    const Lame lame{a, b, pressure, p.material.lambda(), p.material.mu()};
+    std::cout << "\nthick cylinder, Q" << degree << ": expected rates L2 "
+              << degree + 1 << ", H1 " << degree << std::endl;
 
     ElasticBody<2> body(p, {});
     body.make_mesh();
-    auto                   &tria = body.get_triangulation();
-    const LameDisplacement  exact(lame);
-    const QGauss<2>         quadrature(degree + 2);
-    RateTable               table;
+    auto                  &tria = body.get_triangulation();
+    const LameDisplacement exact(lame);
+    const QGauss<2>        quadrature(degree + 2);
+    RateTable              table;
     for (unsigned int cycle = 0; cycle < n_cycles; ++cycle)
     {
       if (cycle > 0)
@@ -187,9 +182,8 @@ namespace
     table.write_text(std::cout, TableHandler::org_mode_table);
     // Every rate between consecutive levels within 0.1 of the theory (the
     // levels are in the asymptotic range; measured in the output above).
-    for (const auto &[key, rate] :
-         std::vector<std::pair<std::string, double>>{{"L2", degree + 1.},
-                                                     {"H1", 1. * degree}})
+    for (const auto &[key, rate] : std::vector<std::pair<std::string, double>>{
+           {"L2", degree + 1.}, {"H1", 1. * degree}})
     {
       const auto rates = table.log2_rates(key);
       for (unsigned int i = 0; i < rates.size(); ++i)
@@ -206,14 +200,14 @@ namespace
     const auto   values = body.stresses().at_point(Point<2>(a + 1e-9, L / 2));
     const double hoop_exact = lame.sigma_tt(a);
     const double h = GridTools::minimal_cell_diameter(tria) / std::sqrt(2.);
-    std::cout << "  sigma_tt at the bore " << values.out_of_plane
-              << ", Lamé " << hoop_exact << std::endl;
+    std::cout << "  sigma_tt at the bore " << values.out_of_plane << ", Lamé "
+              << hoop_exact << std::endl;
     check("hoop stress at the bore, relative (O(h) in Q1, O(h^2) in Q2)",
           relative(values.out_of_plane, hoop_exact),
           degree == 1 ? 3. * h : 3. * h * h);
-    const double energy       = body.stresses().strain_energy();
-    const double energy_exact = 0.5 * pressure * lame.u_r(a) * 2. *
-                                numbers::PI * a * L;
+    const double energy = body.stresses().strain_energy();
+    const double energy_exact =
+      0.5 * pressure * lame.u_r(a) * 2. * numbers::PI * a * L;
     std::cout << "  energy " << energy << ", 1/2 p u_r(a) 2 pi a L "
               << energy_exact << std::endl;
     check("energy = work of the pressure on the ring, relative (O(h^2p))",
@@ -230,8 +224,8 @@ namespace
     // the exact one to round-off, the axis included (no condition is
     // written there).
     const double b = 2., L = 1., p_out = 3.;
-    auto         p = cylinder(0., b, L, 1, 3);
-    p.neumann      = "1: " + std::to_string(-p_out) + "; 0";
+    auto         p   = cylinder(0., b, L, 1, 3);
+    p.neumann        = "1: " + std::to_string(-p_out) + "; 0";
     p.refinement_box = {0., 0., 0.5, 0.5};
     p.box_refinement = 1;
     ElasticBody<2> body(p, {});
@@ -251,8 +245,8 @@ namespace
     {
       const auto v = body.stresses().at_point(x);
       u_error      = std::max({u_error,
-                          std::abs(v.displacement[0] - A * x[0]),
-                          std::abs(v.displacement[1])});
+                               std::abs(v.displacement[0] - A * x[0]),
+                               std::abs(v.displacement[1])});
       // sigma_rr = sigma_tt = -p_out, sigma_zz = 2 lambda A, sigma_rz = 0.
       stress_error =
         std::max({stress_error,
@@ -287,7 +281,7 @@ namespace
             ring.get_rigid_modes().description() == "translation in y",
           "a free ring has one rigid mode, the translation along the axis");
 
-    auto q = cylinder(-0.5, 1., 1., 1, 2);
+    auto       q       = cylinder(-0.5, 1., 1., 1, 2);
     const auto message = error_message<InputError>(
       [&]()
       {

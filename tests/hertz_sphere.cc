@@ -46,12 +46,13 @@ main(int argc, char **argv)
 
     // The radius from the whole profile: p^2 is linear in r^2.
     const double a_fit = hertz_half_width(*simulation);
-    std::cout << std::setprecision(6) << "\nbox refinement " << level << ": P " << P << ", a "
-              << a_fit << " (largest r in contact " << state.contact_radius
-              << "), Hertz " << a_exact << "; p0 " << state.max_pressure
-              << ", Hertz " << p0_exact << std::endl;
+    std::cout << std::setprecision(6) << "\nbox refinement " << level << ": P "
+              << P << ", a " << a_fit << " (largest r in contact "
+              << state.contact_radius << "), Hertz " << a_exact << "; p0 "
+              << state.max_pressure << ", Hertz " << p0_exact << std::endl;
     error_p0.push_back(relative(state.max_pressure, p0_exact));
-    check("contact radius from the profile, relative", relative(a_fit, a_exact),
+    check("contact radius from the profile, relative",
+          relative(a_fit, a_exact),
           0.005);
     // The largest r of a point in contact: known to a cell.
     check("contact radius (largest r in contact) within one cell, / h",
@@ -66,10 +67,10 @@ main(int argc, char **argv)
     double      profile = 0, edge = 0;
     for (unsigned int q = 0; q < points.size(); ++q)
     {
-      const double r     = points[q].x[0];
-      const double hertz = r < a_exact ?
-                             p0_exact * std::sqrt(1. - r * r / (a_exact * a_exact)) :
-                             0.;
+      const double r = points[q].x[0];
+      const double hertz =
+        r < a_exact ? p0_exact * std::sqrt(1. - r * r / (a_exact * a_exact))
+                    : 0.;
       const double error = std::abs(-state.sigma_n[q] - hertz) / p0_exact;
       if (r < a_exact - 2. * h)
         profile = std::max(profile, error);
@@ -83,8 +84,8 @@ main(int argc, char **argv)
 
     // The contact force is the support's reaction of the lower body
     // (both totals over the ring).
-    const auto  &lower   = *simulation->get_bodies()[1];
-    BodyVector   load;
+    const auto &lower = *simulation->get_bodies()[1];
+    BodyVector  load;
     lower.reinit_vector(load);
     simulation->get_contact_pairs()[0]->add_unconstrained_contact_load(
       state.sigma_n, lower, load);

@@ -28,27 +28,28 @@ main(int argc, char **argv)
   // difference.
   const double E = 200e3, nu = 0.3, b = 1, c = 2, L = 0.5, delta = 1e-3;
   const double l = E * nu / ((1 + nu) * (1 - 2 * nu)), m = E / (2 * (1 + nu));
-  const double p = delta / (b * (1. / (2. * (l + m)) +
-                                 (b * b / (2. * (l + m)) + c * c / (2. * m)) /
-                                   (c * c - b * b)));
+  const double p =
+    delta /
+    (b * (1. / (2. * (l + m)) +
+          (b * b / (2. * (l + m)) + c * c / (2. * m)) / (c * c - b * b)));
   const double hoop = p * (c * c + b * b) / (c * c - b * b);
 
   std::vector<double> errors;
   for (const unsigned int n : {8u, 16u})
   {
-    const std::string cells = std::to_string(n) + ", 4";
-    const auto        simulation =
-      run_scene(source_dir + "/prm/shrink_fit.prm",
-                {"Output directory=shrink_fit_output"},
-                {"Body shaft/Mesh/Subdivisions=" + cells,
-                 "Body hub/Mesh/Subdivisions=" + cells});
-    const auto state = simulation->get_contact_solver().contact_state(0);
-    const auto bore =
+    const std::string cells      = std::to_string(n) + ", 4";
+    const auto        simulation = run_scene(source_dir + "/prm/shrink_fit.prm",
+                                      {"Output directory=shrink_fit_output"},
+                                      {"Body shaft/Mesh/Subdivisions=" + cells,
+                                              "Body hub/Mesh/Subdivisions=" + cells});
+    const auto        state = simulation->get_contact_solver().contact_state(0);
+    const auto        bore =
       simulation->get_bodies()[1]->stresses().at_point(Point<2>(b, L / 2));
-    std::cout << std::setprecision(8) << "\n" << n
-              << " cells across each cylinder: pressure " << state.max_pressure
-              << ", Lamé " << p << "; hoop stress at the bore "
-              << bore.out_of_plane << ", Lamé " << hoop << std::endl;
+    std::cout << std::setprecision(8) << "\n"
+              << n << " cells across each cylinder: pressure "
+              << state.max_pressure << ", Lamé " << p
+              << "; hoop stress at the bore " << bore.out_of_plane << ", Lamé "
+              << hoop << std::endl;
     errors.push_back(relative(state.max_pressure, p));
     // The pressure is uniform along the fit: every point carries it.
     double spread = 0;
@@ -56,7 +57,8 @@ main(int argc, char **argv)
       spread = std::max(spread, std::abs(-s - state.max_pressure));
     check("pressure uniform along the fit, / p", spread / p, 1e-10);
     check("normal force = p 2 pi b L over the ring, relative",
-          relative(state.normal_force, state.max_pressure * 2. * numbers::PI * b * L),
+          relative(state.normal_force,
+                   state.max_pressure * 2. * numbers::PI * b * L),
           1e-12);
     // The hoop stress at the bore, from the hub's first cell: O(h) (the
     // stress of Q1 is O(h) accurate; h = 1/n, d sigma_tt/dr / sigma_tt is

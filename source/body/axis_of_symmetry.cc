@@ -34,8 +34,8 @@ namespace ddcontact
       if (x[0] < -tol)
       {
         std::ostringstream message;
-        message << "Body " << body_name << "/Mesh: the vertex (" << x[0]
-                << ", " << x[1]
+        message << "Body " << body_name << "/Mesh: the vertex (" << x[0] << ", "
+                << x[1]
                 << ") lies at r = x < 0; an axisymmetric section "
                    "(Geometry = axisymmetric) lies in x >= 0, with the axis "
                    "at x = 0";

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <deal.II/fe/fe.h>
+#include <deal.II/fe/fe_values.h>
 
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/body/reaction_forces.h>
@@ -110,6 +111,47 @@ namespace ddcontact
         f = Utilities::MPI::sum(f, body.get_triangulation().get_communicator());
       return sums;
     }
+
+    /** int u dS / int dS over the faces of boundary id @p id (this
+     * process's cells, summed over the mesh's processes). */
+    template <int dim>
+    Tensor<1, dim>
+    mean_displacement(const ElasticBody<dim>  &body,
+                      const BodyVector        &u,
+                      const types::boundary_id id)
+    {
+      FEFaceValues<dim>                fe_face(body.get_mapping(),
+                                body.get_fe(),
+                                body.get_face_quadrature(),
+                                update_values | update_quadrature_points |
+                                  update_JxW_values);
+      const FEValuesExtractors::Vector displacement(0);
+      std::vector<Tensor<1, dim>>      values(fe_face.n_quadrature_points);
+      Tensor<1, dim>                   integral;
+      double                           area = 0;
+      for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+        if (body.computes(cell))
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == id)
+            {
+              fe_face.reinit(cell, f);
+              fe_face[displacement].get_function_values(u, values);
+              for (const unsigned int q : fe_face.quadrature_point_indices())
+              {
+                const double w =
+                  fe_face.JxW(q) * section_measure(body.get_geometry(),
+                                                   fe_face.quadrature_point(q));
+                integral += w * values[q];
+                area += w;
+              }
+            }
+      // Each cell on one process (BodyMesh::computes()), added over them.
+      for (unsigned int d = 0; d < dim; ++d)
+        integral[d] = body.get_mesh().sum(integral[d]);
+      area = body.get_mesh().sum(area);
+      return area > 0 ? integral / area : integral;
+    }
   } // namespace
 
   template <int dim>
@@ -149,8 +191,9 @@ namespace ddcontact
     for (unsigned int k = 0; k < ids.size(); ++k)
     {
       Support s;
-      s.id    = ids[k];
-      s.force = cells[k] - by_contact[k];
+      s.id           = ids[k];
+      s.force        = cells[k] - by_contact[k];
+      s.displacement = mean_displacement(body, u, ids[k]);
       for (unsigned int c = 0; c < dim; ++c)
         s.prescribed[c] =
           body.get_boundary_conditions().dirichlet.at(ids[k]).mask[c];

@@ -50,7 +50,8 @@ namespace ddcontact
         pairs += (pairs.empty() ? "" : "|") + literal(pair.name);
       const std::string step = R"(-\d{4,})";
       std::string       any =
-        "summary\\.json|history\\.csv|statistics\\.csv|solution\\.pvd|" +
+        "summary\\.json|history\\.csv|statistics\\.csv|solution\\.pvd|"
+        "force_displacement\\.csv|" +
         literal(dump) + "|bodies" + step + "\\.pvtu";
       if (!bodies.empty())
         any += "|(" + bodies + ")" + step + R"((\.\d+)?\.vtu|cells_()" +

@@ -225,7 +225,49 @@ namespace ddcontact
       pairs.push_back(c);
     }
     row["pairs"] = pairs;
+    record_supports(results, step, t, row);
     load_steps.push_back(row);
+  }
+
+  void
+  RunReport::record_supports(const Results     &results,
+                             const unsigned int step,
+                             const double       t,
+                             Json              &row)
+  {
+    Json supports = Json::array();
+    for (const auto &body : results.bodies)
+    {
+      const auto reactions = reactions_of(results, *body);
+      for (const auto &s : reactions.supports())
+      {
+        Json support;
+        support["body"]        = body->name();
+        support["boundary_id"] = s.id;
+        support["displacement"] =
+          Json::array({s.displacement[0], s.displacement[1]});
+        support["force"] = Json::array({s.force[0], s.force[1]});
+        supports.push_back(support);
+        std::ostringstream line;
+        line << std::setprecision(12) << step << ',' << t << ',' << body->name()
+             << ',' << s.id << ',' << s.displacement[0] << ','
+             << s.displacement[1] << ',' << s.force[0] << ',' << s.force[1]
+             << '\n';
+        force_displacement_rows.push_back(line.str());
+      }
+    }
+    row["supports"] = supports;
+    if (!writes_files || supports.empty())
+      return;
+    // The curve of every driven boundary (u and its reaction), one row per
+    // load step and Dirichlet id; the whole file at every step, so that an
+    // interrupted run keeps the steps it finished.
+    OutputFile file(parameters.output_directory + "/force_displacement.csv");
+    auto      &out = file.stream();
+    out << "step,t,body,boundary_id,u_x,u_y,force_x,force_y\n";
+    for (const auto &r : force_displacement_rows)
+      out << r;
+    file.commit();
   }
 
   void
@@ -270,7 +312,7 @@ namespace ddcontact
       std::ostringstream rows;
       rows << std::setprecision(8);
       // The von Mises stress at the cell's centre.
-      const auto &eta    = a->indicators();
+      const auto         &eta = a->indicators();
       std::vector<double> third;
       const auto          stress = body.stresses().at_cell_centres(&third);
       for (const auto &cell : body.get_dof_handler().active_cell_iterators())
@@ -285,8 +327,8 @@ namespace ddcontact
         for (const unsigned int v : corners)
           rows << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ',';
         const unsigned int c = cell->active_cell_index();
-        rows << cell->level() << ',' << body.get_material().von_mises(stress[c], third[c])
-             << ','
+        rows << cell->level() << ','
+             << body.get_material().von_mises(stress[c], third[c]) << ','
              << (eta.size() == body.get_triangulation().n_active_cells()
                    ? eta(c)
                    : 0.)

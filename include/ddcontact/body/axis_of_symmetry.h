@@ -40,7 +40,7 @@ namespace ddcontact
      * @p constraints does not constrain already and can store. Call before
      * constraints.close(). */
     static void
-    constrain_axis(const DoFHandler<2> &dof_handler,
+    constrain_axis(const DoFHandler<2>       &dof_handler,
                    AffineConstraints<double> &constraints);
 
     /** Whether boundary @p face lies on the axis. */

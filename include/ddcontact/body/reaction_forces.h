@@ -42,8 +42,12 @@ namespace ddcontact
      * prescribes (the free ones carry no reaction: about 0). */
     struct Support
     {
-      types::boundary_id    id;
-      Tensor<1, dim>        force;
+      types::boundary_id id;
+      Tensor<1, dim>     force;
+      /** The mean displacement of the id's faces (weighted like every
+       * integral of the body: by 2 pi r if axisymmetric): with the force,
+       * a point of the force-displacement curve of a driven boundary. */
+      Tensor<1, dim>        displacement;
       std::array<bool, dim> prescribed;
     };
 

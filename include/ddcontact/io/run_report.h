@@ -7,6 +7,7 @@
 #include <ddcontact/adaptivity/adaptive_refinement.h>
 #include <ddcontact/body/body_distribution.h>
 #include <ddcontact/body/elastic_body.h>
+#include <ddcontact/body/reaction_forces.h>
 #include <ddcontact/contact/contact_pair.h>
 #include <ddcontact/io/json.h>
 #include <ddcontact/io/run_outcome.h>
@@ -200,6 +201,20 @@ namespace ddcontact
                   const ElasticBody<2> &body,
                   Json                 &json) const;
 
+    /** The reactions of @p body in the current state, loaded by its
+     * contact tractions. Collective over a partitioned mesh. */
+    static ReactionForces<2>
+    reactions_of(const Results &results, const ElasticBody<2> &body);
+
+    /** Each Dirichlet id's mean displacement and reaction at load step
+     * @p step (t): summary.json's load_steps[].supports and the rows of
+     * force_displacement.csv, rewritten whole. Collective. */
+    void
+    record_supports(const Results &results,
+                    unsigned int   step,
+                    double         t,
+                    Json          &row);
+
     /** The values at the requested points, also printed on the screen. */
     Json
     points_json(const Results &results) const;
@@ -233,11 +248,13 @@ namespace ddcontact
     const Timer              &wall_clock;
     const ConditionalOStream &pcout;
     /** Process 0 writes the files. */
-    const bool               writes_files;
-    std::ofstream            statistics;
-    Json                     summary_json;
-    Json                     load_steps = Json::array(); // record_load_step()
-    Json                     load_path;                  // record_load_path()
+    const bool    writes_files;
+    std::ofstream statistics;
+    Json          summary_json;
+    Json          load_steps = Json::array(); // record_load_step()
+    // force_displacement.csv's rows, one per step and Dirichlet id.
+    std::vector<std::string> force_displacement_rows;
+    Json                     load_path;    // record_load_path()
     std::vector<std::string> run_warnings; // record_load_path(), add_warning()
     std::string              last_completed_step;
   };
