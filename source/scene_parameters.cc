@@ -235,11 +235,11 @@ namespace ddcontact
     if (geometry == Geometry::axisymmetric && adaptation.enabled() &&
         adaptation.mode != AdaptationMode::uniform &&
         adaptation.estimator != EstimatorType::kelly)
-      throw InputError("Adaptation/Estimator: " +
-                       to_string(adaptation.estimator) +
-                       " is written for plane strain; with Geometry = "
-                       "axisymmetric use Estimator = kelly (or Mode = "
-                       "uniform)");
+      throw InputError(
+        "Adaptation/Estimator: " + to_string(adaptation.estimator) +
+        " is written for plane strain; with Geometry = "
+        "axisymmetric use Estimator = kelly (or Mode = "
+        "uniform)");
 
     contact_pairs.clear();
     for (const auto &name : split(prm.get("Contact pairs"), ','))

@@ -51,8 +51,8 @@ namespace ddcontact
   BodyStresses<dim>::strain_flags(const UpdateFlags flags) const
   {
     return axisymmetric ? flags | update_values | update_gradients |
-                            update_quadrature_points :
-                          flags | update_gradients;
+                            update_quadrature_points
+                        : flags | update_gradients;
   }
 
   template <int dim>
@@ -198,12 +198,12 @@ namespace ddcontact
   std::pair<double, double>
   BodyStresses<dim>::largest_strain_and_rotation() const
   {
-    FEValues<dim>                    fe_values(body.get_mapping(),
+    FEValues<dim>                        fe_values(body.get_mapping(),
                             body.get_fe(),
                             cell_centre(),
                             strain_flags(update_gradients));
-    const FEValuesExtractors::Vector displacement(0);
-    std::vector<Tensor<2, dim>>      gradient(1);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<Tensor<2, dim>>          gradient(1);
     std::vector<SymmetricTensor<2, dim>> unused(1);
     std::vector<double>                  hoop(1);
     double                               strain = 0, rotation = 0;
@@ -240,7 +240,7 @@ namespace ddcontact
     const FEValuesExtractors::Vector displacement(0);
     std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
     std::vector<double>                  hoop(quadrature.size());
-    const bool                           reduced = !dilatation.empty();
+    const bool                           reduced  = !dilatation.empty();
     const Geometry                       geometry = body.get_geometry();
     double                               energy   = 0;
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
@@ -256,13 +256,13 @@ namespace ddcontact
           if (axisymmetric)
           {
             // 1/2 (sigma : eps + sigma_tt eps_tt), as assembled.
-            const double shear = strain[q] * strain[q] + hoop[q] * hoop[q];
+            const double shear      = strain[q] * strain[q] + hoop[q] * hoop[q];
             const double volumetric = trace(strain[q]) + hoop[q];
-            energy += 0.5 *
-                      (2. * material.mu() * shear +
-                       (reduced ? 0. :
-                                  material.lambda() * volumetric * volumetric)) *
-                      JxW;
+            energy +=
+              0.5 *
+              (2. * material.mu() * shear +
+               (reduced ? 0. : material.lambda() * volumetric * volumetric)) *
+              JxW;
             continue;
           }
           energy += 0.5 *
@@ -285,8 +285,7 @@ namespace ddcontact
           const double d = dilatation[cell->active_cell_index()];
           for (const unsigned int q : fe_reduced.quadrature_point_indices())
             energy += 0.5 * material.lambda() * d * d * fe_reduced.JxW(q) *
-                      section_measure(geometry,
-                                      fe_reduced.quadrature_point(q));
+                      section_measure(geometry, fe_reduced.quadrature_point(q));
         }
     }
     return body.get_mesh().sum(energy);

@@ -16,8 +16,8 @@
 #include <deal.II/numerics/solution_transfer.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <ddcontact/body/boundary_data_checks.h>
 #include <ddcontact/body/axis_of_symmetry.h>
+#include <ddcontact/body/boundary_data_checks.h>
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/body/refinement_transfer.h>
 #include <ddcontact/tasks.h>
@@ -253,13 +253,12 @@ namespace ddcontact
     AffineConstraints<double> closed;
     closed.copy_from(constraints);
     closed.close();
-    rigid_modes.reinit(
-      dof_handler,
-      get_mapping(),
-      boundary_conditions,
-      closed,
-      partitioner,
-      get_geometry() == Geometry::axisymmetric);
+    rigid_modes.reinit(dof_handler,
+                       get_mapping(),
+                       boundary_conditions,
+                       closed,
+                       partitioner,
+                       get_geometry() == Geometry::axisymmetric);
     // Every process that stores a fixed dof holds its line.
     for (const auto i : rigid_modes.fixing_dofs())
       if (constraints.can_store_line(i))

@@ -158,7 +158,7 @@ namespace ddcontact
     // With reduced volumetric integration the lambda term is added below,
     // on its own quadrature.
     const double lambda_full = (volumetric_quadrature != nullptr) ? 0. : lambda;
-    const Geometry geometry     = get_geometry();
+    const Geometry geometry  = get_geometry();
     const bool     axisymmetric = geometry == Geometry::axisymmetric;
 
     const UpdateFlags cell_flags = update_values | update_gradients |
@@ -277,9 +277,9 @@ namespace ddcontact
   {
     using Iterator = typename DoFHandler<dim>::active_cell_iterator;
     const FEValuesExtractors::Vector displacement(0);
-    const double                     lambda = material.lambda();
+    const double                     lambda   = material.lambda();
     const Geometry                   geometry = get_geometry();
-    const UpdateFlags flags = update_values | update_gradients |
+    const UpdateFlags                flags = update_values | update_gradients |
                               update_quadrature_points | update_JxW_values;
 
     // Selective reduced integration: lambda div u div v on one Gauss point

@@ -68,7 +68,7 @@ namespace ddcontact
     const auto                       stress =
       body.stresses(u).at_quadrature_points(axisymmetric ? &hoop : nullptr);
     // The hoop stress of an axisymmetric body is a fourth field.
-    const unsigned int n_fields = axisymmetric ? 4 : 3;
+    const unsigned int     n_fields   = axisymmetric ? 4 : 3;
     const Quadrature<dim> &quadrature = body.get_cell_quadrature();
     FEValues<dim>          fe_values(body.get_mapping(),
                             dof_handler.get_fe(),
@@ -141,9 +141,9 @@ namespace ddcontact
     for (unsigned int i = 0; i < dof_handler.n_dofs(); ++i)
     {
       SymmetricTensor<2, dim> s;
-      s[0][0]         = projected[0](i);
-      s[1][1]         = projected[1](i);
-      s[0][1]         = projected[2](i);
+      s[0][0] = projected[0](i);
+      s[1][1] = projected[1](i);
+      s[0][1] = projected[2](i);
       if (!axisymmetric)
         projected[3](i) = material.out_of_plane_stress(s);
       projected[4](i) = material.von_mises(s, projected[3](i));

@@ -383,10 +383,9 @@ namespace ddcontact
             breaks[piece] +
             gauss.point(q)[0] * (breaks[piece + 1] - breaks[piece]);
           ContactPoint p;
-          p.x = face.a + s * t;
-          p.ds =
-            gauss.weight(q) * (breaks[piece + 1] - breaks[piece]) * length;
-          p.JxW = p.ds * section_measure(body_1.get_geometry(), p.x);
+          p.x  = face.a + s * t;
+          p.ds = gauss.weight(q) * (breaks[piece + 1] - breaks[piece]) * length;
+          p.JxW    = p.ds * section_measure(body_1.get_geometry(), p.x);
           p.normal = face.normal;
           p.face   = zone_1.size() - 1;
           ++report.n_examined;

@@ -57,9 +57,8 @@ namespace ddcontact
               value[i]    = inputs.solution_values[q][i];
               gradient[i] = inputs.solution_gradients[q][i];
             }
-            hoop = stresses.hoop_strain(inputs.evaluation_points[q],
-                                        value,
-                                        gradient);
+            hoop = stresses.hoop_strain(
+              inputs.evaluation_points[q], value, gradient);
           }
           const auto   s     = stresses.stress(strain, cell, hoop);
           const double third = stresses.out_of_plane(strain, cell, hoop);
@@ -77,16 +76,17 @@ namespace ddcontact
       {
         // Axisymmetric: r, z and the hoop direction (doc/output.md).
         if (axisymmetric)
-          return {"sigma_rr", "sigma_zz", "sigma_rz", "sigma_hoop", "von_mises"};
+          return {
+            "sigma_rr", "sigma_zz", "sigma_rz", "sigma_hoop", "von_mises"};
         return {"sigma_11", "sigma_22", "sigma_12", "sigma_33", "von_mises"};
       }
 
       UpdateFlags
       get_needed_update_flags() const override
       {
-        return axisymmetric ?
-                 update_values | update_gradients | update_quadrature_points :
-                 update_gradients;
+        return axisymmetric
+                 ? update_values | update_gradients | update_quadrature_points
+                 : update_gradients;
       }
 
     private:

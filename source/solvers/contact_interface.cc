@@ -133,8 +133,7 @@ namespace ddcontact
     // Gauss rule integrates both exactly); for a constant weight this is
     // 2 psi_a - psi_b above.
     std::vector<std::array<std::array<double, 2>, 2>> weighted_dual;
-    if (dual &&
-        pair.get_body_1().get_geometry() == Geometry::axisymmetric)
+    if (dual && pair.get_body_1().get_geometry() == Geometry::axisymmetric)
     {
       std::vector<std::array<double, 5>> sums(faces.size(), {{0, 0, 0, 0, 0}});
       for (const auto &p : points)
@@ -161,11 +160,11 @@ namespace ddcontact
     std::map<std::pair<double, double>, unsigned int> node_of;
     for (unsigned int q = 0; q < points.size(); ++q)
     {
-      const auto &f   = faces[points[q].face];
-      const auto  psi = hats(points[q]);
-      const bool  d   = dual_face[points[q].face];
+      const auto &f      = faces[points[q].face];
+      const auto  psi    = hats(points[q]);
+      const bool  d      = dual_face[points[q].face];
       double      phi[2] = {d ? 2. * psi[0] - psi[1] : psi[0],
-                            d ? 2. * psi[1] - psi[0] : psi[1]};
+                       d ? 2. * psi[1] - psi[0] : psi[1]};
       if (d && !weighted_dual.empty())
         for (unsigned int a = 0; a < 2; ++a)
         {

@@ -92,7 +92,8 @@ namespace ddcontact
   const std::vector<std::pair<std::string, ContactSolverType>> &
   selection_names<ContactSolverType>()
   {
-    static const auto names = [] {
+    static const auto names = []
+    {
       std::vector<std::pair<std::string, ContactSolverType>> list;
       for (const auto &entry : solvers)
         list.emplace_back(entry.name, entry.type);

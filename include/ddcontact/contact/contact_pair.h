@@ -58,8 +58,8 @@ namespace ddcontact
    */
   struct ContactPoint
   {
-    Point<2>                             x;
-    Point<2>                             projection;
+    Point<2> x;
+    Point<2> projection;
     /** The weight of the point: ds of the zone times the section's
      * measure (2 pi r for an axisymmetric body, Geometry); ds alone for
      * lengths. */

@@ -26,13 +26,13 @@ namespace ddcontact
     double max_nodal_pressure        = 0; // over the nodal multipliers, 0: none
     double contact_length            = 0;
     // The integral of the pressure along S_1 (each point's own normal).
-    double normal_force    = 0;
-    double half_width      = 0; // half the arc length of the active set
+    double normal_force = 0;
+    double half_width   = 0; // half the arc length of the active set
     // Axisymmetric zones (Geometry): the largest r of the active set and
     // of the stick zone, the contact and stick radii of a zone about the
     // axis (Hertz's a); -1 in plane strain.
-    double contact_radius = -1;
-    double stick_radius   = -1;
+    double contact_radius  = -1;
+    double stick_radius    = -1;
     double max_penetration = 0;
     // With friction (ContactLaw::get_friction(); empty or 0 without): the
     // tangential traction t at the points (the traction -t tau on body 1),
