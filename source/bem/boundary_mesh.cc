@@ -51,9 +51,8 @@ namespace ddcontact
                        const Point<2>                            &centroid,
                        const unsigned int element_degree)
     {
-      const FiniteElement<2> &fe   = cell->get_fe();
-      const auto              face = cell->face(face_no);
-      BoundaryFace            boundary_face;
+      const auto   face = cell->face(face_no);
+      BoundaryFace boundary_face;
       boundary_face.boundary_id = face->boundary_id();
       for (unsigned int v = 0; v < 2; ++v)
       {
@@ -68,8 +67,9 @@ namespace ddcontact
         {
           // Vertex dofs of FESystem(Q1 or P1, 2) are ordered by
           // component.
-          Assert(fe.face_system_to_component_index(2 * v + c).first == c,
-                 ExcInternalError());
+          Assert(
+            cell->get_fe().face_system_to_component_index(2 * v + c).first == c,
+            ExcInternalError());
           boundary_face.dofs[v][c] = face->vertex_dof_index(v, c);
         }
       }
@@ -80,7 +80,8 @@ namespace ddcontact
         boundary_face.line_dofs[c] = numbers::invalid_dof_index;
         if (element_degree == 2)
         {
-          Assert(fe.face_system_to_component_index(4 + c).first == c,
+          Assert(cell->get_fe().face_system_to_component_index(4 + c).first ==
+                   c,
                  ExcInternalError());
           boundary_face.line_dofs[c] = face->dof_index(c);
         }
