@@ -37,6 +37,98 @@ namespace
            "version\n"
            "  --help                     this text\n";
   }
+
+  /** What the command line asks for. */
+  struct CommandLine
+  {
+    // --help or --version: print that and stop, whatever else is given.
+    bool                     help = false, version = false;
+    bool                     print_parameters = false, json = false;
+    std::string              parameter_file;
+    bool                     output_given = false;
+    std::string              output_directory;
+    std::vector<std::string> overrides;
+  };
+
+  /** Read the command line; an option in error throws, except after
+   * --help or --version, which end the reading. */
+  CommandLine
+  parse_command_line(const int argc, char **argv)
+  {
+    using ddcontact::InputError;
+    CommandLine command_line;
+    for (int i = 1; i < argc; ++i)
+    {
+      const std::string arg = argv[i];
+      if (arg == "--help" || arg == "-h")
+      {
+        command_line.help = true;
+        return command_line;
+      }
+      else if (arg == "--version")
+      {
+        command_line.version = true;
+        return command_line;
+      }
+      else if (arg == "--print-parameters")
+        command_line.print_parameters = true;
+      else if (arg == "--print-parameters-json")
+        command_line.print_parameters = command_line.json = true;
+      else if (arg == "--output" || arg == "--set")
+      {
+        if (i + 1 == argc)
+          throw InputError(arg + " needs a value");
+        if (arg == "--output")
+        {
+          command_line.output_directory = argv[++i];
+          command_line.output_given     = true;
+        }
+        else
+          command_line.overrides.emplace_back(argv[++i]);
+      }
+      else if (arg.rfind("--", 0) == 0)
+        throw InputError("unknown option '" + arg + "' (see --help)");
+      else if (command_line.parameter_file.empty())
+        command_line.parameter_file = arg;
+      else
+        throw InputError("more than one parameter file given ('" +
+                         command_line.parameter_file + "', '" + arg + "')");
+    }
+    return command_line;
+  }
+  /** Print what the command line asks for without a parameter file (the
+   * usage, the version, the default parameters) on the first process
+   * (@p root) and return the exit code; -1 if it asks for more. */
+  int
+  print_without_reading(const CommandLine &command_line, const bool root)
+  {
+    if (command_line.help)
+    {
+      if (root)
+        print_usage(std::cout);
+      return 0;
+    }
+    if (command_line.version)
+    {
+      if (root)
+        std::cout << ddcontact::version_banner() << std::endl;
+      return 0;
+    }
+    if (command_line.print_parameters && command_line.parameter_file.empty())
+    {
+      if (root)
+        ddcontact::ParameterReader::print_defaults(std::cout,
+                                                   command_line.json);
+      return 0;
+    }
+    if (command_line.parameter_file.empty())
+    {
+      if (root)
+        print_usage(std::cerr);
+      return 2;
+    }
+    return -1;
+  }
 } // namespace
 
 int
@@ -59,69 +151,19 @@ main(int argc, char **argv)
     // SIGINT and SIGTERM end the run at the end of its current step.
     interruption::install_handlers();
 
-    std::string              parameter_file, output_directory;
-    std::vector<std::string> overrides;
-    bool print_parameters = false, json = false, output_given = false;
-    for (int i = 1; i < argc; ++i)
-    {
-      const std::string arg = argv[i];
-      if (arg == "--help" || arg == "-h")
-      {
-        if (root)
-          print_usage(std::cout);
-        return 0;
-      }
-      else if (arg == "--version")
-      {
-        if (root)
-          std::cout << version_banner() << std::endl;
-        return 0;
-      }
-      else if (arg == "--print-parameters")
-        print_parameters = true;
-      else if (arg == "--print-parameters-json")
-        print_parameters = json = true;
-      else if (arg == "--output" || arg == "--set")
-      {
-        if (i + 1 == argc)
-          throw InputError(arg + " needs a value");
-        if (arg == "--output")
-        {
-          output_directory = argv[++i];
-          output_given     = true;
-        }
-        else
-          overrides.emplace_back(argv[++i]);
-      }
-      else if (arg.rfind("--", 0) == 0)
-        throw InputError("unknown option '" + arg + "' (see --help)");
-      else if (parameter_file.empty())
-        parameter_file = arg;
-      else
-        throw InputError("more than one parameter file given ('" +
-                         parameter_file + "', '" + arg + "')");
-    }
+    const CommandLine command_line = parse_command_line(argc, argv);
+    if (const int code = print_without_reading(command_line, root); code >= 0)
+      return code;
 
-    if (print_parameters && parameter_file.empty())
-    {
-      if (root)
-        ParameterReader::print_defaults(std::cout, json);
-      return 0;
-    }
-    if (parameter_file.empty())
-    {
-      if (root)
-        print_usage(std::cerr);
-      return 2;
-    }
-
-    if (output_given)
-      overrides.push_back("Output directory=" + output_directory);
+    const std::string       &parameter_file = command_line.parameter_file;
+    std::vector<std::string> overrides      = command_line.overrides;
+    if (command_line.output_given)
+      overrides.push_back("Output directory=" + command_line.output_directory);
     const ParameterReader reader(parameter_file, overrides);
-    if (print_parameters)
+    if (command_line.print_parameters)
     {
       if (root)
-        reader.print(std::cout, json);
+        reader.print(std::cout, command_line.json);
       return 0;
     }
 

@@ -472,24 +472,22 @@ namespace ddcontact
       for (unsigned int i = 0; i + 1 < path.size(); ++i)
         prm.leave_subsection();
     }
-  } // namespace
 
-  ParameterReader::ParameterReader(const std::string              &filename,
-                                   const std::vector<std::string> &overrides)
-  {
-    const ExpandedText input = read_parameter_text(filename);
-    const std::string &text  = input.text;
-
-    // First pass: only the list of bodies matters; everything else in the
-    // file is skipped.
-    std::vector<std::string> body_names, pair_names;
+    /** First pass over the parameter text of @p input: only the lists of
+     * bodies and contact pairs (with their overrides) matter; everything
+     * else in the file is skipped. */
+    void
+    read_listed_names(const ExpandedText             &input,
+                      const std::vector<std::string> &overrides,
+                      std::vector<std::string>       &body_names,
+                      std::vector<std::string>       &pair_names)
     {
       ParameterHandler prescan;
       prescan.declare_entry("Bodies", "", Patterns::Anything());
       prescan.declare_entry("Contact pairs", "", Patterns::Anything());
       try
       {
-        prescan.parse_input_from_string(text, "", true);
+        prescan.parse_input_from_string(input.text, "", true);
       }
       catch (const std::exception &e)
       {
@@ -506,23 +504,14 @@ namespace ddcontact
         check_name(name, "Contact pairs");
     }
 
-    // Second pass: strict.
-    SceneParameters::declare(prm, body_names, pair_names);
-    refuse_retired_sections(input);
-    try
-    {
-      prm.parse_input_from_string(text, "", false);
-    }
-    catch (const std::exception &e)
-    {
-      throw InputError(file_error(message_of(e), input, prm));
-    }
-    for (const auto &o : overrides)
-      apply_override(prm, o);
-
-    // A listed body or pair needs its subsection (in the file, or in an
-    // override of one of its entries): without it every entry would take
-    // its default, and the first complaint would name some default.
+    /** A listed body or pair needs its subsection (in the file @p text, or
+     * in an override of one of its entries): without it every entry would
+     * take its default, and the first complaint would name some default. */
+    void
+    check_listed_sections(const std::string              &text,
+                          const std::vector<std::string> &overrides,
+                          const std::vector<std::string> &body_names,
+                          const std::vector<std::string> &pair_names)
     {
       std::set<std::string> sections;
       std::istringstream    lines(text);
@@ -561,6 +550,32 @@ namespace ddcontact
                              "' is listed, but the file has no subsection '" +
                              prefix + name + "'");
     }
+  } // namespace
+
+  ParameterReader::ParameterReader(const std::string              &filename,
+                                   const std::vector<std::string> &overrides)
+  {
+    const ExpandedText input = read_parameter_text(filename);
+    const std::string &text  = input.text;
+
+    std::vector<std::string> body_names, pair_names;
+    read_listed_names(input, overrides, body_names, pair_names);
+
+    // Second pass: strict.
+    SceneParameters::declare(prm, body_names, pair_names);
+    refuse_retired_sections(input);
+    try
+    {
+      prm.parse_input_from_string(text, "", false);
+    }
+    catch (const std::exception &e)
+    {
+      throw InputError(file_error(message_of(e), input, prm));
+    }
+    for (const auto &o : overrides)
+      apply_override(prm, o);
+
+    check_listed_sections(text, overrides, body_names, pair_names);
 
     try
     {

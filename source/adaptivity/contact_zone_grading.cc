@@ -51,83 +51,85 @@ namespace ddcontact
       remote.reinit(root ? points : std::vector<Point<2>>(), tria, mapping);
       return remote;
     }
-  } // namespace
 
-  unsigned int
-  grade_contact_zone(const ContactPair &pair,
-                     Triangulation<2>  &triangulation_2,
-                     const unsigned int max_level,
-                     const double       ratio)
-  {
-    const auto &body_1 = pair.get_body_1();
-    const auto &body_2 = pair.get_body_2();
-    const auto &zone_1 = pair.zone_faces_1();
-    const auto &points = pair.points();
-
-    // Whether the cell of body 1 that holds each point x (inside a
-    // boundary face of S_1, so in one cell) is flagged: on a p4est mesh
-    // only its owner knows.
-    std::vector<unsigned int> halved(points.size(), 0);
-    const auto               &tria_1 = body_1.get_triangulation();
-    if (body_1.is_mesh_distributed())
+    /** Whether @p cell is not flagged yet and below @p max_level. */
+    bool
+    may_still_refine(const Triangulation<2>::active_cell_iterator &cell,
+                     const unsigned int                            max_level)
     {
-      std::vector<Point<2>> xs;
-      for (const auto &point : points)
-        xs.push_back(point.x);
-      const auto remote = locate(tria_1, body_1.get_mapping(), xs);
-      std::vector<unsigned int> flags, buffer;
-      remote.evaluate_and_process<unsigned int>(
-        flags,
-        buffer,
-        [&](const ArrayView<unsigned int> &values, const auto &cell_data)
-        {
-          for (unsigned int c = 0; c < cell_data.cells.size(); ++c)
-          {
-            const Triangulation<2>::active_cell_iterator cell(
-              &tria_1, cell_data.cells[c].first, cell_data.cells[c].second);
-            for (unsigned int k = cell_data.reference_point_ptrs[c];
-                 k < cell_data.reference_point_ptrs[c + 1];
-                 ++k)
-              values[k] = cell->refine_flag_set() ? 1 : 0;
-          }
-        });
-      const auto &ptrs = remote.get_point_ptrs();
-      for (unsigned int q = 0; q + 1 < ptrs.size(); ++q)
-        if (ptrs[q + 1] > ptrs[q])
-          halved[q] = flags[ptrs[q]];
-      halved = Utilities::MPI::broadcast(tria_1.get_communicator(), halved, 0);
+      return !cell->refine_flag_set() &&
+             static_cast<unsigned int>(cell->level()) < max_level;
     }
-    else
+
+    /** Whether the cell of @p body_1 that holds each point x (inside a
+     * boundary face of S_1, so in one cell) is flagged for refinement (1)
+     * or not (0): on a p4est mesh only its owner knows. */
+    std::vector<unsigned int>
+    flags_at_points(const ElasticBody<2>            &body_1,
+                    const std::vector<ContactPoint> &points)
     {
-      GridTools::Cache<2, 2> cache_1(tria_1, body_1.get_mapping());
-      typename Triangulation<2>::active_cell_iterator hint_1;
-      for (unsigned int q = 0; q < points.size(); ++q)
+      std::vector<unsigned int> halved(points.size(), 0);
+      const auto               &tria_1 = body_1.get_triangulation();
+      if (body_1.is_mesh_distributed())
       {
-        const auto found_1 = GridTools::find_active_cell_around_point(
-          cache_1, points[q].x, hint_1, {}, 1e-10);
-        if (found_1.first.state() == IteratorState::valid)
+        std::vector<Point<2>> xs;
+        for (const auto &point : points)
+          xs.push_back(point.x);
+        const auto remote = locate(tria_1, body_1.get_mapping(), xs);
+        std::vector<unsigned int> flags, buffer;
+        remote.evaluate_and_process<unsigned int>(
+          flags,
+          buffer,
+          [&](const ArrayView<unsigned int> &values, const auto &cell_data)
+          {
+            for (unsigned int c = 0; c < cell_data.cells.size(); ++c)
+            {
+              const Triangulation<2>::active_cell_iterator cell(
+                &tria_1, cell_data.cells[c].first, cell_data.cells[c].second);
+              for (unsigned int k = cell_data.reference_point_ptrs[c];
+                   k < cell_data.reference_point_ptrs[c + 1];
+                   ++k)
+                values[k] = cell->refine_flag_set() ? 1 : 0;
+            }
+          });
+        const auto &ptrs = remote.get_point_ptrs();
+        for (unsigned int q = 0; q + 1 < ptrs.size(); ++q)
+          if (ptrs[q + 1] > ptrs[q])
+            halved[q] = flags[ptrs[q]];
+        halved =
+          Utilities::MPI::broadcast(tria_1.get_communicator(), halved, 0);
+      }
+      else
+      {
+        GridTools::Cache<2, 2> cache_1(tria_1, body_1.get_mapping());
+        typename Triangulation<2>::active_cell_iterator hint_1;
+        for (unsigned int q = 0; q < points.size(); ++q)
         {
-          hint_1    = found_1.first;
-          halved[q] = found_1.first->refine_flag_set() ? 1 : 0;
+          const auto found_1 = GridTools::find_active_cell_around_point(
+            cache_1, points[q].x, hint_1, {}, 1e-10);
+          if (found_1.first.state() == IteratorState::valid)
+          {
+            hint_1    = found_1.first;
+            halved[q] = found_1.first->refine_flag_set() ? 1 : 0;
+          }
         }
       }
+      return halved;
     }
-    // The face of S_1 that holds x as it will be: halved where its cell is
-    // flagged.
-    std::vector<double> h_1(points.size());
-    for (unsigned int q = 0; q < points.size(); ++q)
-      h_1[q] = zone_1[points[q].face][0].distance(zone_1[points[q].face][1]) /
-               (halved[q] ? 2. : 1.);
 
-    unsigned int flagged = 0;
-    const auto   refines = [&](const Triangulation<2>::active_cell_iterator &c)
+    /** The cells of body 2 that hold the projections P(x), on a p4est
+     * mesh: the owner of the cell that holds P(x) decides, with h_1 sent to
+     * it. Returns the number flagged on all processes. */
+    unsigned int
+    flag_cells_at_projections_distributed(
+      const ElasticBody<2>            &body_2,
+      Triangulation<2>                &triangulation_2,
+      const std::vector<ContactPoint> &points,
+      const std::vector<double>       &h_1,
+      const unsigned int               max_level,
+      const double                     ratio)
     {
-      return !c->refine_flag_set() &&
-             static_cast<unsigned int>(c->level()) < max_level;
-    };
-    if (body_2.is_mesh_distributed())
-    {
-      // The owner of the cell that holds P(x) decides, with h_1 sent to it.
+      unsigned int          flagged = 0;
       std::vector<Point<2>> projections;
       for (const auto &point : points)
         projections.push_back(point.projection);
@@ -148,7 +150,8 @@ namespace ddcontact
               cell_data.cells[c].first,
               cell_data.cells[c].second);
             for (unsigned int k = cell_data.reference_point_ptrs[c];
-                 k < cell_data.reference_point_ptrs[c + 1] && refines(cell);
+                 k < cell_data.reference_point_ptrs[c + 1] &&
+                 may_still_refine(cell, max_level);
                  ++k)
             {
               const Point<2> x =
@@ -164,7 +167,32 @@ namespace ddcontact
         });
       return Utilities::MPI::sum(flagged, triangulation_2.get_communicator());
     }
+  } // namespace
 
+  unsigned int
+  grade_contact_zone(const ContactPair &pair,
+                     Triangulation<2>  &triangulation_2,
+                     const unsigned int max_level,
+                     const double       ratio)
+  {
+    const auto &body_2 = pair.get_body_2();
+    const auto &zone_1 = pair.zone_faces_1();
+    const auto &points = pair.points();
+
+    const std::vector<unsigned int> halved =
+      flags_at_points(pair.get_body_1(), points);
+    // The face of S_1 that holds x as it will be: halved where its cell is
+    // flagged.
+    std::vector<double> h_1(points.size());
+    for (unsigned int q = 0; q < points.size(); ++q)
+      h_1[q] = zone_1[points[q].face][0].distance(zone_1[points[q].face][1]) /
+               (halved[q] ? 2. : 1.);
+
+    if (body_2.is_mesh_distributed())
+      return flag_cells_at_projections_distributed(
+        body_2, triangulation_2, points, h_1, max_level, ratio);
+
+    unsigned int           flagged = 0;
     GridTools::Cache<2, 2> cache(triangulation_2, body_2.get_mapping());
     typename Triangulation<2>::active_cell_iterator hint;
     for (unsigned int q = 0; q < points.size(); ++q)
@@ -175,8 +203,9 @@ namespace ddcontact
         continue;
       const auto cell = found.first;
       hint            = cell;
-      if (refines(cell) && nearest_boundary_face_length(
-                             cell, points[q].projection) > ratio * h_1[q])
+      if (may_still_refine(cell, max_level) &&
+          nearest_boundary_face_length(cell, points[q].projection) >
+            ratio * h_1[q])
       {
         cell->set_refine_flag();
         ++flagged;

@@ -145,16 +145,95 @@ namespace ddcontact
     return keys;
   }
 
+  namespace
+  {
+    /** Scatter the H and G blocks @p blocks of collocation point @p point
+     * into its rows of @p system_matrix, @p contact_matrix (the contact
+     * tractions, solved for elsewhere) and @p body_rhs (the known values).
+     * Column swapping (doc/bem-method.md §3.1): c u + H u - G t = 0 with
+     * known values moved to the right-hand side. */
+    void
+    add_collocation_rows(const BoundaryMesh                   &mesh,
+                         const BoundaryMesh::CollocationPoint &point,
+                         const BoundaryIntegration::RowBlocks &blocks,
+                         FullMatrix<double>                   &system_matrix,
+                         FullMatrix<double>                   &contact_matrix,
+                         Vector<double>                       &body_rhs)
+    {
+      const auto        &nodes       = mesh.get_nodes();
+      const auto        &elements    = mesh.get_elements();
+      const unsigned int per_contact = mesh.contact_values_per_element();
+      for (unsigned int r = 0; r < point.rows.size(); ++r)
+      {
+        const unsigned int row = point.rows[r], i = point.components[r];
+        double             rhs = 0;
+        for (unsigned int m = 0; m < nodes.size(); ++m)
+          for (unsigned int j = 0; j < 2; ++j)
+          {
+            const double value = blocks.h[m][i][j];
+            if (nodes[m].known[j])
+              rhs -= value * nodes[m].displacement[j];
+            else
+              system_matrix(row, nodes[m].unknown[j]) += value;
+          }
+        for (unsigned int e = 0; e < elements.size(); ++e)
+        {
+          const auto &element = elements[e];
+          for (unsigned int k = 0; k < mesh.n_element_nodes(); ++k)
+            for (unsigned int j = 0; j < 2; ++j)
+            {
+              const double value = blocks.g[e][k][i][j];
+              if (element.dirichlet[j])
+                system_matrix(row, element.unknown[k][j]) -= value;
+              else if (element.is_contact)
+                contact_matrix(
+                  row, per_contact * element.contact_index + 2 * k + j) +=
+                  value;
+              else
+                rhs += value * element.traction[k][j];
+            }
+        }
+        body_rhs(row) = rhs;
+      }
+    }
+
+    /** Border the system with the free rigid modes (doc/bem-method.md §5.1):
+     * [A R; R^T 0] [x; lambda] = [f; 0]. The solution has no rigid
+     * component and lambda measures the equilibrium defect of the data.
+     * The column enters the collocation rows of the node (2 m + c), so
+     * that the defect goes to the same equations whatever the order of
+     * the nodes (a p4est mesh gathers them in another order); with every
+     * displacement unknown these rows are the unknowns' numbers. */
+    void
+    add_rigid_mode_border(const BoundaryMesh &mesh,
+                          FullMatrix<double> &system_matrix)
+    {
+      const auto        &nodes               = mesh.get_nodes();
+      const auto        &rigid_modes         = mesh.get_rigid_modes();
+      const unsigned int n_boundary_unknowns = mesh.n_unknowns();
+      const unsigned int n_modes             = rigid_modes.size();
+      for (unsigned int q = 0; q < n_modes; ++q)
+        for (unsigned int m = 0; m < nodes.size(); ++m)
+          for (unsigned int c = 0; c < 2; ++c)
+            if (!nodes[m].known[c])
+            {
+              const auto  &node = nodes[m];
+              const double value =
+                rigid_modes[q][c] +
+                rigid_modes[q][2] * (c == 0 ? -node.x[1] : node.x[0]);
+              system_matrix(2 * m + c, n_boundary_unknowns + q)       = value;
+              system_matrix(n_boundary_unknowns + q, node.unknown[c]) = value;
+            }
+    }
+  } // namespace
+
   void
   BoundaryElementSolver::assemble_system(FullMatrix<double> &system_matrix)
   {
     const auto        &nodes               = mesh.get_nodes();
-    const auto        &elements            = mesh.get_elements();
     const auto        &collocation_points  = mesh.get_collocation_points();
-    const auto        &rigid_modes         = mesh.get_rigid_modes();
     const unsigned int n_boundary_unknowns = mesh.n_unknowns();
-    const unsigned int n_modes             = rigid_modes.size();
-    const unsigned int n                   = n_boundary_unknowns + n_modes;
+    const unsigned int n = n_boundary_unknowns + mesh.get_rigid_modes().size();
     system_matrix.reinit(n, n);
     body_rhs.reinit(n);
     const unsigned int per_contact = mesh.contact_values_per_element();
@@ -178,63 +257,13 @@ namespace ddcontact
           if (point.node != numbers::invalid_unsigned_int)
             diagonal_blocks[point.node] = blocks.h[point.node];
 
-          // Column swapping (doc/bem-method.md §3.1): c u + H u - G t = 0 with
-          // known values moved to the right-hand side.
-          for (unsigned int r = 0; r < point.rows.size(); ++r)
-          {
-            const unsigned int row = point.rows[r], i = point.components[r];
-            double             rhs = 0;
-            for (unsigned int m = 0; m < nodes.size(); ++m)
-              for (unsigned int j = 0; j < 2; ++j)
-              {
-                const double value = blocks.h[m][i][j];
-                if (nodes[m].known[j])
-                  rhs -= value * nodes[m].displacement[j];
-                else
-                  system_matrix(row, nodes[m].unknown[j]) += value;
-              }
-            for (unsigned int e = 0; e < elements.size(); ++e)
-            {
-              const auto &element = elements[e];
-              for (unsigned int k = 0; k < mesh.n_element_nodes(); ++k)
-                for (unsigned int j = 0; j < 2; ++j)
-                {
-                  const double value = blocks.g[e][k][i][j];
-                  if (element.dirichlet[j])
-                    system_matrix(row, element.unknown[k][j]) -= value;
-                  else if (element.is_contact)
-                    contact_matrix(
-                      row, per_contact * element.contact_index + 2 * k + j) +=
-                      value;
-                  else
-                    rhs += value * element.traction[k][j];
-                }
-            }
-            body_rhs(row) = rhs;
-          }
+          add_collocation_rows(
+            mesh, point, blocks, system_matrix, contact_matrix, body_rhs);
         }
       },
       8);
 
-    // Border the system with the free rigid modes (doc/bem-method.md §5.1):
-    // [A R; R^T 0] [x; lambda] = [f; 0]. The solution has no rigid
-    // component and lambda measures the equilibrium defect of the data.
-    // The column enters the collocation rows of the node (2 m + c), so
-    // that the defect goes to the same equations whatever the order of
-    // the nodes (a p4est mesh gathers them in another order); with every
-    // displacement unknown these rows are the unknowns' numbers.
-    for (unsigned int q = 0; q < n_modes; ++q)
-      for (unsigned int m = 0; m < nodes.size(); ++m)
-        for (unsigned int c = 0; c < 2; ++c)
-          if (!nodes[m].known[c])
-          {
-            const auto  &node = nodes[m];
-            const double value =
-              rigid_modes[q][c] +
-              rigid_modes[q][2] * (c == 0 ? -node.x[1] : node.x[0]);
-            system_matrix(2 * m + c, n_boundary_unknowns + q)       = value;
-            system_matrix(n_boundary_unknowns + q, node.unknown[c]) = value;
-          }
+    add_rigid_mode_border(mesh, system_matrix);
   }
 
   void

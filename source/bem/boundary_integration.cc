@@ -266,119 +266,184 @@ namespace ddcontact
       }
     }
 
+    namespace
+    {
+      /** The constants of the Kelvin kernels (mu = 1) in the closed forms
+       * below. */
+      struct KernelConstants
+      {
+        explicit KernelConstants(const double nu)
+          : nu(nu)
+          , c_u(-1. / (8. * numbers::PI * (1. - nu)))
+          , a_t((1. - 2. * nu) / (4. * numbers::PI * (1. - nu)))
+        {
+        }
+
+        const double       nu;
+        const double       c_u;
+        const double       a_t;
+        const Tensor<2, 2> identity = unit_symmetric_tensor<2>();
+      };
+
+      /** A linear element @p e adjacent to the collocation node
+       * (doc/bem-method.md §2.4): closed forms of the log kernel integrated
+       * exactly, and of T times the far shape function, which is constant
+       * there because dr/dn = 0 and N_far = s/L cancels the 1/s. The near H
+       * block is left to the rigid-body trick. */
+      void
+      add_adjacent_linear_element(const BoundaryMesh::Element          &element,
+                                  const unsigned int                    e,
+                                  const BoundaryMesh::CollocationPoint &point,
+                                  const KernelConstants                &k_c,
+                                  RowBlocks                            &blocks)
+      {
+        const double        nu = k_c.nu, c_u = k_c.c_u, a_t = k_c.a_t;
+        const Tensor<2, 2> &identity = k_c.identity;
+        const double        L        = element.length;
+        const auto         &tau = element.tangent, &n = element.normal;
+        const unsigned int  k     = element.nodes[0] == point.node ? 0 : 1;
+        const Tensor<1, 2>  rhat  = k == 0 ? tau : Tensor<1, 2>(-tau);
+        const double        log_l = std::log(L);
+        blocks.g[e][k] +=
+          c_u * ((3. - 4. * nu) * (0.5 * L * log_l - 0.75 * L) * identity -
+                 0.5 * L * outer(tau, tau));
+        blocks.g[e][1 - k] +=
+          c_u * ((3. - 4. * nu) * (0.5 * L * log_l - 0.25 * L) * identity -
+                 0.5 * L * outer(tau, tau));
+        blocks.h[element.nodes[1 - k]] +=
+          a_t * (outer(rhat, n) - outer(n, rhat));
+      }
+
+      /** The linear element @p e that holds an off-node collocation point
+       * (doc/bem-method.md §2.7): Cauchy principal values of T N_a, T N_b and
+       * the log integrals in closed form, with the smooth-point free term
+       * delta/2 spread on the two nodes by the shape functions. */
+      void
+      add_own_linear_element(const BoundaryMesh::Element          &element,
+                             const unsigned int                    e,
+                             const BoundaryMesh::CollocationPoint &point,
+                             const KernelConstants                &k_c,
+                             RowBlocks                            &blocks)
+      {
+        const double        nu = k_c.nu, c_u = k_c.c_u, a_t = k_c.a_t;
+        const Tensor<2, 2> &identity = k_c.identity;
+        const double        L        = element.length;
+        const auto         &tau = element.tangent, &n = element.normal;
+        const double        s0 = point.s0, s_a = s0 * L, s_b = (1. - s0) * L;
+        const double        log_ratio = std::log(s_b / s_a);
+        const double        pv_a      = (s_b * log_ratio - L) / L;
+        const double        pv_b      = (L + s_a * log_ratio) / L;
+        const Tensor<2, 2>  twist     = a_t * (outer(tau, n) - outer(n, tau));
+        blocks.h[element.nodes[0]] += pv_a * twist + 0.5 * (1. - s0) * identity;
+        blocks.h[element.nodes[1]] += pv_b * twist + 0.5 * s0 * identity;
+
+        const double i0 = s_b * std::log(s_b) - s_b + s_a * std::log(s_a) - s_a;
+        const double i1 = (0.5 * s_b * s_b * std::log(s_b) - 0.25 * s_b * s_b) -
+                          (0.5 * s_a * s_a * std::log(s_a) - 0.25 * s_a * s_a);
+        const double log_a = (s_b * i0 - i1) / L, log_b = (i1 + s_a * i0) / L;
+        blocks.g[e][0] +=
+          c_u * ((3. - 4. * nu) * log_a * identity - 0.5 * L * outer(tau, tau));
+        blocks.g[e][1] +=
+          c_u * ((3. - 4. * nu) * log_b * identity - 0.5 * L * outer(tau, tau));
+      }
+
+      /** A quadratic element @p e through the collocation point: exact
+       * moments (singular_element_blocks()) at its start (s = 0), end (1),
+       * midpoint (1/2) or off-node point (s0). The block of the collocation
+       * node itself is replaced by the rigid-body trick; an off-node point
+       * is a smooth point of its element and adds the free term delta/2,
+       * spread by the shape functions. */
+      void
+      add_singular_quadratic_element(
+        const BoundaryMesh                   &mesh,
+        const KelvinSolution                 &kelvin,
+        const unsigned int                    e,
+        const BoundaryMesh::CollocationPoint &point,
+        const Tensor<2, 2>                   &identity,
+        RowBlocks                            &blocks)
+      {
+        const BoundaryMesh::Element &element = mesh.get_elements()[e];
+        const double                 s0      = e == point.element ? point.s0
+                                               : element.nodes[0] == point.node ? 0.
+                                               : element.nodes[1] == point.node ? 1.
+                                                                                : 0.5;
+        std::array<Tensor<2, 2>, 3>  g, h;
+        singular_element_blocks(mesh,
+                                kelvin,
+                                element.length,
+                                element.tangent,
+                                element.normal,
+                                s0,
+                                g,
+                                h);
+        const auto shape = mesh.shape_values(s0);
+        for (unsigned int k = 0; k < 3; ++k)
+        {
+          blocks.g[e][k] += g[k];
+          blocks.h[element.nodes[k]] += h[k];
+          if (e == point.element)
+            blocks.h[element.nodes[k]] += 0.5 * shape[k] * identity;
+        }
+      }
+
+      /** An element @p e away from the collocation point @p xi: the kernels
+       * times the shape functions by quadrature. */
+      void
+      add_regular_element(const BoundaryMesh   &mesh,
+                          const KelvinSolution &kelvin,
+                          const unsigned int    e,
+                          const Point<2>       &xi,
+                          RowBlocks            &blocks)
+      {
+        const BoundaryMesh::Element &element = mesh.get_elements()[e];
+        const auto                  &n       = element.normal;
+        auto                        &g       = blocks.g[e];
+        const unsigned int           n_shape = mesh.n_element_nodes();
+        auto integrand = [&](const Point<2> &x, const double s, const double w)
+        {
+          const Tensor<2, 2> u     = kelvin.displacement_kernel(xi, x);
+          const Tensor<2, 2> t     = kelvin.traction_kernel(xi, x, n);
+          const auto         shape = mesh.shape_values(s);
+          for (unsigned int k = 0; k < n_shape; ++k)
+          {
+            g[k] += (w * shape[k]) * u;
+            blocks.h[element.nodes[k]] += (w * shape[k]) * t;
+          }
+        };
+        integrate_element(
+          xi, element.x_a, element.x_b, element.length, integrand);
+      }
+    } // namespace
+
     void
     collocation_row_blocks(const BoundaryMesh                   &mesh,
                            const KelvinSolution                 &kelvin,
                            const BoundaryMesh::CollocationPoint &point,
                            RowBlocks                            &blocks)
     {
-      const auto        &nodes    = mesh.get_nodes();
-      const auto        &elements = mesh.get_elements();
-      const double       nu       = kelvin.nu;
-      const double       c_u = -1. / (8. * numbers::PI * (1. - nu)); // mu = 1
-      const double       a_t = (1. - 2. * nu) / (4. * numbers::PI * (1. - nu));
-      const Tensor<2, 2> identity = unit_symmetric_tensor<2>();
+      const auto           &nodes    = mesh.get_nodes();
+      const auto           &elements = mesh.get_elements();
+      const KernelConstants constants(kelvin.nu);
 
       blocks.h.assign(nodes.size(), Tensor<2, 2>());
       blocks.g.assign(elements.size(), std::array<Tensor<2, 2>, 3>());
-      const Point<2> &xi = point.x;
 
       for (unsigned int e = 0; e < elements.size(); ++e)
       {
         const BoundaryMesh::Element &element = elements[e];
-        const double                 L       = element.length;
-        const auto                  &tau = element.tangent, &n = element.normal;
-
-        const bool on_node =
+        const bool                   on_node =
           point.node != numbers::invalid_unsigned_int &&
           (element.nodes[0] == point.node || element.nodes[1] == point.node ||
            element.nodes[2] == point.node);
         if (mesh.degree() == 1 && on_node)
-        {
-          // Closed forms on the two elements adjacent to the collocation
-          // node (doc/bem-method.md §2.4): the log kernel integrated exactly,
-          // and T times the far shape function, which is constant there because
-          // dr/dn = 0 and N_far = s/L cancels the 1/s. The near H block is
-          // left to the rigid-body trick below.
-          const unsigned int k     = element.nodes[0] == point.node ? 0 : 1;
-          const Tensor<1, 2> rhat  = k == 0 ? tau : Tensor<1, 2>(-tau);
-          const double       log_l = std::log(L);
-          blocks.g[e][k] +=
-            c_u * ((3. - 4. * nu) * (0.5 * L * log_l - 0.75 * L) * identity -
-                   0.5 * L * outer(tau, tau));
-          blocks.g[e][1 - k] +=
-            c_u * ((3. - 4. * nu) * (0.5 * L * log_l - 0.25 * L) * identity -
-                   0.5 * L * outer(tau, tau));
-          blocks.h[element.nodes[1 - k]] +=
-            a_t * (outer(rhat, n) - outer(n, rhat));
-        }
+          add_adjacent_linear_element(element, e, point, constants, blocks);
         else if (mesh.degree() == 1 && e == point.element)
-        {
-          // Off-node collocation point inside its own element
-          // (doc/bem-method.md §2.7): Cauchy principal values of T N_a, T N_b
-          // and the log integrals in closed form, with the smooth-point free
-          // term delta/2 spread on the two nodes by the shape functions.
-          const double       s0 = point.s0, s_a = s0 * L, s_b = (1. - s0) * L;
-          const double       log_ratio = std::log(s_b / s_a);
-          const double       pv_a      = (s_b * log_ratio - L) / L;
-          const double       pv_b      = (L + s_a * log_ratio) / L;
-          const Tensor<2, 2> twist     = a_t * (outer(tau, n) - outer(n, tau));
-          blocks.h[element.nodes[0]] +=
-            pv_a * twist + 0.5 * (1. - s0) * identity;
-          blocks.h[element.nodes[1]] += pv_b * twist + 0.5 * s0 * identity;
-
-          const double i0 =
-            s_b * std::log(s_b) - s_b + s_a * std::log(s_a) - s_a;
-          const double i1 =
-            (0.5 * s_b * s_b * std::log(s_b) - 0.25 * s_b * s_b) -
-            (0.5 * s_a * s_a * std::log(s_a) - 0.25 * s_a * s_a);
-          const double log_a = (s_b * i0 - i1) / L, log_b = (i1 + s_a * i0) / L;
-          blocks.g[e][0] += c_u * ((3. - 4. * nu) * log_a * identity -
-                                   0.5 * L * outer(tau, tau));
-          blocks.g[e][1] += c_u * ((3. - 4. * nu) * log_b * identity -
-                                   0.5 * L * outer(tau, tau));
-        }
+          add_own_linear_element(element, e, point, constants, blocks);
         else if (on_node || e == point.element)
-        {
-          // Quadratic element through the collocation point: exact
-          // moments (singular_element_blocks()) at its start (s = 0), end
-          // (1), midpoint (1/2) or off-node point (s0). The block of the
-          // collocation node itself is replaced by the rigid-body trick
-          // below; an off-node point is a smooth point of its element and
-          // adds the free term delta/2, spread by the shape functions.
-          const double                s0 = e == point.element ? point.s0
-                                           : element.nodes[0] == point.node ? 0.
-                                           : element.nodes[1] == point.node ? 1.
-                                                                            : 0.5;
-          std::array<Tensor<2, 2>, 3> g, h;
-          singular_element_blocks(mesh, kelvin, L, tau, n, s0, g, h);
-          const auto shape = mesh.shape_values(s0);
-          for (unsigned int k = 0; k < 3; ++k)
-          {
-            blocks.g[e][k] += g[k];
-            blocks.h[element.nodes[k]] += h[k];
-            if (e == point.element)
-              blocks.h[element.nodes[k]] += 0.5 * shape[k] * identity;
-          }
-        }
+          add_singular_quadratic_element(
+            mesh, kelvin, e, point, constants.identity, blocks);
         else
-        {
-          auto              &g       = blocks.g[e];
-          const unsigned int n_shape = mesh.n_element_nodes();
-          auto               integrand =
-            [&](const Point<2> &x, const double s, const double w)
-          {
-            const Tensor<2, 2> u     = kelvin.displacement_kernel(xi, x);
-            const Tensor<2, 2> t     = kelvin.traction_kernel(xi, x, n);
-            const auto         shape = mesh.shape_values(s);
-            for (unsigned int k = 0; k < n_shape; ++k)
-            {
-              g[k] += (w * shape[k]) * u;
-              blocks.h[element.nodes[k]] += (w * shape[k]) * t;
-            }
-          };
-          integrate_element(xi, element.x_a, element.x_b, L, integrand);
-        }
+          add_regular_element(mesh, kelvin, e, point.x, blocks);
       }
 
       if (point.node != numbers::invalid_unsigned_int)

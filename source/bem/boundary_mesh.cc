@@ -35,6 +35,210 @@ namespace ddcontact
         archive &x &dofs &line_dofs &boundary_id &reversed;
       }
     };
+
+    /** The vertices of a cell as placed by the mapping
+     * (Mapping::get_vertices()). */
+    using CellVertices =
+      boost::container::small_vector<Point<2>,
+                                     GeometryInfo<2>::vertices_per_cell>;
+
+    /** The boundary face @p face_no of @p cell, with the mapped vertices
+     * @p cell_vertices of the cell and their centroid. */
+    BoundaryFace
+    make_boundary_face(const DoFHandler<2>::active_cell_iterator &cell,
+                       const unsigned int                         face_no,
+                       const CellVertices                        &cell_vertices,
+                       const Point<2>                            &centroid,
+                       const unsigned int element_degree)
+    {
+      const auto   face = cell->face(face_no);
+      BoundaryFace boundary_face;
+      boundary_face.boundary_id = face->boundary_id();
+      for (unsigned int v = 0; v < 2; ++v)
+      {
+        unsigned int cell_vertex = numbers::invalid_unsigned_int;
+        for (const unsigned int cv : cell->vertex_indices())
+          if (cell->vertex_index(cv) == face->vertex_index(v))
+            cell_vertex = cv;
+        Assert(cell_vertex != numbers::invalid_unsigned_int,
+               ExcInternalError());
+        boundary_face.x[v] = cell_vertices[cell_vertex];
+        for (unsigned int c = 0; c < 2; ++c)
+        {
+          // Vertex dofs of FESystem(Q1 or P1, 2) are ordered by
+          // component.
+          Assert(
+            cell->get_fe().face_system_to_component_index(2 * v + c).first == c,
+            ExcInternalError());
+          boundary_face.dofs[v][c] = face->vertex_dof_index(v, c);
+        }
+      }
+      // Line dofs of FESystem(Q2 or P2, 2): one per component, after the
+      // four vertex dofs of the face.
+      for (unsigned int c = 0; c < 2; ++c)
+      {
+        boundary_face.line_dofs[c] = numbers::invalid_dof_index;
+        if (element_degree == 2)
+        {
+          Assert(cell->get_fe().face_system_to_component_index(4 + c).first ==
+                   c,
+                 ExcInternalError());
+          boundary_face.line_dofs[c] = face->dof_index(c);
+        }
+      }
+      const Tensor<1, 2> tangent = boundary_face.x[1] - boundary_face.x[0];
+      const Tensor<1, 2> normal{{tangent[1], -tangent[0]}};
+      const Point<2> midpoint = 0.5 * (boundary_face.x[0] + boundary_face.x[1]);
+      boundary_face.reversed  = normal * (midpoint - centroid) < 0;
+      return boundary_face;
+    }
+
+    /** All boundary faces of the mesh of @p dof_handler. A distributed mesh
+     * (p4est) knows its own cells only: each process takes the faces of its
+     * cells and every process gets all of them. */
+    std::vector<BoundaryFace>
+    collect_boundary_faces(const DoFHandler<2> &dof_handler,
+                           const Mapping<2>    &mapping,
+                           const unsigned int   element_degree)
+    {
+      std::vector<BoundaryFace> faces;
+
+      const auto *distributed =
+        dynamic_cast<const parallel::DistributedTriangulationBase<2> *>(
+          &dof_handler.get_triangulation());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (!cell->at_boundary() || (distributed && !cell->is_locally_owned()))
+          continue;
+        const auto cell_vertices = mapping.get_vertices(cell);
+        Point<2>   centroid;
+        for (const auto &v : cell_vertices)
+          centroid += v / static_cast<double>(cell_vertices.size());
+
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            faces.push_back(make_boundary_face(
+              cell, f, cell_vertices, centroid, element_degree));
+      }
+      if (distributed)
+      {
+        std::vector<BoundaryFace> all;
+        for (const auto &from_process :
+             Utilities::MPI::all_gather(distributed->get_communicator(), faces))
+          all.insert(all.end(), from_process.begin(), from_process.end());
+        faces = std::move(all);
+      }
+      return faces;
+    }
+
+    /** One element per face and one node per vertex; the vertices are told
+     * apart by their dofs (the vertex numbers of a distributed mesh differ
+     * between the processes). */
+    void
+    add_vertex_nodes_and_elements(const std::vector<BoundaryFace>    &faces,
+                                  std::vector<BoundaryMesh::Node>    &nodes,
+                                  std::vector<BoundaryMesh::Element> &elements)
+    {
+      std::map<types::global_dof_index, unsigned int> dof_to_node;
+      for (const auto &face : faces)
+      {
+        BoundaryMesh::Element element;
+        for (unsigned int v = 0; v < 2; ++v)
+        {
+          const auto [it, is_new] =
+            dof_to_node.emplace(face.dofs[v][0], nodes.size());
+          if (is_new)
+          {
+            BoundaryMesh::Node node;
+            node.x_physical = face.x[v];
+            node.dofs       = face.dofs[v];
+            nodes.push_back(node);
+          }
+          element.nodes[v] = it->second;
+        }
+        if (face.reversed)
+          std::swap(element.nodes[0], element.nodes[1]);
+        element.boundary_id = face.boundary_id;
+        elements.push_back(element);
+      }
+    }
+
+    /** Quadratic elements: the midpoint nodes, after all vertices (a
+     * boundary face belongs to one cell, so its line dofs are its own). */
+    void
+    add_midpoint_nodes(const std::vector<BoundaryFace>    &faces,
+                       std::vector<BoundaryMesh::Node>    &nodes,
+                       std::vector<BoundaryMesh::Element> &elements)
+    {
+      for (unsigned int e = 0; e < elements.size(); ++e)
+      {
+        BoundaryMesh::Node node;
+        node.x_physical      = Point<2>(0.5 * (faces[e].x[0] + faces[e].x[1]));
+        node.dofs            = faces[e].line_dofs;
+        node.element_in      = e;
+        node.element_out     = e;
+        node.is_midpoint     = true;
+        elements[e].nodes[2] = nodes.size();
+        nodes.push_back(node);
+      }
+    }
+
+    /** Give every vertex node its incoming and outgoing element. There must
+     * be exactly one of each: the boundary is a set of closed polygons. */
+    void
+    link_elements_at_nodes(const std::vector<BoundaryMesh::Element> &elements,
+                           std::vector<BoundaryMesh::Node>          &nodes)
+    {
+      for (unsigned int e = 0; e < elements.size(); ++e)
+      {
+        auto &in  = nodes[elements[e].nodes[1]].element_in;
+        auto &out = nodes[elements[e].nodes[0]].element_out;
+        if (in != numbers::invalid_unsigned_int ||
+            out != numbers::invalid_unsigned_int)
+          throw InputError("BoundaryElementSolver: the boundary of the mesh is "
+                           "not a set of simple closed polygons (a vertex is "
+                           "shared by more than two boundary faces)");
+        in  = e;
+        out = e;
+      }
+    }
+
+#ifdef DEBUG
+    /** Every node has its two elements, and no node carries a hanging-node
+     * constraint. */
+    void
+    check_nodes(const DoFHandler<2>                   &dof_handler,
+                const std::vector<BoundaryMesh::Node> &nodes)
+    {
+      for (const auto &node : nodes)
+        Assert(node.element_in != numbers::invalid_unsigned_int &&
+                 node.element_out != numbers::invalid_unsigned_int,
+               ExcInternalError());
+
+      // In 2D no hanging node lies on the boundary of a single body
+      // (doc/bem-method.md §2.8), so the trace of the constrained Q1 space is
+      // the space of continuous piecewise linears (quadratics for degree 2)
+      // on this boundary mesh.
+      AffineConstraints<double> hanging_nodes;
+      DoFTools::make_hanging_node_constraints(dof_handler, hanging_nodes);
+      hanging_nodes.close();
+      for (const auto &node : nodes)
+        for (const auto dof : node.dofs)
+          Assert(!hanging_nodes.is_constrained(dof),
+                 ExcMessage("A boundary vertex carries a hanging-node "
+                            "constraint; the BEM trace would be wrong."));
+    }
+#endif
+
+    /** Do two elements meeting at a node continue each other in a straight
+     * line (a smooth node), rather than form a corner? */
+    bool
+    meet_smoothly(const BoundaryMesh::Element &element_in,
+                  const BoundaryMesh::Element &element_out)
+    {
+      const Tensor<1, 2> &a = element_in.tangent, &b = element_out.tangent;
+      return a * b > 0 && std::abs(a[0] * b[1] - a[1] * b[0]) < 1e-8;
+    }
   } // namespace
 
   void
@@ -54,157 +258,26 @@ namespace ddcontact
              fe.n_dofs_per_line() == 2 * (element_degree - 1),
            ExcInternalError());
 
-    std::vector<BoundaryFace> faces;
+    const std::vector<BoundaryFace> faces =
+      collect_boundary_faces(dof_handler, mapping, element_degree);
 
-    // A distributed mesh (p4est) knows its own cells only: each process
-    // takes the faces of its cells and every process gets all of them.
-    const auto *distributed =
-      dynamic_cast<const parallel::DistributedTriangulationBase<2> *>(
-        &dof_handler.get_triangulation());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-    {
-      if (!cell->at_boundary() || (distributed && !cell->is_locally_owned()))
-        continue;
-      const auto cell_vertices = mapping.get_vertices(cell);
-      Point<2>   centroid;
-      for (const auto &v : cell_vertices)
-        centroid += v / static_cast<double>(cell_vertices.size());
-
-      for (const unsigned int f : cell->face_indices())
-      {
-        const auto face = cell->face(f);
-        if (!face->at_boundary())
-          continue;
-        BoundaryFace boundary_face;
-        boundary_face.boundary_id = face->boundary_id();
-        for (unsigned int v = 0; v < 2; ++v)
-        {
-          unsigned int cell_vertex = numbers::invalid_unsigned_int;
-          for (const unsigned int cv : cell->vertex_indices())
-            if (cell->vertex_index(cv) == face->vertex_index(v))
-              cell_vertex = cv;
-          Assert(cell_vertex != numbers::invalid_unsigned_int,
-                 ExcInternalError());
-          boundary_face.x[v] = cell_vertices[cell_vertex];
-          for (unsigned int c = 0; c < 2; ++c)
-          {
-            // Vertex dofs of FESystem(Q1 or P1, 2) are ordered by
-            // component.
-            Assert(dof_handler.get_fe()
-                       .face_system_to_component_index(2 * v + c)
-                       .first == c,
-                   ExcInternalError());
-            boundary_face.dofs[v][c] = face->vertex_dof_index(v, c);
-          }
-        }
-        // Line dofs of FESystem(Q2 or P2, 2): one per component, after the
-        // four vertex dofs of the face.
-        for (unsigned int c = 0; c < 2; ++c)
-        {
-          boundary_face.line_dofs[c] = numbers::invalid_dof_index;
-          if (element_degree == 2)
-          {
-            Assert(fe.face_system_to_component_index(4 + c).first == c,
-                   ExcInternalError());
-            boundary_face.line_dofs[c] = face->dof_index(c);
-          }
-        }
-        const Tensor<1, 2> tangent = boundary_face.x[1] - boundary_face.x[0];
-        const Tensor<1, 2> normal{{tangent[1], -tangent[0]}};
-        const Point<2>     midpoint =
-          0.5 * (boundary_face.x[0] + boundary_face.x[1]);
-        boundary_face.reversed = normal * (midpoint - centroid) < 0;
-        faces.push_back(boundary_face);
-      }
-    }
-    if (distributed)
-    {
-      std::vector<BoundaryFace> all;
-      for (const auto &from_process :
-           Utilities::MPI::all_gather(distributed->get_communicator(), faces))
-        all.insert(all.end(), from_process.begin(), from_process.end());
-      faces = std::move(all);
-    }
-
-    // The nodes are the vertices, told apart by their dofs (the vertex
-    // numbers of a distributed mesh differ between the processes).
-    std::map<types::global_dof_index, unsigned int> dof_to_node;
-    for (const auto &face : faces)
-    {
-      Element element;
-      for (unsigned int v = 0; v < 2; ++v)
-      {
-        const auto [it, is_new] =
-          dof_to_node.emplace(face.dofs[v][0], nodes.size());
-        if (is_new)
-        {
-          Node node;
-          node.x_physical = face.x[v];
-          node.dofs       = face.dofs[v];
-          nodes.push_back(node);
-        }
-        element.nodes[v] = it->second;
-      }
-      if (face.reversed)
-        std::swap(element.nodes[0], element.nodes[1]);
-      element.boundary_id = face.boundary_id;
-      elements.push_back(element);
-    }
+    add_vertex_nodes_and_elements(faces, nodes, elements);
     if (elements.empty())
       throw InputError("BoundaryElementSolver: the mesh has no boundary faces");
-
-    // Quadratic elements: the midpoint nodes, after all vertices (a
-    // boundary face belongs to one cell, so its line dofs are its own).
     if (element_degree == 2)
-      for (unsigned int e = 0; e < elements.size(); ++e)
-      {
-        Node node;
-        node.x_physical      = Point<2>(0.5 * (faces[e].x[0] + faces[e].x[1]));
-        node.dofs            = faces[e].line_dofs;
-        node.element_in      = e;
-        node.element_out     = e;
-        node.is_midpoint     = true;
-        elements[e].nodes[2] = nodes.size();
-        nodes.push_back(node);
-      }
-
-    // Every node must have exactly one incoming and one outgoing element:
-    // the boundary is a set of closed polygons.
-    for (unsigned int e = 0; e < elements.size(); ++e)
-    {
-      auto &in  = nodes[elements[e].nodes[1]].element_in;
-      auto &out = nodes[elements[e].nodes[0]].element_out;
-      if (in != numbers::invalid_unsigned_int ||
-          out != numbers::invalid_unsigned_int)
-        throw InputError("BoundaryElementSolver: the boundary of the mesh is "
-                         "not a set of simple closed polygons (a vertex is "
-                         "shared by more than two boundary faces)");
-      in  = e;
-      out = e;
-    }
+      add_midpoint_nodes(faces, nodes, elements);
+    link_elements_at_nodes(elements, nodes);
 
 #ifdef DEBUG
-    for (const auto &node : nodes)
-      Assert(node.element_in != numbers::invalid_unsigned_int &&
-               node.element_out != numbers::invalid_unsigned_int,
-             ExcInternalError());
-
-    // In 2D no hanging node lies on the boundary of a single body
-    // (doc/bem-method.md §2.8), so the trace of the constrained Q1 space is the
-    // space of continuous piecewise linears (quadratics for degree 2) on
-    // this boundary mesh.
-    {
-      AffineConstraints<double> hanging_nodes;
-      DoFTools::make_hanging_node_constraints(dof_handler, hanging_nodes);
-      hanging_nodes.close();
-      for (const auto &node : nodes)
-        for (const auto dof : node.dofs)
-          Assert(!hanging_nodes.is_constrained(dof),
-                 ExcMessage("A boundary vertex carries a hanging-node "
-                            "constraint; the BEM trace would be wrong."));
-    }
+    check_nodes(dof_handler, nodes);
 #endif
 
+    scale_nodes_and_elements();
+  }
+
+  void
+  BoundaryMesh::scale_nodes_and_elements()
+  {
     // Nondimensionalise (doc/bem-method.md §3.3, §5.2): lengths by the
     // bounding-box diagonal of the boundary, which keeps the body far from the
     // degenerate scale of the log kernel; tractions by mu.
@@ -234,6 +307,19 @@ namespace ddcontact
 
   void
   BoundaryMesh::number_unknowns(
+    const BoundaryConditions<2> &boundary_conditions, const double mu)
+  {
+    apply_element_data(boundary_conditions, mu);
+    // Displacement unknowns first, then the traction unknowns.
+    const unsigned int n_displacement_unknowns =
+      number_displacement_unknowns(boundary_conditions);
+    n_boundary_unknowns = number_traction_unknowns(n_displacement_unknowns);
+    set_up_collocation_points();
+    find_rigid_modes();
+  }
+
+  void
+  BoundaryMesh::apply_element_data(
     const BoundaryConditions<2> &boundary_conditions, const double mu)
   {
     // Boundary data of the body: which components are prescribed where,
@@ -266,7 +352,12 @@ namespace ddcontact
                 mu;
       }
     }
+  }
 
+  unsigned int
+  BoundaryMesh::number_displacement_unknowns(
+    const BoundaryConditions<2> &boundary_conditions)
+  {
     unsigned int n = 0;
     for (auto &node : nodes)
       for (unsigned int c = 0; c < 2; ++c)
@@ -293,19 +384,17 @@ namespace ddcontact
           node.displacement[c] = 0;
         }
       }
+    return n;
+  }
 
+  unsigned int
+  BoundaryMesh::number_traction_unknowns(unsigned int n)
+  {
     // Unknown tractions: at element ends where the component is prescribed
     // as displacement. Two ends meeting at a straight (smooth) node with
     // the displacement prescribed on both sides share one unknown; at a
     // genuine corner they are independent and get an extra collocation row
     // (doc/bem-method.md §2.7).
-    const auto is_smooth =
-      [&](const unsigned int e_in, const unsigned int e_out)
-    {
-      const Tensor<1, 2> &a = elements[e_in].tangent,
-                         &b = elements[e_out].tangent;
-      return a * b > 0 && std::abs(a[0] * b[1] - a[1] * b[0]) < 1e-8;
-    };
     for (auto &element : elements)
       for (unsigned int c = 0; c < 2; ++c)
         element.unknown[1][c] =
@@ -320,7 +409,8 @@ namespace ddcontact
           continue;
         }
         const unsigned int e_in = nodes[element.nodes[0]].element_in;
-        if (elements[e_in].dirichlet[c] && is_smooth(e_in, e))
+        if (elements[e_in].dirichlet[c] &&
+            meet_smoothly(elements[e_in], elements[e]))
           element.unknown[0][c] = elements[e_in].unknown[1][c];
         else
           element.unknown[0][c] = n++;
@@ -332,8 +422,12 @@ namespace ddcontact
         element.unknown[2][c] = (element_degree == 2 && element.dirichlet[c])
                                   ? n++
                                   : numbers::invalid_unsigned_int;
-    n_boundary_unknowns = n;
+    return n;
+  }
 
+  void
+  BoundaryMesh::set_up_collocation_points()
+  {
     // Collocation: both components at every node, rows 2i + c, then the
     // extra off-node rows at D-D corners (vertices), inside the outgoing
     // element at s0 = 1/4 (any s0 in (0,1) that is not a node works).
@@ -361,7 +455,7 @@ namespace ddcontact
                 point.s0 * (elements[e_out].x_b - elements[e_out].x_a);
       for (unsigned int c = 0; c < 2; ++c)
         if (elements[e_in].dirichlet[c] && elements[e_out].dirichlet[c] &&
-            !is_smooth(e_in, e_out))
+            !meet_smoothly(elements[e_in], elements[e_out]))
         {
           point.components.push_back(c);
           point.rows.push_back(row++);
@@ -375,8 +469,6 @@ namespace ddcontact
                            std::to_string(row) +
                            ") differs from the number of unknowns (" +
                            std::to_string(n_boundary_unknowns) + ")"));
-
-    find_rigid_modes();
   }
 
   void

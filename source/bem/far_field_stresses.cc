@@ -83,6 +83,24 @@ namespace ddcontact
       static const ChebyshevRule rule;
       return rule;
     }
+    /** Sort the elements @p candidates into those well separated from the
+     * box of centre @p centre and half-diagonal @p radius (@p far: at least
+     * 4 radius from the centre) and the others (@p near). */
+    void
+    separate_far_elements(const std::vector<BoundaryMesh::Element> &elements,
+                          const Point<2>                           &centre,
+                          const double                              radius,
+                          const std::vector<unsigned int>          &candidates,
+                          std::vector<unsigned int>                &far,
+                          std::vector<unsigned int>                &near)
+    {
+      for (const unsigned int e : candidates)
+        (BoundaryIntegration::point_segment_distance(
+           centre, elements[e].x_a, elements[e].x_b) >= 4. * radius
+           ? far
+           : near)
+          .push_back(e);
+    }
   } // namespace
 
   FarFieldStresses::FarFieldStresses(const BoundaryMesh   &mesh,
@@ -213,6 +231,40 @@ namespace ddcontact
     return stress;
   }
 
+  SymmetricTensor<2, 2>
+  FarFieldStresses::inherited_stress(
+    const TargetBox                          *parent,
+    const std::vector<SymmetricTensor<2, 2>> *parent_values,
+    const Point<2>                           &y) const
+  {
+    const ChebyshevRule &cheb = chebyshev_rule();
+    return parent
+             ? cheb.interpolate(parent->lower, parent->side, *parent_values, y)
+             : SymmetricTensor<2, 2>();
+  }
+
+  std::vector<SymmetricTensor<2, 2>>
+  FarFieldStresses::values_at_chebyshev_nodes(
+    const TargetBox                          &box,
+    const std::vector<unsigned int>          &far,
+    const TargetBox                          *parent,
+    const std::vector<SymmetricTensor<2, 2>> *parent_values) const
+  {
+    const ChebyshevRule &cheb    = chebyshev_rule();
+    const unsigned int   n_nodes = ChebyshevRule::n * ChebyshevRule::n;
+    std::vector<SymmetricTensor<2, 2>> values(n_nodes);
+    for (unsigned int kx = 0; kx < ChebyshevRule::n; ++kx)
+      for (unsigned int ky = 0; ky < ChebyshevRule::n; ++ky)
+      {
+        const Point<2> node = box.lower + Tensor<1, 2>({box.side * cheb.t[kx],
+                                                        box.side * cheb.t[ky]});
+        values[kx * ChebyshevRule::n + ky] =
+          inherited_stress(parent, parent_values, node) +
+          BoundaryIntegration::somigliana_stress(mesh, kelvin, node, far);
+      }
+    return values;
+  }
+
   void
   FarFieldStresses::stresses_in_box(
     const std::vector<Point<2>>              &x,
@@ -226,24 +278,14 @@ namespace ddcontact
     const std::uint64_t                       key,
     const unsigned int                        depth) const
   {
-    const ChebyshevRule &cheb = chebyshev_rule();
-    // What the ancestors' far elements contribute at y: their Chebyshev
-    // interpolant (y lies in the parent box).
-    const auto inherited = [&](const Point<2> &y)
-    {
-      return parent ? cheb.interpolate(
-                        parent->lower, parent->side, *parent_values, y)
-                    : SymmetricTensor<2, 2>();
-    };
-
     // A leaf (few points in the whole set): its remaining elements are
     // integrated at the points.
-    const unsigned int n_nodes = ChebyshevRule::n * ChebyshevRule::n;
     if (!std::binary_search(subdivided.begin(), subdivided.end(), key))
     {
       for (const std::size_t i : points)
-        stress[i] = inherited(x[i]) + BoundaryIntegration::somigliana_stress(
-                                        mesh, kelvin, x[i], candidates);
+        stress[i] = inherited_stress(parent, parent_values, x[i]) +
+                    BoundaryIntegration::somigliana_stress(
+                      mesh, kelvin, x[i], candidates);
       return;
     }
 
@@ -257,14 +299,9 @@ namespace ddcontact
     const double   radius = box.side / std::sqrt(2.);
     const Point<2> centre =
       box.lower + Tensor<1, 2>({0.5 * box.side, 0.5 * box.side});
-    const auto               &elements = mesh.get_elements();
     std::vector<unsigned int> far, near;
-    for (const unsigned int e : candidates)
-      (BoundaryIntegration::point_segment_distance(
-         centre, elements[e].x_a, elements[e].x_b) >= 4. * radius
-         ? far
-         : near)
-        .push_back(e);
+    separate_far_elements(
+      mesh.get_elements(), centre, radius, candidates, far, near);
     candidates.clear();
 
     // With no new far element the children interpolate the ancestors'
@@ -274,17 +311,7 @@ namespace ddcontact
     const std::vector<SymmetricTensor<2, 2>> *child_values = parent_values;
     if (!far.empty())
     {
-      values.resize(n_nodes);
-      for (unsigned int kx = 0; kx < ChebyshevRule::n; ++kx)
-        for (unsigned int ky = 0; ky < ChebyshevRule::n; ++ky)
-        {
-          const Point<2> node =
-            box.lower +
-            Tensor<1, 2>({box.side * cheb.t[kx], box.side * cheb.t[ky]});
-          values[kx * ChebyshevRule::n + ky] =
-            inherited(node) +
-            BoundaryIntegration::somigliana_stress(mesh, kelvin, node, far);
-        }
+      values       = values_at_chebyshev_nodes(box, far, parent, parent_values);
       child_parent = &box;
       child_values = &values;
     }

@@ -36,6 +36,234 @@ namespace ddcontact
     return index;
   }
 
+  namespace
+  {
+    /** Index of the entry of largest magnitude (the first one on a tie). */
+    unsigned int
+    index_of_largest(const std::vector<double> &v)
+    {
+      return static_cast<unsigned int>(
+        std::max_element(v.begin(),
+                         v.end(),
+                         [](double a, double b)
+                         { return std::abs(a) < std::abs(b); }) -
+        v.begin());
+    }
+
+    double
+    squared_norm(const std::vector<double> &v)
+    {
+      double sum = 0;
+      for (const double x : v)
+        sum += x * x;
+      return sum;
+    }
+
+    /** The rows (or columns) of a block of @p size checked after the
+     * crosses: the first and last few, and a stride. */
+    std::vector<unsigned int>
+    sample_indices(const unsigned int size)
+    {
+      std::vector<unsigned int> s;
+      const unsigned int        stride = std::max(1u, size / 16);
+      for (unsigned int k = 0; k < size; ++k)
+        if (k < 4 || k + 4 >= size || k % stride == 0)
+          s.push_back(k);
+      return s;
+    }
+
+    /** The crosses u_l v_l^T of an adaptive cross approximation of one
+     * block of a matrix, built one at a time from rows and columns of the
+     * residual (the block minus the crosses so far), so that the block is
+     * never formed; with the squared Frobenius norm of their sum. */
+    class CrossApproximation
+    {
+    public:
+      CrossApproximation(const FullMatrix<double> &matrix,
+                         const unsigned int        row_begin,
+                         const unsigned int        row_end,
+                         const unsigned int        column_begin,
+                         const unsigned int        column_end)
+        : matrix(matrix)
+        , row_begin(row_begin)
+        , column_begin(column_begin)
+        , m(row_end - row_begin)
+        , n(column_end - column_begin)
+        , row_used(m, false)
+      {
+      }
+
+      /** Crosses through the rows of largest |u| entry, starting at row
+       * @p next, until two successive ones are below @p tolerance relative
+       * to the whole approximation (or the rank is full); @p next is left
+       * at the row the next cross would take. */
+      void
+      add_crosses_until_small(unsigned int &next, const double tolerance)
+      {
+        unsigned int n_small = 0;
+        while (us.size() < max_rank() && n_small < 2)
+        {
+          if (!add_cross(next))
+          {
+            const auto unused =
+              std::find(row_used.begin(), row_used.end(), false);
+            if (unused == row_used.end())
+              break;
+            next = unused - row_used.begin();
+            continue;
+          }
+          n_small     = (squared_norm(us.back()) * squared_norm(vs.back()) <=
+                     tolerance * tolerance * norm2)
+                          ? n_small + 1
+                          : 0;
+          double best = -1;
+          for (unsigned int r = 0; r < m; ++r)
+            if (!row_used[r] && std::abs(us.back()[r]) > best)
+            {
+              best = std::abs(us.back()[r]);
+              next = r;
+            }
+          if (best < 0)
+            break;
+        }
+      }
+
+      /** The unused row where the residual of the sample rows and columns,
+       * scaled to the whole block, is largest, or m if there is none;
+       * @p worst is that estimate of the squared residual norm. */
+      unsigned int
+      worst_sampled_row(double &worst)
+      {
+        worst                  = 0;
+        unsigned int worst_row = m;
+        for (const unsigned int i : sample_indices(m))
+        {
+          residual_row(i, row);
+          const double estimate = squared_norm(row) * m;
+          if (estimate > worst && !row_used[i])
+          {
+            worst     = estimate;
+            worst_row = i;
+          }
+        }
+        for (const unsigned int j : sample_indices(n))
+        {
+          residual_column(j, column);
+          const unsigned int i        = index_of_largest(column);
+          const double       estimate = squared_norm(column) * n;
+          if (estimate > worst && !row_used[i])
+          {
+            worst     = estimate;
+            worst_row = i;
+          }
+        }
+        return worst_row;
+      }
+
+      unsigned int
+      max_rank() const
+      {
+        return std::min(m, n);
+      }
+
+      unsigned int
+      rank() const
+      {
+        return us.size();
+      }
+
+      /** Squared Frobenius norm of the approximation. */
+      double
+      squared_norm_of_approximation() const
+      {
+        return norm2;
+      }
+
+      /** The crosses as the columns of U (m x rank) and V (n x rank). */
+      void
+      copy_to(FullMatrix<double> &U, FullMatrix<double> &V) const
+      {
+        const unsigned int rank = us.size();
+        U.reinit(m, rank);
+        V.reinit(n, rank);
+        for (unsigned int l = 0; l < rank; ++l)
+        {
+          for (unsigned int r = 0; r < m; ++r)
+            U(r, l) = us[l][r];
+          for (unsigned int j = 0; j < n; ++j)
+            V(j, l) = vs[l][j];
+        }
+      }
+
+    private:
+      /** Entry (i, j) of the residual. */
+      double
+      residual(const unsigned int i, const unsigned int j) const
+      {
+        double value = matrix(row_begin + i, column_begin + j);
+        for (std::size_t l = 0; l < us.size(); ++l)
+          value -= us[l][i] * vs[l][j];
+        return value;
+      }
+
+      void
+      residual_row(const unsigned int i, std::vector<double> &r) const
+      {
+        r.resize(n);
+        for (unsigned int j = 0; j < n; ++j)
+          r[j] = residual(i, j);
+      }
+
+      void
+      residual_column(const unsigned int j, std::vector<double> &c) const
+      {
+        c.resize(m);
+        for (unsigned int i = 0; i < m; ++i)
+          c[i] = residual(i, j);
+      }
+
+      /** One cross through row i of the residual; false if that row is
+       * zero. */
+      bool
+      add_cross(const unsigned int i)
+      {
+        row_used[i] = true;
+        residual_row(i, row);
+        const unsigned int pivot = index_of_largest(row);
+        if (row[pivot] == 0.)
+          return false;
+        residual_column(pivot, column);
+        std::vector<double> v(n);
+        for (unsigned int j = 0; j < n; ++j)
+          v[j] = row[j] / row[pivot];
+        double cross = 0;
+        for (std::size_t l = 0; l < us.size(); ++l)
+        {
+          double uu = 0, vv = 0;
+          for (unsigned int r = 0; r < m; ++r)
+            uu += column[r] * us[l][r];
+          for (unsigned int j = 0; j < n; ++j)
+            vv += v[j] * vs[l][j];
+          cross += uu * vv;
+        }
+        const double u2v2 = squared_norm(column) * squared_norm(v);
+        norm2 += u2v2 + 2 * cross;
+        us.push_back(column);
+        vs.push_back(std::move(v));
+        return true;
+      }
+
+      const FullMatrix<double>        &matrix;
+      const unsigned int               row_begin, column_begin;
+      const unsigned int               m, n;
+      std::vector<std::vector<double>> us, vs;
+      std::vector<bool>                row_used;
+      double                           norm2 = 0;
+      // Work space for one row and one column of the residual.
+      std::vector<double> row, column;
+    };
+  } // namespace
+
   void
   HodlrMatrix::compress(const FullMatrix<double> &matrix,
                         const unsigned int        row_begin,
@@ -55,161 +283,23 @@ namespace ddcontact
     // boundary meet), so the result is then checked on sample rows and
     // columns (the first and last few, and a stride), and the
     // approximation continues from the worst one until they pass.
-    const unsigned int               m = row_end - row_begin;
-    const unsigned int               n = column_end - column_begin;
-    std::vector<std::vector<double>> us, vs;
-    std::vector<bool>                row_used(m, false);
-    double                           norm2 = 0;
+    CrossApproximation approximation(
+      matrix, row_begin, row_end, column_begin, column_end);
+    const unsigned int m    = row_end - row_begin;
+    unsigned int       next = 0;
+    while (approximation.rank() < approximation.max_rank())
+    {
+      approximation.add_crosses_until_small(next, tolerance);
 
-    // Entry (i, j) of the residual: the block minus the crosses so far.
-    const auto residual = [&](const unsigned int i, const unsigned int j)
-    {
-      double value = matrix(row_begin + i, column_begin + j);
-      for (std::size_t l = 0; l < us.size(); ++l)
-        value -= us[l][i] * vs[l][j];
-      return value;
-    };
-    const auto residual_row = [&](const unsigned int i, std::vector<double> &r)
-    {
-      r.resize(n);
-      for (unsigned int j = 0; j < n; ++j)
-        r[j] = residual(i, j);
-    };
-    const auto residual_column =
-      [&](const unsigned int j, std::vector<double> &c)
-    {
-      c.resize(m);
-      for (unsigned int i = 0; i < m; ++i)
-        c[i] = residual(i, j);
-    };
-    const auto largest = [](const std::vector<double> &v)
-    {
-      return static_cast<unsigned int>(
-        std::max_element(v.begin(),
-                         v.end(),
-                         [](double a, double b)
-                         { return std::abs(a) < std::abs(b); }) -
-        v.begin());
-    };
-    const auto squared_norm = [](const std::vector<double> &v)
-    {
-      double sum = 0;
-      for (const double x : v)
-        sum += x * x;
-      return sum;
-    };
-
-    // One cross through row i of the residual; false if that row is zero.
-    std::vector<double> row, column;
-    const auto          add_cross = [&](const unsigned int i)
-    {
-      row_used[i] = true;
-      residual_row(i, row);
-      const unsigned int pivot = largest(row);
-      if (row[pivot] == 0.)
-        return false;
-      residual_column(pivot, column);
-      std::vector<double> v(n);
-      for (unsigned int j = 0; j < n; ++j)
-        v[j] = row[j] / row[pivot];
-      double cross = 0;
-      for (std::size_t l = 0; l < us.size(); ++l)
-      {
-        double uu = 0, vv = 0;
-        for (unsigned int r = 0; r < m; ++r)
-          uu += column[r] * us[l][r];
-        for (unsigned int j = 0; j < n; ++j)
-          vv += v[j] * vs[l][j];
-        cross += uu * vv;
-      }
-      const double u2v2 = squared_norm(column) * squared_norm(v);
-      norm2 += u2v2 + 2 * cross;
-      us.push_back(column);
-      vs.push_back(std::move(v));
-      return true;
-    };
-
-    const unsigned int max_rank = std::min(m, n);
-    unsigned int       next     = 0;
-    while (us.size() < max_rank)
-    {
-      // Crosses until two successive ones are below the tolerance.
-      unsigned int n_small = 0;
-      while (us.size() < max_rank && n_small < 2)
-      {
-        if (!add_cross(next))
-        {
-          const auto unused =
-            std::find(row_used.begin(), row_used.end(), false);
-          if (unused == row_used.end())
-            break;
-          next = unused - row_used.begin();
-          continue;
-        }
-        n_small     = (squared_norm(us.back()) * squared_norm(vs.back()) <=
-                   tolerance * tolerance * norm2)
-                        ? n_small + 1
-                        : 0;
-        double best = -1;
-        for (unsigned int r = 0; r < m; ++r)
-          if (!row_used[r] && std::abs(us.back()[r]) > best)
-          {
-            best = std::abs(us.back()[r]);
-            next = r;
-          }
-        if (best < 0)
-          break;
-      }
-
-      // Check: the residual of sample rows and columns, scaled to the
-      // whole block, against the tolerance.
-      double       worst     = 0;
-      unsigned int worst_row = m;
-      const auto   sample    = [](const unsigned int size)
-      {
-        std::vector<unsigned int> s;
-        const unsigned int        stride = std::max(1u, size / 16);
-        for (unsigned int k = 0; k < size; ++k)
-          if (k < 4 || k + 4 >= size || k % stride == 0)
-            s.push_back(k);
-        return s;
-      };
-      for (const unsigned int i : sample(m))
-      {
-        residual_row(i, row);
-        const double estimate = squared_norm(row) * m;
-        if (estimate > worst && !row_used[i])
-        {
-          worst     = estimate;
-          worst_row = i;
-        }
-      }
-      for (const unsigned int j : sample(n))
-      {
-        residual_column(j, column);
-        const unsigned int i        = largest(column);
-        const double       estimate = squared_norm(column) * n;
-        if (estimate > worst && !row_used[i])
-        {
-          worst     = estimate;
-          worst_row = i;
-        }
-      }
-      if (worst_row == m || worst <= tolerance * tolerance * norm2)
+      double             worst     = 0;
+      const unsigned int worst_row = approximation.worst_sampled_row(worst);
+      if (worst_row == m ||
+          worst <= tolerance * tolerance *
+                     approximation.squared_norm_of_approximation())
         break;
       next = worst_row;
     }
-
-    const unsigned int rank = us.size();
-    U.reinit(m, rank);
-    V.reinit(n, rank);
-    for (unsigned int l = 0; l < rank; ++l)
-    {
-      for (unsigned int r = 0; r < m; ++r)
-        U(r, l) = us[l][r];
-      for (unsigned int j = 0; j < n; ++j)
-        V(j, l) = vs[l][j];
-    }
+    approximation.copy_to(U, V);
   }
 
   void

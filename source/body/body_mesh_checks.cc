@@ -44,6 +44,186 @@ namespace ddcontact
       return h;
     }
 
+    /** Groups of coincident vertices as a union-find: each group is joined
+     * to its smallest vertex index. */
+    class VertexGroups
+    {
+    public:
+      explicit VertexGroups(const unsigned int n_vertices)
+        : root(n_vertices)
+      {
+        std::iota(root.begin(), root.end(), 0u);
+      }
+
+      /** The first (smallest) vertex of the group of vertex @p i. */
+      unsigned int
+      first_of(unsigned int i)
+      {
+        while (root[i] != i)
+          i = root[i] = root[root[i]];
+        return i;
+      }
+
+      void
+      join(const unsigned int i, const unsigned int j)
+      {
+        const unsigned int a = first_of(i), b = first_of(j);
+        root[std::max(a, b)] = std::min(a, b);
+      }
+
+    private:
+      std::vector<unsigned int> root;
+    };
+
+    /** The used vertices of @p points within @p tolerance of each other,
+     * grouped. Buckets of width tolerance: two such vertices lie in the
+     * same or in neighbouring buckets. */
+    template <int dim>
+    VertexGroups
+    group_coincident_vertices(const std::vector<Point<dim>> &points,
+                              const std::vector<bool>       &used,
+                              const double                   tolerance)
+    {
+      std::map<std::array<long long, 2>, std::vector<unsigned int>> buckets;
+      const auto bucket = [&](const Point<dim> &p)
+      {
+        return std::array<long long, 2>{
+          {static_cast<long long>(std::floor(p[0] / tolerance)),
+           static_cast<long long>(std::floor(p[1] / tolerance))}};
+      };
+      for (unsigned int i = 0; i < points.size(); ++i)
+        if (used[i])
+          buckets[bucket(points[i])].push_back(i);
+      VertexGroups groups(points.size());
+      for (const auto &[key, members] : buckets)
+        for (const unsigned int i : members)
+          for (long long dx = -1; dx <= 1; ++dx)
+            for (long long dy = -1; dy <= 1; ++dy)
+            {
+              const auto near = buckets.find({{key[0] + dx, key[1] + dy}});
+              if (near != buckets.end())
+                for (const unsigned int j : near->second)
+                  if (j > i && points[i].distance(points[j]) <= tolerance)
+                    groups.join(i, j);
+            }
+      return groups;
+    }
+
+    /** The coarse cells of @p tria and its labelled faces, each vertex
+     * replaced by its group's first. The boundary faces keep their ids; a
+     * face between two merged sides of a crack is interior now and loses
+     * its id (a face of a curved manifold keeps its manifold id). */
+    template <int dim>
+    void
+    merged_coarse_mesh(const Triangulation<dim>   &tria,
+                       VertexGroups               &groups,
+                       std::vector<CellData<dim>> &cells,
+                       SubCellData                &faces)
+    {
+      std::map<std::pair<unsigned int, unsigned int>, unsigned int> n_sides;
+      std::vector<CellData<1>>                                      labelled;
+      std::set<unsigned int> labelled_faces;
+      for (const auto &cell : tria.cell_iterators_on_level(0))
+      {
+        CellData<dim> c(cell->n_vertices());
+        for (const unsigned int v : cell->vertex_indices())
+          c.vertices[v] = groups.first_of(cell->vertex_index(v));
+        c.material_id = cell->material_id();
+        c.manifold_id = cell->manifold_id();
+        cells.push_back(c);
+        for (const unsigned int f : cell->face_indices())
+        {
+          const auto face = cell->face(f);
+          ++n_sides[std::minmax(groups.first_of(face->vertex_index(0)),
+                                groups.first_of(face->vertex_index(1)))];
+          if ((face->boundary_id() != numbers::internal_face_boundary_id ||
+               face->manifold_id() != numbers::flat_manifold_id) &&
+              labelled_faces.insert(face->index()).second)
+          {
+            CellData<1> line;
+            line.vertices    = {groups.first_of(face->vertex_index(0)),
+                                groups.first_of(face->vertex_index(1))};
+            line.boundary_id = face->boundary_id();
+            line.manifold_id = face->manifold_id();
+            labelled.push_back(line);
+          }
+        }
+      }
+      std::set<std::pair<unsigned int, unsigned int>> kept;
+      for (auto &line : labelled)
+      {
+        const auto edge = std::minmax(line.vertices[0], line.vertices[1]);
+        if (n_sides[edge] > 1)
+        {
+          if (line.manifold_id == numbers::flat_manifold_id)
+            continue;
+          line.boundary_id = numbers::internal_face_boundary_id;
+        }
+        if (kept.insert(edge).second)
+          faces.boundary_lines.push_back(line);
+      }
+    }
+
+    /** A connected piece of a mesh (coarse cells joined through faces). */
+    template <int dim>
+    struct Piece
+    {
+      unsigned int n_cells = 0;
+      bool         held[2] = {false, false};
+      bool         contact = false;
+      Point<dim>   corner; // its lowest vertex of least x, for messages
+    };
+
+    /** The connected pieces of the coarse mesh of @p tria, with what
+     * @p conditions hold them by. */
+    template <int dim>
+    std::vector<Piece<dim>>
+    connected_pieces(const Triangulation<dim>      &tria,
+                     const BoundaryConditions<dim> &conditions)
+    {
+      const auto below = [](const Point<dim> &a, const Point<dim> &b)
+      { return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]); };
+
+      const unsigned int        none = numbers::invalid_unsigned_int;
+      std::vector<unsigned int> piece_of(tria.n_cells(0), none);
+      std::vector<Piece<dim>>   pieces;
+      std::vector<typename Triangulation<dim>::cell_iterator> stack;
+      for (const auto &start : tria.cell_iterators_on_level(0))
+      {
+        if (piece_of[start->index()] != none)
+          continue;
+        Piece<dim> piece;
+        piece.corner             = start->vertex(0);
+        piece_of[start->index()] = pieces.size();
+        stack                    = {start};
+        while (!stack.empty())
+        {
+          const auto cell = stack.back();
+          stack.pop_back();
+          ++piece.n_cells;
+          for (const unsigned int v : cell->vertex_indices())
+            if (below(cell->vertex(v), piece.corner))
+              piece.corner = cell->vertex(v);
+          for (const unsigned int f : cell->face_indices())
+            if (cell->at_boundary(f))
+            {
+              const auto id        = cell->face(f)->boundary_id();
+              const auto dirichlet = conditions.dirichlet.find(id);
+              if (dirichlet != conditions.dirichlet.end())
+                for (unsigned int c = 0; c < 2; ++c)
+                  piece.held[c] = piece.held[c] || dirichlet->second.mask[c];
+              piece.contact = piece.contact || conditions.contact.count(id) > 0;
+            }
+            else if (piece_of[cell->neighbor_index(f)] == none)
+            {
+              piece_of[cell->neighbor_index(f)] = pieces.size();
+              stack.push_back(cell->neighbor(f));
+            }
+        }
+        pieces.push_back(piece);
+      }
+      return pieces;
+    }
   } // namespace
 
   template <int dim>
@@ -105,44 +285,10 @@ namespace ddcontact
     }
     const double tolerance = 1e-10 * h;
 
-    // Buckets of width tolerance: two vertices within tolerance of each
-    // other lie in the same or in neighbouring buckets. Each group of
-    // coincident vertices is joined to its smallest index (union-find).
-    std::map<std::array<long long, 2>, std::vector<unsigned int>> buckets;
-    const auto bucket = [&](const Point<dim> &p)
-    {
-      return std::array<long long, 2>{
-        {static_cast<long long>(std::floor(p[0] / tolerance)),
-         static_cast<long long>(std::floor(p[1] / tolerance))}};
-    };
-    for (unsigned int i = 0; i < points.size(); ++i)
-      if (used[i])
-        buckets[bucket(points[i])].push_back(i);
-    std::vector<unsigned int> root(points.size());
-    std::iota(root.begin(), root.end(), 0u);
-    const auto find = [&](unsigned int i)
-    {
-      while (root[i] != i)
-        i = root[i] = root[root[i]];
-      return i;
-    };
-    for (const auto &[key, members] : buckets)
-      for (const unsigned int i : members)
-        for (long long dx = -1; dx <= 1; ++dx)
-          for (long long dy = -1; dy <= 1; ++dy)
-          {
-            const auto near = buckets.find({{key[0] + dx, key[1] + dy}});
-            if (near != buckets.end())
-              for (const unsigned int j : near->second)
-                if (j > i && points[i].distance(points[j]) <= tolerance)
-                {
-                  const unsigned int a = find(i), b = find(j);
-                  root[std::max(a, b)] = std::min(a, b);
-                }
-          }
+    VertexGroups groups = group_coincident_vertices(points, used, tolerance);
     unsigned int n_coincident = 0, first = 0;
     for (unsigned int i = 0; i < points.size(); ++i)
-      if (used[i] && find(i) != i && n_coincident++ == 0)
+      if (used[i] && groups.first_of(i) != i && n_coincident++ == 0)
         first = i;
     if (n_coincident == 0)
       return;
@@ -157,55 +303,11 @@ namespace ddcontact
         "; join them in the mesh (Gmsh: Coherence Mesh;) or set Mesh/Merge "
         "coincident vertices = true");
 
-    // The coarse mesh again, each vertex replaced by its group's first.
-    // Its boundary faces keep their ids; a face between two merged sides
-    // of the crack is interior now and loses its id (a face of a curved
-    // manifold keeps its manifold id).
+    // The coarse mesh again, with the groups merged.
     std::vector<Point<dim>>    vertices = points;
     std::vector<CellData<dim>> cells;
     SubCellData                faces;
-    std::map<std::pair<unsigned int, unsigned int>, unsigned int> n_sides;
-    std::vector<CellData<1>>                                      labelled;
-    std::set<unsigned int> labelled_faces;
-    for (const auto &cell : tria->cell_iterators_on_level(0))
-    {
-      CellData<dim> c(cell->n_vertices());
-      for (const unsigned int v : cell->vertex_indices())
-        c.vertices[v] = find(cell->vertex_index(v));
-      c.material_id = cell->material_id();
-      c.manifold_id = cell->manifold_id();
-      cells.push_back(c);
-      for (const unsigned int f : cell->face_indices())
-      {
-        const auto face = cell->face(f);
-        ++n_sides[std::minmax(find(face->vertex_index(0)),
-                              find(face->vertex_index(1)))];
-        if ((face->boundary_id() != numbers::internal_face_boundary_id ||
-             face->manifold_id() != numbers::flat_manifold_id) &&
-            labelled_faces.insert(face->index()).second)
-        {
-          CellData<1> line;
-          line.vertices    = {find(face->vertex_index(0)),
-                              find(face->vertex_index(1))};
-          line.boundary_id = face->boundary_id();
-          line.manifold_id = face->manifold_id();
-          labelled.push_back(line);
-        }
-      }
-    }
-    std::set<std::pair<unsigned int, unsigned int>> kept;
-    for (auto &line : labelled)
-    {
-      const auto edge = std::minmax(line.vertices[0], line.vertices[1]);
-      if (n_sides[edge] > 1)
-      {
-        if (line.manifold_id == numbers::flat_manifold_id)
-          continue;
-        line.boundary_id = numbers::internal_face_boundary_id;
-      }
-      if (kept.insert(edge).second)
-        faces.boundary_lines.push_back(line);
-    }
+    merged_coarse_mesh(*tria, groups, cells, faces);
     GridTools::delete_unused_vertices(vertices, cells, faces);
     if (!is_simplex())
       GridTools::consistently_order_cells(cells);
@@ -234,54 +336,7 @@ namespace ddcontact
   {
     // The coarse cells exist on every process, also on a p4est mesh, and
     // refinement never joins or splits pieces.
-    struct Piece
-    {
-      unsigned int n_cells = 0;
-      bool         held[2] = {false, false};
-      bool         contact = false;
-      Point<dim>   corner; // its lowest vertex of least x, for messages
-    };
-    const auto below = [](const Point<dim> &a, const Point<dim> &b)
-    { return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]); };
-
-    const unsigned int        none = numbers::invalid_unsigned_int;
-    std::vector<unsigned int> piece_of(tria->n_cells(0), none);
-    std::vector<Piece>        pieces;
-    std::vector<typename Triangulation<dim>::cell_iterator> stack;
-    for (const auto &start : tria->cell_iterators_on_level(0))
-    {
-      if (piece_of[start->index()] != none)
-        continue;
-      Piece piece;
-      piece.corner             = start->vertex(0);
-      piece_of[start->index()] = pieces.size();
-      stack                    = {start};
-      while (!stack.empty())
-      {
-        const auto cell = stack.back();
-        stack.pop_back();
-        ++piece.n_cells;
-        for (const unsigned int v : cell->vertex_indices())
-          if (below(cell->vertex(v), piece.corner))
-            piece.corner = cell->vertex(v);
-        for (const unsigned int f : cell->face_indices())
-          if (cell->at_boundary(f))
-          {
-            const auto id        = cell->face(f)->boundary_id();
-            const auto dirichlet = conditions.dirichlet.find(id);
-            if (dirichlet != conditions.dirichlet.end())
-              for (unsigned int c = 0; c < 2; ++c)
-                piece.held[c] = piece.held[c] || dirichlet->second.mask[c];
-            piece.contact = piece.contact || conditions.contact.count(id) > 0;
-          }
-          else if (piece_of[cell->neighbor_index(f)] == none)
-          {
-            piece_of[cell->neighbor_index(f)] = pieces.size();
-            stack.push_back(cell->neighbor(f));
-          }
-      }
-      pieces.push_back(piece);
-    }
+    const std::vector<Piece<dim>> pieces = connected_pieces(*tria, conditions);
     // One piece: RigidBodyModes and the contact pairs judge it.
     if (pieces.size() < 2)
       return;

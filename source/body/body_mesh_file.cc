@@ -193,6 +193,77 @@ namespace ddcontact
       }
       return available;
     }
+
+    /** Mesh the geometry @p geo with the gmsh binary into
+     * @p work_directory, in the legacy ASCII format that GridIn reads
+     * without the Gmsh API; return the name of the .msh file. Under mpirun
+     * every process meshes (gmsh is deterministic) into a file of its own.
+     */
+    std::string
+    mesh_with_gmsh(const std::string &geo,
+                   const std::string &work_directory,
+                   const std::string &body_name,
+                   const std::string &what)
+    {
+      const std::string rank =
+        Utilities::MPI::job_supports_mpi() &&
+            Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1
+          ? "." +
+              std::to_string(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD))
+          : "";
+      const std::string msh = work_directory + "/" + body_name + rank + ".msh";
+      const std::string log =
+        work_directory + "/" + body_name + rank + ".gmsh.log";
+      read_bounded_file(geo, 16u << 20, what); // size and kind only
+      const double timeout = gmsh_time_limit();
+      const int    status  = run_without_shell(
+        {"gmsh", "-2", "-format", "msh22", "-v", "2", "-o", msh, geo},
+        log,
+        timeout);
+      if (status == -2)
+        throw InputError(what + ": gmsh did not finish meshing '" + geo +
+                         "' within " + Utilities::to_string(timeout) +
+                         " s (an endless loop in the .geo?); stopped it "
+                         "(the limit is DDCONTACT_GMSH_TIMEOUT)");
+      if (status != 0)
+      {
+        // The log is in the run's temporary directory, gone with the run:
+        // its last error line goes into the message.
+        std::ifstream in(log);
+        std::string   line, last;
+        while (std::getline(in, line))
+          if (line.find("rror") != std::string::npos || last.empty())
+            last = line;
+        throw InputError(what + ": gmsh could not mesh '" + geo + "'" +
+                         (last.empty() ? "" : " (gmsh: " + last + ")"));
+      }
+      return msh;
+    }
+
+    /** Refuse a mesh file @p file (named @p file_name in the input) that
+     * would not fit into memory, before reading it. Reading takes about 7
+     * times the file's size: the text and its stream, GridIn's vertices and
+     * cells, the triangulation (measured, in Release and Debug: an 87 MB
+     * file of 10^6 quadrilaterals raised the peak memory by 570 MB). */
+    void
+    check_memory_for_reading(const std::string &file,
+                             const std::string &file_name,
+                             const std::string &what)
+    {
+      const double    read_cost = 7.;
+      std::error_code error;
+      const double    bytes  = std::filesystem::file_size(file, error);
+      const double    memory = available_memory();
+      if (!error && memory > 0 && read_cost * bytes > memory)
+      {
+        std::ostringstream s;
+        s << std::setprecision(3) << what << ": reading '" << file_name << "' ("
+          << bytes / 1e6 << " MB) needs about " << read_cost
+          << " times its size, " << read_cost * bytes / 1e9 << " GB, but "
+          << memory / 1e9 << " GB are available; use a coarser mesh";
+        throw InputError(s.str());
+      }
+    }
   } // namespace
 
   template <int dim>
@@ -268,67 +339,14 @@ namespace ddcontact
     std::string source = what; // how read_bounded_file names the .msh
     if (ends_with(".geo"))
     {
-      // Mesh the geometry with the gmsh binary, in the legacy ASCII format
-      // that GridIn reads without the Gmsh API.
-      // Under mpirun every process meshes (gmsh is deterministic) into a
-      // file of its own.
-      const std::string rank =
-        Utilities::MPI::job_supports_mpi() &&
-            Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1
-          ? "." +
-              std::to_string(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD))
-          : "";
-      const std::string msh =
-        work_directory + "/" + parameters.name + rank + ".msh";
-      const std::string log =
-        work_directory + "/" + parameters.name + rank + ".gmsh.log";
-      read_bounded_file(file, 16u << 20, what); // size and kind only
-      const double timeout = gmsh_time_limit();
-      const int    status  = run_without_shell(
-        {"gmsh", "-2", "-format", "msh22", "-v", "2", "-o", msh, file},
-        log,
-        timeout);
-      if (status == -2)
-        throw InputError(what + ": gmsh did not finish meshing '" + file +
-                         "' within " + Utilities::to_string(timeout) +
-                         " s (an endless loop in the .geo?); stopped it "
-                         "(the limit is DDCONTACT_GMSH_TIMEOUT)");
-      if (status != 0)
-      {
-        // The log is in the run's temporary directory, gone with the run:
-        // its last error line goes into the message.
-        std::ifstream in(log);
-        std::string   line, last;
-        while (std::getline(in, line))
-          if (line.find("rror") != std::string::npos || last.empty())
-            last = line;
-        throw InputError(what + ": gmsh could not mesh '" + file + "'" +
-                         (last.empty() ? "" : " (gmsh: " + last + ")"));
-      }
-      source = what + " (the mesh gmsh made of '" + file + "')";
-      file   = msh;
+      file   = mesh_with_gmsh(file, work_directory, parameters.name, what);
+      source = what + " (the mesh gmsh made of '" + file_name + "')";
     }
     else if (!ends_with(".msh"))
       throw InputError(what + ": '" + file +
                        "' is neither a Gmsh .msh nor a .geo file");
 
-    // Reading takes about 7 times the file's size: the text and its
-    // stream, GridIn's vertices and cells, the triangulation (measured, in
-    // Release and Debug: an 87 MB file of 10^6 quadrilaterals raised the
-    // peak memory by 570 MB). Refuse what would not fit before reading it.
-    const double    read_cost = 7.;
-    std::error_code error;
-    const double    bytes  = std::filesystem::file_size(file, error);
-    const double    memory = available_memory();
-    if (!error && memory > 0 && read_cost * bytes > memory)
-    {
-      std::ostringstream s;
-      s << std::setprecision(3) << what << ": reading '" << file_name << "' ("
-        << bytes / 1e6 << " MB) needs about " << read_cost
-        << " times its size, " << read_cost * bytes / 1e9 << " GB, but "
-        << memory / 1e9 << " GB are available; use a coarser mesh";
-      throw InputError(s.str());
-    }
+    check_memory_for_reading(file, file_name, what);
 
     try
     {

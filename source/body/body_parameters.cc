@@ -138,195 +138,287 @@ namespace ddcontact
     return bc;
   }
 
+  namespace
+  {
+    /** The subsection Mesh: the rectangle, or the Gmsh file, and its
+     * refinement. */
+    void
+    declare_mesh(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mesh");
+      {
+        prm.declare_entry(
+          "Type",
+          "rectangle",
+          selection_pattern<MeshType>(),
+          "rectangle: a subdivided rectangle with boundary ids "
+          "0 (left), 1 (right), 2 (bottom), 3 (top); file: a Gmsh "
+          "mesh (.msh, or .geo meshed by the gmsh binary) whose "
+          "physical curve tags become boundary ids.");
+        prm.declare_entry(
+          "Corner 1",
+          "0, 0",
+          Patterns::Anything(),
+          "Lower left corner of the rectangle (x1, x2) [length].");
+        prm.declare_entry(
+          "Corner 2",
+          "1, 1",
+          Patterns::Anything(),
+          "Upper right corner of the rectangle (x1, x2) [length].");
+        prm.declare_entry("Subdivisions",
+                          "1, 1",
+                          Patterns::List(Patterns::Integer(1), 2, 2),
+                          "Cells of the rectangle in x1 and x2.");
+        prm.declare_entry("File",
+                          "",
+                          Patterns::Anything(),
+                          "Gmsh file (.msh or .geo), relative to the parameter "
+                          "file's directory or absolute.");
+        prm.declare_entry("Initial refinement",
+                          "0",
+                          Patterns::Integer(0, 20),
+                          "Number of global refinements of the initial mesh.");
+        prm.declare_entry("Refinement box",
+                          "",
+                          Patterns::Anything(),
+                          "'x0, y0, x1, y1': cells that touch this box are "
+                          "refined Box refinement more times after the global "
+                          "refinement (hanging nodes).");
+        prm.declare_entry(
+          "Box refinement",
+          "0",
+          Patterns::Integer(0, 20),
+          "Number of refinements of the cells in Refinement box.");
+        prm.declare_entry(
+          "Merge coincident vertices",
+          "false",
+          Patterns::Bool(),
+          "Type = file: vertices of different cells that lie at the same "
+          "point (closer than 1e-10 times the smallest cell diameter) but "
+          "are separate nodes form a hidden crack. false: such a file is "
+          "refused, naming the count and one location; true: they are "
+          "merged into one vertex each and the count is printed.");
+      }
+      prm.leave_subsection();
+    }
+
+    /** The subsection Element: cell type, degree, volumetric integration. */
+    void
+    declare_element(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Element");
+      {
+        prm.declare_entry("Cell type",
+                          "quadrilateral",
+                          selection_pattern<CellType>(),
+                          "quadrilateral: FE_Q with hanging-node constraints; "
+                          "triangle: FE_SimplexP (a rectangle is split into "
+                          "triangles; a Gmsh file must hold triangles).");
+        prm.declare_entry("Degree",
+                          "1",
+                          Patterns::Integer(1, 2),
+                          "Polynomial degree of the displacement (1 or 2).");
+        prm.declare_entry(
+          "Volumetric integration",
+          "full",
+          selection_pattern<VolumetricIntegration>(),
+          "full: the bilinear form a_a (11) with (p+1)^2 Gauss points; "
+          "reduced: its volumetric part lambda div u div v with one Gauss "
+          "point per cell (selective reduced integration, B-bar on "
+          "parallelograms), which removes the volumetric locking of Q1 as "
+          "nu -> 1/2. Quadrilaterals of degree 1 only (Q2 locks far less).");
+      }
+      prm.leave_subsection();
+    }
+
+    /** The subsection Material: the elastic constants. */
+    void
+    declare_material(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      {
+        prm.declare_entry(
+          "Young's modulus", "2.1e5", Patterns::Double(), "E [stress], > 0.");
+        prm.declare_entry("Poisson's ratio",
+                          "0.3",
+                          Patterns::Double(),
+                          "nu, in (-1, 0.5) (plane strain).");
+      }
+      prm.leave_subsection();
+    }
+
+    /** The subsection Boundary conditions, as text parsed by
+     * make_boundary_conditions(). */
+    void
+    declare_boundary_conditions(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      {
+        prm.declare_entry("Dirichlet",
+                          "",
+                          Patterns::Anything(),
+                          "Prescribed displacements (5) (Gamma_u): 'id: "
+                          "components: expr_x; expr_y | id: ...' with "
+                          "components x, y or xy; expressions in x, y and the "
+                          "scene's constants [length]. A component not listed "
+                          "may be loaded by a Neumann traction on the same "
+                          "id. A body whose conditions leave a rigid motion "
+                          "free (none at all, or rollers only) is floating: "
+                          "held by contact alone, as a punch pressed by a "
+                          "force; Solver = dd-newton solves it.");
+        prm.declare_entry("Neumann",
+                          "",
+                          Patterns::Anything(),
+                          "Prescribed tractions p (6) (Gamma_p): 'id: expr_x; "
+                          "expr_y | ...' [stress]. Ids with no condition are "
+                          "traction free. An id may also have a Dirichlet "
+                          "condition on one component (a roller with a load, "
+                          "e.g. Dirichlet '3: x: 0; 0' and Neumann '3: 0; "
+                          "-p'): the traction then loads the other component "
+                          "only, and its expression for the prescribed "
+                          "component must be 0.");
+        prm.declare_entry("Contact ids",
+                          "",
+                          Patterns::List(Patterns::Integer(0, 254)),
+                          "Boundary ids that form the possible contact zone S "
+                          "(comma separated).");
+        prm.declare_entry("Body force",
+                          "",
+                          Patterns::Anything(),
+                          "Body force 'expr_x; expr_y' [force/volume]; empty "
+                          "for none.");
+      }
+      prm.leave_subsection();
+    }
+
+    /** The subsection Solver: the linear solver of the body problem. */
+    void
+    declare_solver(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Solver");
+      {
+        prm.declare_entry("Type",
+                          "direct",
+                          selection_pattern<BodySolverType>(),
+                          "direct: UMFPACK factorization, computed once per "
+                          "mesh and reused for every right-hand side; cg-amg: "
+                          "conjugate gradients with Trilinos ML AMG (large "
+                          "meshes).");
+        prm.declare_entry("Tolerance",
+                          "1e-12",
+                          Patterns::Double(0),
+                          "Relative residual tolerance of cg-amg.");
+        prm.declare_entry("Max iterations",
+                          "10000",
+                          Patterns::Integer(1),
+                          "Iteration limit of cg-amg.");
+      }
+      prm.leave_subsection();
+    }
+
+    /** Read the subsection Mesh of @p body and check it. */
+    void
+    parse_mesh(ParameterHandler &prm, BodyParameters &body)
+    {
+      const std::string section = body.section() + "/";
+      prm.enter_subsection("Mesh");
+      {
+        body.mesh_type = parse_selection<MeshType>(prm.get("Type"));
+        body.corner_1 =
+          parse_point(prm.get("Corner 1"), section + "Mesh/Corner 1");
+        body.corner_2 =
+          parse_point(prm.get("Corner 2"), section + "Mesh/Corner 2");
+        const auto n = Utilities::string_to_int(
+          Utilities::split_string_list(prm.get("Subdivisions")));
+        body.subdivisions       = {static_cast<unsigned int>(n[0]),
+                                   static_cast<unsigned int>(n[1])};
+        body.mesh_file          = prm.get("File");
+        body.initial_refinement = prm.get_integer("Initial refinement");
+        body.box_refinement     = prm.get_integer("Box refinement");
+        body.merge_coincident_vertices =
+          prm.get_bool("Merge coincident vertices");
+        // The cells these entries would make are checked against the
+        // machine's memory when the mesh is built (ElasticBody::make_mesh).
+        const std::string box = Utilities::trim(prm.get("Refinement box"));
+        body.refinement_box.clear();
+        for (const auto &c : Utilities::split_string_list(box))
+          body.refinement_box.push_back(
+            parse_double(c, section + "Mesh/Refinement box"));
+        if (!box.empty() && body.refinement_box.size() != 4)
+          throw InputError(section + "Mesh/Refinement box: '" + box +
+                           "' is not 'x0, y0, x1, y1'");
+        if (body.mesh_type == MeshType::rectangle &&
+            !(body.corner_1[0] < body.corner_2[0] &&
+              body.corner_1[1] < body.corner_2[1]))
+          throw InputError(section +
+                           "Mesh/Corner 2: must lie above and to the right of "
+                           "Corner 1");
+        if (body.mesh_type == MeshType::file &&
+            Utilities::trim(body.mesh_file).empty())
+          throw InputError(section + "Mesh/File: empty, but Mesh/Type = file");
+      }
+      prm.leave_subsection();
+    }
+
+    /** Read the subsection Material of @p body and check it (with the
+     * element read before: locking depends on it). */
+    void
+    parse_material(ParameterHandler &prm, BodyParameters &body)
+    {
+      const std::string section = body.section() + "/";
+      prm.enter_subsection("Material");
+      {
+        body.material.youngs_modulus = prm.get_double("Young's modulus");
+        body.material.poisson_ratio  = prm.get_double("Poisson's ratio");
+        // Stiffness entries are E times O(1) factors summed over cells: at
+        // 1e300 they overflow. Any unit system fits within 1e-30..1e30.
+        if (!(body.material.youngs_modulus >= 1e-30 &&
+              body.material.youngs_modulus <= 1e30))
+          throw InputError(section + "Material/Young's modulus: E = " +
+                           prm.get("Young's modulus") +
+                           " must be positive and within 1e-30 .. 1e30");
+        if (!(body.material.poisson_ratio > -1. &&
+              body.material.poisson_ratio < 0.5))
+          throw InputError(section + "Material/Poisson's ratio: nu = " +
+                           prm.get("Poisson's ratio") +
+                           " must lie in (-1, 0.5)");
+        // Volumetric locking: with lambda/mu = 2 nu/(1 - 2 nu) >= 100 the
+        // fully integrated linear elements (Q1, P1) can only represent nearly
+        // divergence-free fields by moving almost nothing, and the answer is
+        // silently far too stiff (the contact force of the paper's scene is
+        // 30 % off at nu = 0.499, 200 % at 0.4999, on 4 cells across).
+        const double nu = body.material.poisson_ratio;
+        if (body.degree == 1 &&
+            body.volumetric_integration == VolumetricIntegration::full &&
+            2. * nu / (1. - 2. * nu) >= 100.)
+          throw InputError(
+            section +
+            "Material/Poisson's ratio: nu = " + prm.get("Poisson's ratio") +
+            " makes linear elements lock (lambda/mu >= 100); set Element/"
+            "Degree = 2" +
+            (body.cell_type == CellType::quadrilateral
+               ? " or Element/Volumetric integration = reduced"
+               : ""));
+      }
+      prm.leave_subsection();
+    }
+  } // namespace
+
   void
   BodyParameters::declare(ParameterHandler &prm)
   {
-    prm.enter_subsection("Mesh");
-    {
-      prm.declare_entry(
-        "Type",
-        "rectangle",
-        selection_pattern<MeshType>(),
-        "rectangle: a subdivided rectangle with boundary ids "
-        "0 (left), 1 (right), 2 (bottom), 3 (top); file: a Gmsh "
-        "mesh (.msh, or .geo meshed by the gmsh binary) whose "
-        "physical curve tags become boundary ids.");
-      prm.declare_entry(
-        "Corner 1",
-        "0, 0",
-        Patterns::Anything(),
-        "Lower left corner of the rectangle (x1, x2) [length].");
-      prm.declare_entry(
-        "Corner 2",
-        "1, 1",
-        Patterns::Anything(),
-        "Upper right corner of the rectangle (x1, x2) [length].");
-      prm.declare_entry("Subdivisions",
-                        "1, 1",
-                        Patterns::List(Patterns::Integer(1), 2, 2),
-                        "Cells of the rectangle in x1 and x2.");
-      prm.declare_entry("File",
-                        "",
-                        Patterns::Anything(),
-                        "Gmsh file (.msh or .geo), relative to the parameter "
-                        "file's directory or absolute.");
-      prm.declare_entry("Initial refinement",
-                        "0",
-                        Patterns::Integer(0, 20),
-                        "Number of global refinements of the initial mesh.");
-      prm.declare_entry("Refinement box",
-                        "",
-                        Patterns::Anything(),
-                        "'x0, y0, x1, y1': cells that touch this box are "
-                        "refined Box refinement more times after the global "
-                        "refinement (hanging nodes).");
-      prm.declare_entry(
-        "Box refinement",
-        "0",
-        Patterns::Integer(0, 20),
-        "Number of refinements of the cells in Refinement box.");
-      prm.declare_entry(
-        "Merge coincident vertices",
-        "false",
-        Patterns::Bool(),
-        "Type = file: vertices of different cells that lie at the same "
-        "point (closer than 1e-10 times the smallest cell diameter) but "
-        "are separate nodes form a hidden crack. false: such a file is "
-        "refused, naming the count and one location; true: they are "
-        "merged into one vertex each and the count is printed.");
-    }
-    prm.leave_subsection();
-
-    prm.enter_subsection("Element");
-    {
-      prm.declare_entry("Cell type",
-                        "quadrilateral",
-                        selection_pattern<CellType>(),
-                        "quadrilateral: FE_Q with hanging-node constraints; "
-                        "triangle: FE_SimplexP (a rectangle is split into "
-                        "triangles; a Gmsh file must hold triangles).");
-      prm.declare_entry("Degree",
-                        "1",
-                        Patterns::Integer(1, 2),
-                        "Polynomial degree of the displacement (1 or 2).");
-      prm.declare_entry(
-        "Volumetric integration",
-        "full",
-        selection_pattern<VolumetricIntegration>(),
-        "full: the bilinear form a_a (11) with (p+1)^2 Gauss points; "
-        "reduced: its volumetric part lambda div u div v with one Gauss "
-        "point per cell (selective reduced integration, B-bar on "
-        "parallelograms), which removes the volumetric locking of Q1 as "
-        "nu -> 1/2. Quadrilaterals of degree 1 only (Q2 locks far less).");
-    }
-    prm.leave_subsection();
-
-    prm.enter_subsection("Material");
-    {
-      prm.declare_entry(
-        "Young's modulus", "2.1e5", Patterns::Double(), "E [stress], > 0.");
-      prm.declare_entry("Poisson's ratio",
-                        "0.3",
-                        Patterns::Double(),
-                        "nu, in (-1, 0.5) (plane strain).");
-    }
-    prm.leave_subsection();
-
-    prm.enter_subsection("Boundary conditions");
-    {
-      prm.declare_entry("Dirichlet",
-                        "",
-                        Patterns::Anything(),
-                        "Prescribed displacements (5) (Gamma_u): 'id: "
-                        "components: expr_x; expr_y | id: ...' with "
-                        "components x, y or xy; expressions in x, y and the "
-                        "scene's constants [length]. A component not listed "
-                        "may be loaded by a Neumann traction on the same "
-                        "id. A body whose conditions leave a rigid motion "
-                        "free (none at all, or rollers only) is floating: "
-                        "held by contact alone, as a punch pressed by a "
-                        "force; Solver = dd-newton solves it.");
-      prm.declare_entry("Neumann",
-                        "",
-                        Patterns::Anything(),
-                        "Prescribed tractions p (6) (Gamma_p): 'id: expr_x; "
-                        "expr_y | ...' [stress]. Ids with no condition are "
-                        "traction free. An id may also have a Dirichlet "
-                        "condition on one component (a roller with a load, "
-                        "e.g. Dirichlet '3: x: 0; 0' and Neumann '3: 0; "
-                        "-p'): the traction then loads the other component "
-                        "only, and its expression for the prescribed "
-                        "component must be 0.");
-      prm.declare_entry("Contact ids",
-                        "",
-                        Patterns::List(Patterns::Integer(0, 254)),
-                        "Boundary ids that form the possible contact zone S "
-                        "(comma separated).");
-      prm.declare_entry("Body force",
-                        "",
-                        Patterns::Anything(),
-                        "Body force 'expr_x; expr_y' [force/volume]; empty "
-                        "for none.");
-    }
-    prm.leave_subsection();
-
-    prm.enter_subsection("Solver");
-    {
-      prm.declare_entry("Type",
-                        "direct",
-                        selection_pattern<BodySolverType>(),
-                        "direct: UMFPACK factorization, computed once per "
-                        "mesh and reused for every right-hand side; cg-amg: "
-                        "conjugate gradients with Trilinos ML AMG (large "
-                        "meshes).");
-      prm.declare_entry("Tolerance",
-                        "1e-12",
-                        Patterns::Double(0),
-                        "Relative residual tolerance of cg-amg.");
-      prm.declare_entry("Max iterations",
-                        "10000",
-                        Patterns::Integer(1),
-                        "Iteration limit of cg-amg.");
-    }
-    prm.leave_subsection();
+    declare_mesh(prm);
+    declare_element(prm);
+    declare_material(prm);
+    declare_boundary_conditions(prm);
+    declare_solver(prm);
   }
 
   void
   BodyParameters::parse(ParameterHandler &prm)
   {
     const std::string section = this->section() + "/";
-    prm.enter_subsection("Mesh");
-    {
-      mesh_type = parse_selection<MeshType>(prm.get("Type"));
-      corner_1  = parse_point(prm.get("Corner 1"), section + "Mesh/Corner 1");
-      corner_2  = parse_point(prm.get("Corner 2"), section + "Mesh/Corner 2");
-      const auto n = Utilities::string_to_int(
-        Utilities::split_string_list(prm.get("Subdivisions")));
-      subdivisions              = {static_cast<unsigned int>(n[0]),
-                                   static_cast<unsigned int>(n[1])};
-      mesh_file                 = prm.get("File");
-      initial_refinement        = prm.get_integer("Initial refinement");
-      box_refinement            = prm.get_integer("Box refinement");
-      merge_coincident_vertices = prm.get_bool("Merge coincident vertices");
-      // The cells these entries would make are checked against the
-      // machine's memory when the mesh is built (ElasticBody::make_mesh).
-      const std::string box = Utilities::trim(prm.get("Refinement box"));
-      refinement_box.clear();
-      for (const auto &c : Utilities::split_string_list(box))
-        refinement_box.push_back(
-          parse_double(c, section + "Mesh/Refinement box"));
-      if (!box.empty() && refinement_box.size() != 4)
-        throw InputError(section + "Mesh/Refinement box: '" + box +
-                         "' is not 'x0, y0, x1, y1'");
-      if (mesh_type == MeshType::rectangle &&
-          !(corner_1[0] < corner_2[0] && corner_1[1] < corner_2[1]))
-        throw InputError(section +
-                         "Mesh/Corner 2: must lie above and to the right of "
-                         "Corner 1");
-      if (mesh_type == MeshType::file && Utilities::trim(mesh_file).empty())
-        throw InputError(section + "Mesh/File: empty, but Mesh/Type = file");
-    }
-    prm.leave_subsection();
+    parse_mesh(prm, *this);
 
     prm.enter_subsection("Element");
     {
@@ -344,39 +436,7 @@ namespace ddcontact
     }
     prm.leave_subsection();
 
-    prm.enter_subsection("Material");
-    {
-      material.youngs_modulus = prm.get_double("Young's modulus");
-      material.poisson_ratio  = prm.get_double("Poisson's ratio");
-      // Stiffness entries are E times O(1) factors summed over cells: at
-      // 1e300 they overflow. Any unit system fits within 1e-30..1e30.
-      if (!(material.youngs_modulus >= 1e-30 &&
-            material.youngs_modulus <= 1e30))
-        throw InputError(section + "Material/Young's modulus: E = " +
-                         prm.get("Young's modulus") +
-                         " must be positive and within 1e-30 .. 1e30");
-      if (!(material.poisson_ratio > -1. && material.poisson_ratio < 0.5))
-        throw InputError(section + "Material/Poisson's ratio: nu = " +
-                         prm.get("Poisson's ratio") + " must lie in (-1, 0.5)");
-      // Volumetric locking: with lambda/mu = 2 nu/(1 - 2 nu) >= 100 the
-      // fully integrated linear elements (Q1, P1) can only represent nearly
-      // divergence-free fields by moving almost nothing, and the answer is
-      // silently far too stiff (the contact force of the paper's scene is
-      // 30 % off at nu = 0.499, 200 % at 0.4999, on 4 cells across).
-      const double nu = material.poisson_ratio;
-      if (degree == 1 &&
-          volumetric_integration == VolumetricIntegration::full &&
-          2. * nu / (1. - 2. * nu) >= 100.)
-        throw InputError(
-          section +
-          "Material/Poisson's ratio: nu = " + prm.get("Poisson's ratio") +
-          " makes linear elements lock (lambda/mu >= 100); set Element/"
-          "Degree = 2" +
-          (cell_type == CellType::quadrilateral
-             ? " or Element/Volumetric integration = reduced"
-             : ""));
-    }
-    prm.leave_subsection();
+    parse_material(prm, *this);
 
     prm.enter_subsection("Boundary conditions");
     {

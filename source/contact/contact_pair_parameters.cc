@@ -24,6 +24,8 @@ namespace ddcontact
                       {"relative", PenaltyType::relative},
                       {"absolute", PenaltyType::absolute})
 
+  // Long: one entry per parameter of the section, in the order of
+  // doc/parameters.md.
   void
   ContactPairParameters::declare(ParameterHandler &prm)
   {

@@ -6,6 +6,48 @@
 
 namespace ddcontact
 {
+  namespace
+  {
+    /** The contact loads of the elastic-layer model: on every pair the
+     * pressure of springs E'/H of both bodies in series with the penalty,
+     * pressed by the overlap of the contact-free solution @p u_free. */
+    ContactProblem::Iterate
+    elastic_layer_loads(const ContactProblem          &problem,
+                        const ContactProblem::Iterate &u_free)
+    {
+      const auto &pairs = problem.get_pairs();
+      auto        loads = problem.zero_iterate();
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        const auto  &pair       = *pairs[p];
+        const auto  &b1         = pair.get_body_1();
+        const auto  &b2         = pair.get_body_2();
+        const double H1         = pair.thickness_of_body_1();
+        const auto   compliance = [&](const ElasticBody<2> &body, double H)
+        {
+          const auto &m = body.get_material();
+          return H * (1 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;
+        };
+        // Body 2's thickness measured like body 1's.
+        const double c_w =
+          compliance(b1, H1) + compliance(b2, pair.thickness_of_body_2());
+
+        std::vector<double> u_1n, u_2n;
+        pair.normal_displacements(u_free[problem.body_index(b1)],
+                                  u_free[problem.body_index(b2)],
+                                  u_1n,
+                                  u_2n);
+        std::vector<double> sigma(u_1n.size());
+        for (unsigned int q = 0; q < sigma.size(); ++q)
+          sigma[q] = std::min(0., pair.points()[q].gap - u_1n[q] - u_2n[q]) /
+                     (pair.penalty() + c_w);
+        pair.add_contact_loads(
+          sigma, loads[problem.body_index(b1)], loads[problem.body_index(b2)]);
+      }
+      return loads;
+    }
+  } // namespace
+
   ElasticLayerGuess
   elastic_layer_guess(const ContactProblem &problem)
   {
@@ -18,34 +60,7 @@ namespace ddcontact
     ContactProblem::Iterate u_free;
     problem.solve_all(ContactProblem::Iterate(bodies.size()), u_free);
 
-    auto loads = problem.zero_iterate();
-    for (unsigned int p = 0; p < pairs.size(); ++p)
-    {
-      const auto  &pair       = *pairs[p];
-      const auto  &b1         = pair.get_body_1();
-      const auto  &b2         = pair.get_body_2();
-      const double H1         = pair.thickness_of_body_1();
-      const auto   compliance = [&](const ElasticBody<2> &body, double H)
-      {
-        const auto &m = body.get_material();
-        return H * (1 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;
-      };
-      // Body 2's thickness measured like body 1's.
-      const double c_w =
-        compliance(b1, H1) + compliance(b2, pair.thickness_of_body_2());
-
-      std::vector<double> u_1n, u_2n;
-      pair.normal_displacements(u_free[problem.body_index(b1)],
-                                u_free[problem.body_index(b2)],
-                                u_1n,
-                                u_2n);
-      std::vector<double> sigma(u_1n.size());
-      for (unsigned int q = 0; q < sigma.size(); ++q)
-        sigma[q] = std::min(0., pair.points()[q].gap - u_1n[q] - u_2n[q]) /
-                   (pair.penalty() + c_w);
-      pair.add_contact_loads(
-        sigma, loads[problem.body_index(b1)], loads[problem.body_index(b2)]);
-    }
+    const auto loads = elastic_layer_loads(problem, u_free);
     problem.solve_all(loads, u);
 
     // The model knows neither bending nor chains of contacts (a plate

@@ -97,6 +97,46 @@ namespace ddcontact
         text += " and " + std::to_string(names.size() - 3) + " more";
       return text;
     }
+
+    /** Sort the regular files in @p directory (the lock and the manifest
+     * aside) into @p ours, the earlier run's files (those its manifest
+     * lists and that are as it left them), and @p foreign, everything else
+     * (sorted): someone else's, as are the @p input_files, whoever wrote
+     * them. */
+    void
+    sort_earlier_files(const std::string              &directory,
+                       const std::vector<std::string> &input_files,
+                       std::vector<std::string>       &ours,
+                       std::vector<std::string>       &foreign)
+    {
+      std::set<fs::path> inputs;
+      for (const auto &file : input_files)
+      {
+        std::error_code error;
+        inputs.insert(fs::weakly_canonical(file, error));
+      }
+      const auto      earlier = run_manifest::read(directory);
+      std::error_code error;
+      for (const auto &entry : fs::directory_iterator(directory, error))
+      {
+        const std::string name = entry.path().filename().string();
+        std::error_code   e;
+        if (!entry.is_regular_file(e) || name == lock_name ||
+            name == run_manifest::file_name ||
+            name.rfind(lock_name + ".", 0) == 0)
+          continue;
+        const auto listed = earlier.files.find(name);
+        const bool unchanged =
+          listed != earlier.files.end() &&
+          listed->second.count(run_manifest::stamp(entry.path())) > 0;
+        const bool input = inputs.count(fs::weakly_canonical(entry, e)) > 0;
+        if (!input && (unchanged || earlier.temporaries.count(name) > 0))
+          ours.push_back(name);
+        else
+          foreign.push_back(name);
+      }
+      std::sort(foreign.begin(), foreign.end());
+    }
   } // namespace
 
   RunRecord::RunRecord(const SceneParameters          &scene,
@@ -110,122 +150,9 @@ namespace ddcontact
     std::string refusal, note;
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     {
-      // The lock is a complete file linked into place: link() fails if
-      // the name exists, and a full disk fails before the lock exists.
-      const std::string mine = lock_file + "." + std::to_string(getpid());
-      std::FILE        *f    = std::fopen(mine.c_str(), "w");
-      const bool        made =
-        f && std::fprintf(f, "%ld\n", static_cast<long>(getpid())) > 0;
-      if (f == nullptr || std::fclose(f) != 0 || !made)
-        refusal = "Wcannot write in the output directory '" + directory +
-                  "' (read-only, or the disk full?)";
-      for (int attempt = 0; refusal.empty() && attempt < 2 && !holds_lock;
-           ++attempt)
-      {
-        if (link(mine.c_str(), lock_file.c_str()) == 0)
-        {
-          holds_lock = true;
-          break;
-        }
-        if (errno != EEXIST)
-          refusal = "Wcannot write in the output directory '" + directory +
-                    "' (" + std::strerror(errno) + ")";
-        else if (const long owner = lock_owner(lock_file);
-                 owner > 0 && runs_ddcontact(owner))
-          refusal = "IOutput directory: '" + directory +
-                    "' is in use by another run (process " +
-                    std::to_string(owner) +
-                    ", lock file .ddcontact.lock); wait for it to end or "
-                    "choose another --output";
-        else
-        {
-          note += "Output directory: took over the lock file " + lock_name +
-                  (owner > 0 ? " of process " + std::to_string(owner) +
-                                 ", which no longer runs"
-                             : ", which names no process (left by a run "
-                               "that met a full disk?)") +
-                  "\n";
-          fs::remove(lock_file);
-        }
-      }
-      std::remove(mine.c_str());
-
+      refusal = take_lock(note);
       if (holds_lock)
-      {
-        // The earlier run's files: those its manifest lists and that are
-        // as it left them. Everything else is someone else's, and so are
-        // the input files, whoever wrote them.
-        std::set<fs::path> inputs;
-        for (const auto &file : input_files)
-        {
-          std::error_code error;
-          inputs.insert(fs::weakly_canonical(file, error));
-        }
-        const auto               earlier = run_manifest::read(directory);
-        std::vector<std::string> ours, foreign;
-        std::error_code          error;
-        for (const auto &entry : fs::directory_iterator(directory, error))
-        {
-          const std::string name = entry.path().filename().string();
-          std::error_code   e;
-          if (!entry.is_regular_file(e) || name == lock_name ||
-              name == run_manifest::file_name ||
-              name.rfind(lock_name + ".", 0) == 0)
-            continue;
-          const auto listed = earlier.files.find(name);
-          const bool unchanged =
-            listed != earlier.files.end() &&
-            listed->second.count(run_manifest::stamp(entry.path())) > 0;
-          const bool input = inputs.count(fs::weakly_canonical(entry, e)) > 0;
-          if (!input && (unchanged || earlier.temporaries.count(name) > 0))
-            ours.push_back(name);
-          else
-            foreign.push_back(name);
-        }
-        std::sort(foreign.begin(), foreign.end());
-        const auto is_foreign = [&](const std::string &name)
-        { return std::binary_search(foreign.begin(), foreign.end(), name); };
-        if (is_foreign("parameters.prm"))
-          parameter_dump = directory + "/parameters.used.prm";
-
-        const std::regex writes =
-          output_names(scene, fs::path(parameter_dump).filename().string());
-        std::vector<std::string> in_the_way, left;
-        for (const auto &name : foreign)
-          (std::regex_match(name, writes) ? in_the_way : left).push_back(name);
-        if (!in_the_way.empty())
-          refusal =
-            "IOutput directory: '" + directory + "' holds " +
-            std::to_string(in_the_way.size()) +
-            " file(s) that this run would write but that no ddcontact run "
-            "wrote there, or that changed since (" +
-            some_of(in_the_way) +
-            "); move them away or choose another --output";
-        else
-        {
-          for (const auto &name : ours)
-            fs::remove(fs::path(directory) / name, error);
-          fs::remove(fs::path(directory) / run_manifest::file_name, error);
-          if (!left.empty())
-            note += "Output directory: " + std::to_string(left.size()) +
-                    " file(s) there that this run did not write are left as "
-                    "they are (" +
-                    some_of(left) + ")\n";
-          run_manifest::open(directory);
-          try
-          {
-            write_json_file(Json{{"scene", scene.scene_name},
-                                 {"code_revision", git_revision()},
-                                 {"status", "running"},
-                                 {"warnings", Json::array()}},
-                            directory + "/summary.json");
-          }
-          catch (const std::exception &e)
-          {
-            refusal = std::string("W") + e.what();
-          }
-        }
-      }
+        refusal = clear_earlier_run(scene, input_files, note);
     }
     if (!refusal.empty() && holds_lock)
     {
@@ -245,6 +172,102 @@ namespace ddcontact
       Utilities::MPI::broadcast(MPI_COMM_WORLD, parameter_dump, 0);
     std::cout << note << std::flush;
     run_manifest::open(directory);
+  }
+
+  std::string
+  RunRecord::take_lock(std::string &note)
+  {
+    // The lock is a complete file linked into place: link() fails if
+    // the name exists, and a full disk fails before the lock exists.
+    std::string       refusal;
+    const std::string mine = lock_file + "." + std::to_string(getpid());
+    std::FILE        *f    = std::fopen(mine.c_str(), "w");
+    const bool        made =
+      f && std::fprintf(f, "%ld\n", static_cast<long>(getpid())) > 0;
+    if (f == nullptr || std::fclose(f) != 0 || !made)
+      refusal = "Wcannot write in the output directory '" + directory +
+                "' (read-only, or the disk full?)";
+    for (int attempt = 0; refusal.empty() && attempt < 2 && !holds_lock;
+         ++attempt)
+    {
+      if (link(mine.c_str(), lock_file.c_str()) == 0)
+      {
+        holds_lock = true;
+        break;
+      }
+      if (errno != EEXIST)
+        refusal = "Wcannot write in the output directory '" + directory +
+                  "' (" + std::strerror(errno) + ")";
+      else if (const long owner = lock_owner(lock_file);
+               owner > 0 && runs_ddcontact(owner))
+        refusal = "IOutput directory: '" + directory +
+                  "' is in use by another run (process " +
+                  std::to_string(owner) +
+                  ", lock file .ddcontact.lock); wait for it to end or "
+                  "choose another --output";
+      else
+      {
+        note += "Output directory: took over the lock file " + lock_name +
+                (owner > 0 ? " of process " + std::to_string(owner) +
+                               ", which no longer runs"
+                           : ", which names no process (left by a run "
+                             "that met a full disk?)") +
+                "\n";
+        fs::remove(lock_file);
+      }
+    }
+    std::remove(mine.c_str());
+    return refusal;
+  }
+
+  std::string
+  RunRecord::clear_earlier_run(const SceneParameters          &scene,
+                               const std::vector<std::string> &input_files,
+                               std::string                    &note)
+  {
+    std::vector<std::string> ours, foreign;
+    sort_earlier_files(directory, input_files, ours, foreign);
+    const auto is_foreign = [&](const std::string &name)
+    { return std::binary_search(foreign.begin(), foreign.end(), name); };
+    if (is_foreign("parameters.prm"))
+      parameter_dump = directory + "/parameters.used.prm";
+
+    const std::regex writes =
+      output_names(scene, fs::path(parameter_dump).filename().string());
+    std::vector<std::string> in_the_way, left;
+    for (const auto &name : foreign)
+      (std::regex_match(name, writes) ? in_the_way : left).push_back(name);
+    if (!in_the_way.empty())
+      return "IOutput directory: '" + directory + "' holds " +
+             std::to_string(in_the_way.size()) +
+             " file(s) that this run would write but that no ddcontact run "
+             "wrote there, or that changed since (" +
+             some_of(in_the_way) +
+             "); move them away or choose another --output";
+
+    std::error_code error;
+    for (const auto &name : ours)
+      fs::remove(fs::path(directory) / name, error);
+    fs::remove(fs::path(directory) / run_manifest::file_name, error);
+    if (!left.empty())
+      note += "Output directory: " + std::to_string(left.size()) +
+              " file(s) there that this run did not write are left as "
+              "they are (" +
+              some_of(left) + ")\n";
+    run_manifest::open(directory);
+    try
+    {
+      write_json_file(Json{{"scene", scene.scene_name},
+                           {"code_revision", git_revision()},
+                           {"status", "running"},
+                           {"warnings", Json::array()}},
+                      directory + "/summary.json");
+    }
+    catch (const std::exception &e)
+    {
+      return std::string("W") + e.what();
+    }
+    return "";
   }
 
   RunRecord::~RunRecord()

@@ -157,6 +157,27 @@ namespace ddcontact
     max_newton_iterations = prm.get_integer("Max Newton iterations");
   }
 
+  namespace
+  {
+    /** One subsection per solver: each reads only its own. */
+    void
+    declare_solver_subsections(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Uzawa");
+      UzawaParameters::declare(prm);
+      prm.leave_subsection();
+      prm.enter_subsection("Domain decomposition");
+      DomainDecompositionParameters::declare(prm);
+      prm.leave_subsection();
+      prm.enter_subsection("DD-Newton");
+      DDNewtonParameters::declare(prm);
+      prm.leave_subsection();
+      prm.enter_subsection("Monolithic");
+      MonolithicParameters::declare(prm);
+      prm.leave_subsection();
+    }
+  } // namespace
+
   void
   ContactSolverParameters::declare(ParameterHandler &prm)
   {
@@ -229,19 +250,7 @@ namespace ddcontact
                       Patterns::Bool(),
                       "Write contact_<pair>_<k>.csv at every iteration.");
 
-    // One subsection per solver: each reads only its own.
-    prm.enter_subsection("Uzawa");
-    UzawaParameters::declare(prm);
-    prm.leave_subsection();
-    prm.enter_subsection("Domain decomposition");
-    DomainDecompositionParameters::declare(prm);
-    prm.leave_subsection();
-    prm.enter_subsection("DD-Newton");
-    DDNewtonParameters::declare(prm);
-    prm.leave_subsection();
-    prm.enter_subsection("Monolithic");
-    MonolithicParameters::declare(prm);
-    prm.leave_subsection();
+    declare_solver_subsections(prm);
   }
 
   void

@@ -5,6 +5,71 @@
 
 namespace ddcontact
 {
+  namespace
+  {
+    /** E: an increment @p y of the active unknowns of @p step (of size
+     * @p n, two per node of @p n_nodes), extended by the slipping
+     * tangentials that follow their nodes' pressures. */
+    PointVector
+    extend_by_slip(const InterfaceKrylovSolver::Step &step,
+                   const PointVector                 &y,
+                   const unsigned int                 n,
+                   const unsigned int                 n_nodes)
+    {
+      PointVector z(n, 0.);
+      for (unsigned int q = 0; q < n; ++q)
+        if (step.active[q])
+          z[q] = y[q];
+      for (unsigned int i = 0; i < n_nodes; ++i)
+        if (step.coupling[i] != 0)
+          z[n_nodes + i] = step.coupling[i] * y[i];
+      return z;
+    }
+
+    /** Bring the new Hessenberg column @p h (j + 2 entries) to upper
+     * triangular form: the earlier Givens rotations @p cs, @p sn, then a
+     * new one, appended, that zeroes h[j + 1]. Returns that entry before
+     * the rotation (zero at a breakdown). */
+    double
+    rotate_column(std::vector<double> &h,
+                  const unsigned int   j,
+                  std::vector<double> &cs,
+                  std::vector<double> &sn)
+    {
+      for (unsigned int i = 0; i < j; ++i)
+      {
+        const double a = h[i], b = h[i + 1];
+        h[i]     = cs[i] * a + sn[i] * b;
+        h[i + 1] = -sn[i] * a + cs[i] * b;
+      }
+      const double rho = std::hypot(h[j], h[j + 1]);
+      cs.push_back(rho > 0 ? h[j] / rho : 1.);
+      sn.push_back(rho > 0 ? h[j + 1] / rho : 0.);
+      const double breakdown = h[j + 1];
+      h[j]                   = rho;
+      h[j + 1]               = 0.;
+      return breakdown;
+    }
+
+    /** The least-squares coefficients y of GMRES: H y = g by back
+     * substitution, H upper triangular, stored by columns. */
+    std::vector<double>
+    solve_upper_triangular(const std::vector<std::vector<double>> &H,
+                           const std::vector<double>              &g)
+    {
+      const unsigned int  m = H.size();
+      std::vector<double> y(m);
+      for (unsigned int i = m; i-- > 0;)
+      {
+        double sum = g[i];
+        for (unsigned int k = i + 1; k < m; ++k)
+          sum -= H[k][i] * y[k];
+        y[i] = sum / H[i][i];
+      }
+      return y;
+    }
+  } // namespace
+
   InterfaceKrylovSolver::InterfaceKrylovSolver(
     const ContactInterface &interface,
     RobinPreconditioner    &preconditioner,
@@ -106,19 +171,6 @@ namespace ddcontact
   {
     const auto        &active = step.active;
     const unsigned int n = x.size(), n_nodes = interface.size();
-    // E: an increment y of the active unknowns, extended by the slipping
-    // tangentials that follow their nodes' pressures.
-    const auto extend = [&](const PointVector &y)
-    {
-      PointVector z(n, 0.);
-      for (unsigned int q = 0; q < n; ++q)
-        if (active[q])
-          z[q] = y[q];
-      for (unsigned int i = 0; i < n_nodes; ++i)
-        if (step.coupling[i] != 0)
-          z[n_nodes + i] = step.coupling[i] * y[i];
-      return z;
-    };
 
     // No coarse space: dd-newton refuses floating bodies with friction.
     Assert(coarse.empty(), ExcInternalError());
@@ -144,7 +196,7 @@ namespace ddcontact
     {
       PointVector Pv;
       preconditioner.vmult(Pv, V[j], active);
-      Z.push_back(extend(Pv));
+      Z.push_back(extend_by_slip(step, Pv, n, n_nodes));
       SZ.emplace_back();
       UZ.emplace_back();
       interface.apply(Z[j], UZ[j], SZ[j]);
@@ -157,20 +209,8 @@ namespace ddcontact
         h[i] = interface.inner(w, V[i]);
         add(w, -h[i], V[i]);
       }
-      h[j + 1] = interface.norm(w);
-      // The earlier rotations, then a new one that zeroes h[j + 1].
-      for (unsigned int i = 0; i < j; ++i)
-      {
-        const double a = h[i], b = h[i + 1];
-        h[i]     = cs[i] * a + sn[i] * b;
-        h[i + 1] = -sn[i] * a + cs[i] * b;
-      }
-      const double rho = std::hypot(h[j], h[j + 1]);
-      cs.push_back(rho > 0 ? h[j] / rho : 1.);
-      sn.push_back(rho > 0 ? h[j + 1] / rho : 0.);
-      const double breakdown = h[j + 1];
-      h[j]                   = rho;
-      h[j + 1]               = 0.;
+      h[j + 1]               = interface.norm(w);
+      const double breakdown = rotate_column(h, j, cs, sn);
       H.push_back(h);
       g.push_back(-sn[j] * g[j]);
       g[j] *= cs[j];
@@ -181,16 +221,8 @@ namespace ddcontact
         v /= breakdown;
       V.push_back(w);
     }
-    // The least-squares coefficients: H y = g, H upper triangular.
-    const unsigned int  m = H.size();
-    std::vector<double> y(m);
-    for (unsigned int i = m; i-- > 0;)
-    {
-      double sum = g[i];
-      for (unsigned int k = i + 1; k < m; ++k)
-        sum -= H[k][i] * y[k];
-      y[i] = sum / H[i][i];
-    }
+    const std::vector<double> y = solve_upper_triangular(H, g);
+    const unsigned int        m = H.size();
     for (unsigned int j = 0; j < m; ++j)
     {
       add(x, y[j], Z[j]);

@@ -106,6 +106,51 @@ namespace ddcontact
         return sum;
       };
     }
+    /** The residual of (20): ||u~ - u|| / ||u~|| of the normal
+     * displacements @p un_tilde and @p un on S, over all bodies. */
+    double
+    relative_residual(const std::vector<std::vector<double>> &un_tilde,
+                      const std::vector<std::vector<double>> &un)
+    {
+      double diff2 = 0, norm2 = 0;
+      for (unsigned int b = 0; b < un.size(); ++b)
+      {
+        diff2 += std::pow(distance(un_tilde[b], un[b]), 2);
+        norm2 += std::pow(norm(un_tilde[b]), 2);
+      }
+      return (norm2 > 0) ? std::sqrt(diff2 / norm2) : std::sqrt(diff2);
+    }
+
+    /** The paper's increment: the largest relative change from @p un to
+     * @p un_new of the normal displacements on S of a body. */
+    double
+    largest_relative_increment(const std::vector<std::vector<double>> &un_new,
+                               const std::vector<std::vector<double>> &un)
+    {
+      double increment = 0;
+      for (unsigned int b = 0; b < un_new.size(); ++b)
+        if (!un_new[b].empty())
+        {
+          const double n = norm(un_new[b]);
+          const double d = distance(un_new[b], un[b]);
+          increment      = std::max(increment, (n > 0) ? d / n : d);
+        }
+      return increment;
+    }
+
+    /** One line of the console for a DD iteration. */
+    void
+    print_record(ConditionalOStream &pcout, const IterationRecord &record)
+    {
+      pcout << "  DD " << std::setw(5) << record.iteration << std::scientific
+            << std::setprecision(3) << "  residual " << record.residual
+            << "  increment " << record.increment << "  gamma " << record.gamma
+            << "  normal force " << record.force << "  active "
+            << record.active_length << "  penetration "
+            << record.max_penetration << std::defaultfloat << std::fixed
+            << std::setprecision(2) << "  t " << record.time << "s"
+            << std::defaultfloat << std::endl;
+    }
   } // namespace
 
   void
@@ -228,27 +273,15 @@ namespace ddcontact
     const auto un       = problem.normal_displacements_by_body(u);
     const auto un_tilde = problem.normal_displacements_by_body(u_tilde);
 
-    double diff2 = 0, norm2 = 0;
-    for (unsigned int b = 0; b < un.size(); ++b)
-    {
-      diff2 += std::pow(distance(un_tilde[b], un[b]), 2);
-      norm2 += std::pow(norm(un_tilde[b]), 2);
-    }
-    record.residual = (norm2 > 0) ? std::sqrt(diff2 / norm2) : std::sqrt(diff2);
+    record.residual = relative_residual(un_tilde, un);
     record.gamma    = relaxation->get_gamma();
 
     relax(u_tilde);
 
     const auto un_new =
       problem.normal_displacements_by_body(problem.current_iterate());
-    for (unsigned int b = 0; b < un_new.size(); ++b)
-      if (!un_new[b].empty())
-      {
-        const double n   = norm(un_new[b]);
-        const double d   = distance(un_new[b], un[b]);
-        record.increment = std::max(record.increment, (n > 0) ? d / n : d);
-      }
-    record.time = timer.wall_time();
+    record.increment = largest_relative_increment(un_new, un);
+    record.time      = timer.wall_time();
     add_record(record);
 
     // The stopping test of Contact solver/Domain decomposition/Stopping test.
@@ -274,14 +307,7 @@ namespace ddcontact
 
     if (parameters.print_every_iteration || shown_on_screen(record.iteration) ||
         converged || diverged)
-      pcout << "  DD " << std::setw(5) << record.iteration << std::scientific
-            << std::setprecision(3) << "  residual " << record.residual
-            << "  increment " << record.increment << "  gamma " << record.gamma
-            << "  normal force " << record.force << "  active "
-            << record.active_length << "  penetration "
-            << record.max_penetration << std::defaultfloat << std::fixed
-            << std::setprecision(2) << "  t " << record.time << "s"
-            << std::defaultfloat << std::endl;
+      print_record(pcout, record);
     if (diverged)
       throw DivergenceError(divergence_message(
         "diverged at iteration " + std::to_string(record.iteration),

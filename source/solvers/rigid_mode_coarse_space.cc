@@ -26,6 +26,29 @@ namespace ddcontact
       scaled.compute_svd();
       return scaled.singular_value(n - 1);
     }
+
+    /** Whether contact holds the modes [first, last) (of one body, or all
+     * of them): their block of @p h, with the diagonal @p diagonal, is
+     * regular, and no mode has a diagonal entry that vanishes against the
+     * interface's @p total_weight. */
+    bool
+    are_held(const FullMatrix<double>  &h,
+             const std::vector<double> &diagonal,
+             const double               total_weight,
+             const unsigned int         first,
+             const unsigned int         last)
+    {
+      FullMatrix<double>  block(last - first, last - first);
+      std::vector<double> d(diagonal.begin() + first, diagonal.begin() + last);
+      for (unsigned int a = first; a < last; ++a)
+      {
+        if (!(diagonal[a] > 1e-20 * total_weight))
+          return false;
+        for (unsigned int b = first; b < last; ++b)
+          block(a - first, b - first) = h(a, b);
+      }
+      return smallest_scaled_singular_value(block, d) > 1e-10;
+    }
   } // namespace
 
   RigidModeCoarseSpace::RigidModeCoarseSpace(const ContactProblem   &problem,
@@ -80,20 +103,8 @@ namespace ddcontact
     diagonal.assign(size(), 0.);
     for (unsigned int k = 0; k < size(); ++k)
       diagonal[k] = h(k, k);
-    // Whether the modes [first, last) of one body, or all of them, are held.
     const auto held = [&](const unsigned int first, const unsigned int last)
-    {
-      FullMatrix<double>  block(last - first, last - first);
-      std::vector<double> d(diagonal.begin() + first, diagonal.begin() + last);
-      for (unsigned int a = first; a < last; ++a)
-      {
-        if (!(diagonal[a] > 1e-20 * total_weight))
-          return false;
-        for (unsigned int b = first; b < last; ++b)
-          block(a - first, b - first) = h(a, b);
-      }
-      return smallest_scaled_singular_value(block, d) > 1e-10;
-    };
+    { return are_held(h, diagonal, total_weight, first, last); };
     if (!held(0, size()))
     {
       // The body whose own modes contact cannot hold, else the first.

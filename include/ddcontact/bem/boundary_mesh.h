@@ -214,6 +214,33 @@ namespace ddcontact
     }
 
   private:
+    /** Scale the node coordinates by the bounding box of the boundary and
+     * set the element geometry from them. */
+    void
+    scale_nodes_and_elements();
+
+    /** Which components are prescribed on each element, which elements are
+     * contact elements, and the prescribed tractions at the element ends. */
+    void
+    apply_element_data(const BoundaryConditions<2> &boundary_conditions,
+                       const double                 mu);
+
+    /** Number the nodal displacement components that are not prescribed
+     * (from 0) and set the prescribed ones; return the number of them. */
+    unsigned int
+    number_displacement_unknowns(
+      const BoundaryConditions<2> &boundary_conditions);
+
+    /** Number the element-end traction unknowns from @p n on; return the
+     * next free number. */
+    unsigned int
+    number_traction_unknowns(unsigned int n);
+
+    /** The collocation points: every node, then the extra points at
+     * corners (doc/bem-method.md §2.7). */
+    void
+    set_up_collocation_points();
+
     void
     find_rigid_modes();
 

@@ -87,6 +87,23 @@ namespace ddcontact
                     std::uint64_t                             key,
                     unsigned int                              depth) const;
 
+    /** What the ancestors' far elements contribute at @p y: their
+     * Chebyshev interpolant on @p parent (which holds y), or zero at the
+     * root (@p parent null). */
+    SymmetricTensor<2, 2>
+    inherited_stress(const TargetBox                          *parent,
+                     const std::vector<SymmetricTensor<2, 2>> *parent_values,
+                     const Point<2>                           &y) const;
+
+    /** The field at the Chebyshev nodes of @p box: that of the @p far
+     * elements plus what the ancestors contribute. */
+    std::vector<SymmetricTensor<2, 2>>
+    values_at_chebyshev_nodes(
+      const TargetBox                          &box,
+      const std::vector<unsigned int>          &far,
+      const TargetBox                          *parent,
+      const std::vector<SymmetricTensor<2, 2>> *parent_values) const;
+
     const BoundaryMesh   &mesh;
     const KelvinSolution &kelvin;
   };

@@ -60,6 +60,20 @@ namespace ddcontact
     status_of_exit_code(int code);
 
   private:
+    /** Take the lock of the directory (process 0); return the refusal
+     * (starting with I or W) if the run may not, and add to @p note what
+     * the console should hear. */
+    std::string
+    take_lock(std::string &note);
+
+    /** Once the lock is held: remove the earlier run's files, open the new
+     * manifest and the running summary.json (process 0); return the
+     * refusal, as take_lock() does. */
+    std::string
+    clear_earlier_run(const SceneParameters          &scene,
+                      const std::vector<std::string> &input_files,
+                      std::string                    &note);
+
     std::string directory;
     std::string lock_file;
     std::string parameter_dump;
