@@ -26,7 +26,9 @@ main(int argc, char **argv)
   const double E_star = 1. / (2. * (1. - nu * nu) / E);
 
   std::vector<double> error_p0;
-  for (const unsigned int level : {7u, 8u})
+  // Box refinement 6 and 7 (the scene's 8 takes 20 s in Debug): p0 0.3 %
+  // and 0.19 % off, the fitted a 0.1 % (measured).
+  for (const unsigned int level : {6u, 7u})
   {
     const std::string levels = std::to_string(level);
     const auto        simulation =
@@ -97,7 +99,8 @@ main(int argc, char **argv)
           1e-8);
   }
   // The peak pressure converges (the finite cylinders are 14 a wide and
-  // deep: their effect on p0 is below 0.1 %).
+  // deep: their effect on p0 is below 0.1 %; on the scene's own mesh, box
+  // refinement 8, p0 is 0.04 % off).
   check("p0 within 0.5 % on the finer mesh", error_p0.back(), 0.005);
   return report();
 }
