@@ -26,7 +26,7 @@ main(int argc, char **argv)
   const double E_star = 1. / (2. * (1. - nu * nu) / E);
 
   std::vector<double> error_p0;
-  // Box refinement 6 and 7 (the scene's 8 takes 20 s in Debug): p0 0.3 %
+  // Box refinement 6 and 7 (the scene's 8 takes 20 s in Debug): p0 0.5 %
   // and 0.19 % off, the fitted a 0.1 % (measured).
   for (const unsigned int level : {6u, 7u})
   {
@@ -79,7 +79,11 @@ main(int argc, char **argv)
       else
         edge = std::max(edge, error);
     }
-    check("pressure profile inside a - 2h, max relative to p0", profile, 0.01);
+    // Inside, the error is O(h): measured 0.23 h/a at box refinement 6, 7
+    // and 8 (1.3 %, 0.62 %, 0.29 %); half a cell's h/a bounds it.
+    check("pressure profile inside a - 2h, max relative to p0, / (h/a)",
+          profile / (h / a_exact),
+          0.5);
     check("pressure profile near the edge, max relative to p0",
           edge,
           std::sqrt(2. * h / a_exact) + 0.01);
