@@ -47,16 +47,11 @@ namespace ddcontact
       return true;
     }
 
-    extern "C" void
-    note_signal(const int signal)
+    /** Write the text of @p signal of @p record into its file (by the
+     * temporary file and a rename); async-signal-safe. */
+    void
+    write_record(const Record *record, const int signal)
     {
-      signal_received = signal;
-      // A second signal of either kind ends the process at once.
-      std::signal(SIGINT, SIG_DFL);
-      std::signal(SIGTERM, SIG_DFL);
-      const Record *record = current_record.exchange(nullptr);
-      if (record == nullptr)
-        return;
       const std::string &text = record->texts[signal == SIGINT ? 0 : 1];
       const int          fd =
         ::open(record->temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -68,6 +63,18 @@ namespace ddcontact
         run_manifest::record_file_from_signal_handler(record->filename.c_str());
       else
         ::unlink(record->temporary.c_str());
+    }
+
+    extern "C" void
+    note_signal(const int signal)
+    {
+      signal_received = signal;
+      // A second signal of either kind ends the process at once.
+      std::signal(SIGINT, SIG_DFL);
+      std::signal(SIGTERM, SIG_DFL);
+      const Record *record = current_record.exchange(nullptr);
+      if (record != nullptr)
+        write_record(record, signal);
     }
 
   } // namespace
@@ -105,6 +112,14 @@ namespace ddcontact
         run_manifest::record_temporary(record->temporary);
       current_record.store(record.get());
       kept_records.push_back(std::move(record));
+      // A signal that came before this record (while the run wrote its
+      // "running" summary, say) has written the previous one, or none:
+      // the new record is the true one, written now, so that a kill
+      // before the run's next check leaves it and not "running".
+      const int signal = signal_received;
+      if (signal != 0)
+        if (const Record *pending = current_record.exchange(nullptr))
+          write_record(pending, signal);
       if (kept_records.size() > 3)
         kept_records.pop_front();
     }
