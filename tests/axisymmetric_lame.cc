@@ -89,20 +89,6 @@ namespace
     const Lame lame;
   };
 
-  class RateTable : public ConvergenceTable
-  {
-  public:
-    std::vector<double>
-    log2_rates(const std::string &key) const
-    {
-      const auto &entries = columns.at(key + "...red.rate.log2").entries;
-      std::vector<double> rates;
-      for (unsigned int i = 1; i < entries.size(); ++i)
-        rates.push_back(entries[i].get_numeric_value());
-      return rates;
-    }
-  };
-
   BodyParameters
   cylinder(const double       a,
            const double       b,
@@ -173,13 +159,7 @@ namespace
       table.add_value("L2", l2);
       table.add_value("H1", h1);
     }
-    table.set_scientific("L2", true);
-    table.set_scientific("H1", true);
-    table.evaluate_convergence_rates("L2",
-                                     ConvergenceTable::reduction_rate_log2);
-    table.evaluate_convergence_rates("H1",
-                                     ConvergenceTable::reduction_rate_log2);
-    table.write_text(std::cout, TableHandler::org_mode_table);
+    print_with_rates(table, {"L2", "H1"});
     // Every rate between consecutive levels within 0.1 of the theory (the
     // levels are in the asymptotic range; measured in the output above).
     for (const auto &[key, rate] : std::vector<std::pair<std::string, double>>{

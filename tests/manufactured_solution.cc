@@ -161,23 +161,6 @@ namespace
     check("|t - sigma n|", t_error, 1e-12);
   }
 
-  /** Gives access to the rates ConvergenceTable has computed. */
-  class RateTable : public ConvergenceTable
-  {
-  public:
-    /** The rates of evaluate_convergence_rates(key, reduction_rate_log2),
-     * from the second row on. */
-    std::vector<double>
-    log2_rates(const std::string &key) const
-    {
-      const auto &entries = columns.at(key + "...red.rate.log2").entries;
-      std::vector<double> rates;
-      for (unsigned int i = 1; i < entries.size(); ++i)
-        rates.push_back(entries[i].get_numeric_value());
-      return rates;
-    }
-  };
-
   struct Case
   {
     std::string  cell_type;

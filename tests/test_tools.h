@@ -108,6 +108,23 @@ namespace ddcontact
       return 0.5 * std::log2(errors[n - 3] / errors[n - 1]);
     }
 
+    /** A ConvergenceTable that gives out the rates it computed. */
+    class RateTable : public dealii::ConvergenceTable
+    {
+    public:
+      /** The rates of evaluate_convergence_rates(key, reduction_rate_log2),
+       * from the second row on. */
+      std::vector<double>
+      log2_rates(const std::string &key) const
+      {
+        const auto &entries = columns.at(key + "...red.rate.log2").entries;
+        std::vector<double> rates;
+        for (unsigned int i = 1; i < entries.size(); ++i)
+          rates.push_back(entries[i].get_numeric_value());
+        return rates;
+      }
+    };
+
     /** Print @p table with the @p columns in scientific notation and their
      * log2 reduction rates. */
     inline void
