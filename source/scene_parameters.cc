@@ -377,16 +377,15 @@ namespace ddcontact
                        "process; use Solver = dd-newton or dd under mpirun");
 
     check_adaptation_bodies(*this);
-    // The BEM's kernels (Kelvin's solution) and the residual estimator's
-    // strong residual are those of plane strain; an axisymmetric body
-    // would need ring-load kernels and the hoop terms (doc/axisymmetric.md).
+    // The BEM's kernels (Kelvin's solution) are those of plane strain; an
+    // axisymmetric body would need ring-load kernels (doc/axisymmetric.md).
     if (geometry == Geometry::axisymmetric && adaptation.enabled() &&
         adaptation.mode != AdaptationMode::uniform &&
-        adaptation.estimator != EstimatorType::kelly)
+        is_fem_bem(adaptation.estimator))
       throw InputError(
         "Adaptation/Estimator: " + to_string(adaptation.estimator) +
         " is written for plane strain; with Geometry = "
-        "axisymmetric use Estimator = kelly (or Mode = "
+        "axisymmetric use Estimator = residual or kelly (or Mode = "
         "uniform)");
     parse_contact_pairs(prm, *this);
     set_contact_formulation(*this);

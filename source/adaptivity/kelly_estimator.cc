@@ -88,6 +88,7 @@ namespace ddcontact
                       const Quadrature<1> &face_quadrature,
                       const BodyVector    &solution,
                       const Material      *material,
+                      const Geometry       geometry,
                       Vector<double>      &jumps)
   {
     const auto        &fe           = dof_handler.get_fe();
@@ -144,7 +145,8 @@ namespace ddcontact
           integral += (face_flux(grad[q], n, material) -
                        face_flux(grad_other[q], n, material))
                         .norm_square() *
-                      fine.JxW(q);
+                      fine.JxW(q) *
+                      section_measure(geometry, fine.quadrature_point(q));
         }
         jumps(cell->active_cell_index()) += integral;
         jumps(neighbor->active_cell_index()) += integral;
@@ -159,8 +161,13 @@ namespace ddcontact
                        Vector<double>      &eta)
   {
     Vector<double> jumps;
-    face_jump_integrals(
-      mapping, dof_handler, face_quadrature, solution, nullptr, jumps);
+    face_jump_integrals(mapping,
+                        dof_handler,
+                        face_quadrature,
+                        solution,
+                        nullptr,
+                        Geometry::plane_strain,
+                        jumps);
     kelly_weighted_indicators(dof_handler, jumps, eta);
   }
 

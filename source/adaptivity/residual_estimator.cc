@@ -77,6 +77,87 @@ namespace ddcontact
       const Tensor<1, 2> t = b - a;
       return (x - a) * t / t.norm_square();
     }
+
+    /**
+     * Adds to @p g, at the points @p x of the face from @p a to @p b, the
+     * L2 projection (in the measure @p dS) of the contact load of the
+     * @p samples on the polynomials @p legendre of the chord coordinate:
+     * the face's moments sum_q w_q g_q L_j(x_q) of the samples, which load
+     * the FEM problem (20), divided by the Gram matrix.
+     */
+    void
+    add_projected_load(
+      const Point<2>                                     &a,
+      const Point<2>                                     &b,
+      const std::vector<Point<2>>                        &x,
+      const std::vector<double>                          &dS,
+      const std::vector<unsigned int>                    &samples,
+      const BoundaryTractionSamples                      &contact,
+      const std::vector<Polynomials::Polynomial<double>> &legendre,
+      std::vector<Tensor<1, 2>>                          &g)
+    {
+      const unsigned int n = legendre.size(), n_q = x.size();
+      // L_j at the face's quadrature points.
+      std::vector<std::vector<double>> L(n_q, std::vector<double>(n));
+      for (unsigned int q = 0; q < n_q; ++q)
+        for (unsigned int j = 0; j < n; ++j)
+          L[q][j] = legendre[j].value(chord_coordinate(x[q], a, b));
+      FullMatrix<double> gram(n, n);
+      for (unsigned int q = 0; q < n_q; ++q)
+        for (unsigned int j = 0; j < n; ++j)
+          for (unsigned int k = 0; k < n; ++k)
+            gram(j, k) += L[q][j] * L[q][k] * dS[q];
+      gram.gauss_jordan();
+      std::vector<Tensor<1, 2>> moments(n), coefficients(n);
+      for (const unsigned int p : samples)
+      {
+        const double s = chord_coordinate(contact.points[p], a, b);
+        for (unsigned int j = 0; j < n; ++j)
+          moments[j] +=
+            contact.weights[p] * legendre[j].value(s) * contact.traction[p];
+      }
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int k = 0; k < n; ++k)
+          coefficients[j] += gram(j, k) * moments[k];
+      for (unsigned int q = 0; q < n_q; ++q)
+        for (unsigned int j = 0; j < n; ++j)
+          g[q] += L[q][j] * coefficients[j];
+    }
+
+    /**
+     * int_F |(g - sigma(u_h) n) / (2 mu)|^2 dS over the face of @p values
+     * in the components that @p prescribed leaves free, with u_h's
+     * gradients @p grad and values @p u (for the hoop strain's part of
+     * sigma in an axisymmetric @p geometry) and the measure @p dS.
+     */
+    double
+    traction_residual(const FEFaceValues<2>             &values,
+                      const Gradients                   &grad,
+                      const std::vector<Vector<double>> &u,
+                      const std::vector<Tensor<1, 2>>   &g,
+                      const std::vector<double>         &dS,
+                      const ComponentMask               &prescribed,
+                      const Material                    &material,
+                      const Geometry                     geometry)
+    {
+      const bool axisymmetric = geometry == Geometry::axisymmetric;
+      double     integral     = 0;
+      for (unsigned int q = 0; q < dS.size(); ++q)
+      {
+        if (dS[q] == 0)
+          continue; // a face on the axis: no ring, no residual
+        const Tensor<1, 2> &n = values.normal_vector(q);
+        Tensor<1, 2>        r =
+          g[q] / (2. * material.mu()) - face_flux(grad[q], n, &material);
+        if (axisymmetric)
+          r -= material.lambda() * u[q](0) / values.quadrature_point(q)[0] * n /
+               (2. * material.mu());
+        for (unsigned int c = 0; c < 2; ++c)
+          if (!prescribed[c])
+            integral += r[c] * r[c] * dS[q];
+      }
+      return integral;
+    }
   } // namespace
 
   void
@@ -88,16 +169,22 @@ namespace ddcontact
     const QGauss<1>             face_quadrature(body.get_fe().degree + 1);
     const auto                 &conditions = body.get_boundary_conditions();
     const Material             &material   = body.get_material();
+    const Geometry              geometry   = body.get_geometry();
     const unsigned int          n_q        = face_quadrature.size();
     const unsigned int          degree     = body.get_fe().degree;
     FEFaceValues<2>             values(body.get_mapping(),
                            body.get_fe(),
                            face_quadrature,
-                           update_gradients | update_normal_vectors |
-                             update_quadrature_points | update_JxW_values);
+                           update_values | update_gradients |
+                             update_normal_vectors | update_quadrature_points |
+                             update_JxW_values);
     Gradients                   grad(n_q, std::vector<Tensor<1, 2>>(2));
+    std::vector<Vector<double>> u(n_q, Vector<double>(2));
     std::vector<Vector<double>> neumann(n_q, Vector<double>(2));
     std::vector<Tensor<1, 2>>   g(n_q);
+    // The measure of the boundary: ds, or 2 pi r ds on the ring, the
+    // measure of the contact samples' weights as well.
+    std::vector<double> dS(n_q);
 
     // The contact load per face: its L2 projection on the Legendre
     // polynomials of degree <= the element's in the chord coordinate.
@@ -124,6 +211,10 @@ namespace ddcontact
             continue;
           values.reinit(cell, f);
           values.get_function_gradients(solution, grad);
+          values.get_function_values(solution, u);
+          for (unsigned int q = 0; q < n_q; ++q)
+            dS[q] = values.JxW(q) *
+                    section_measure(geometry, values.quadrature_point(q));
 
           std::fill(g.begin(), g.end(), Tensor<1, 2>());
           if (const auto t = conditions.neumann.find(id);
@@ -139,47 +230,19 @@ namespace ddcontact
               i != face_index.end() &&
               !contact_faces.samples[i->second].empty())
           {
-            const auto         face = cell->face(f);
-            const Point<2>     a = face->vertex(0), b = face->vertex(1);
-            const unsigned int n = legendre.size();
-            // L_j at the face's quadrature points.
-            std::vector<std::vector<double>> L(n_q, std::vector<double>(n));
-            for (unsigned int q = 0; q < n_q; ++q)
-              for (unsigned int j = 0; j < n; ++j)
-                L[q][j] = legendre[j].value(
-                  chord_coordinate(values.quadrature_point(q), a, b));
-            FullMatrix<double> gram(n, n);
-            for (unsigned int q = 0; q < n_q; ++q)
-              for (unsigned int j = 0; j < n; ++j)
-                for (unsigned int k = 0; k < n; ++k)
-                  gram(j, k) += L[q][j] * L[q][k] * values.JxW(q);
-            gram.gauss_jordan();
-            std::vector<Tensor<1, 2>> moments(n), coefficients(n);
-            for (const unsigned int p : contact_faces.samples[i->second])
-            {
-              const double s = chord_coordinate(contact.points[p], a, b);
-              for (unsigned int j = 0; j < n; ++j)
-                moments[j] += contact.weights[p] * legendre[j].value(s) *
-                              contact.traction[p];
-            }
-            for (unsigned int j = 0; j < n; ++j)
-              for (unsigned int k = 0; k < n; ++k)
-                coefficients[j] += gram(j, k) * moments[k];
-            for (unsigned int q = 0; q < n_q; ++q)
-              for (unsigned int j = 0; j < n; ++j)
-                g[q] += L[q][j] * coefficients[j];
+            const auto face = cell->face(f);
+            add_projected_load(face->vertex(0),
+                               face->vertex(1),
+                               values.get_quadrature_points(),
+                               dS,
+                               contact_faces.samples[i->second],
+                               contact,
+                               legendre,
+                               g);
           }
 
-          double integral = 0;
-          for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const Tensor<1, 2> r =
-              g[q] / (2. * material.mu()) -
-              face_flux(grad[q], values.normal_vector(q), &material);
-            for (unsigned int c = 0; c < 2; ++c)
-              if (!prescribed[c])
-                integral += r[c] * r[c] * values.JxW(q);
-          }
+          const double integral = traction_residual(
+            values, grad, u, g, dS, prescribed, material, geometry);
           integrals(cell->active_cell_index()) += integral;
         }
   }
@@ -195,22 +258,30 @@ namespace ddcontact
   {
     const Material    &material = body.get_material();
     const auto        &force    = body.get_boundary_conditions().body_force;
+    const Geometry     geometry = body.get_geometry();
     const double       lambda = material.lambda(), mu = material.mu();
     const auto        &quadrature = body.get_cell_quadrature();
     const unsigned int n_q        = quadrature.size();
     FEValues<2>        values(body.get_mapping(),
                        body.get_fe(),
                        quadrature,
-                       update_hessians | update_quadrature_points |
-                         update_JxW_values);
+                       update_values | update_gradients | update_hessians |
+                         update_quadrature_points | update_JxW_values);
     std::vector<std::vector<Tensor<2, 2>>> hessians(
       n_q, std::vector<Tensor<2, 2>>(2));
+    Gradients                   grad(n_q, std::vector<Tensor<1, 2>>(2));
+    std::vector<Vector<double>> u(n_q, Vector<double>(2));
     std::vector<Vector<double>> f(n_q, Vector<double>(2));
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
       {
         values.reinit(cell);
         values.get_function_hessians(solution, hessians);
+        if (geometry == Geometry::axisymmetric)
+        {
+          values.get_function_values(solution, u);
+          values.get_function_gradients(solution, grad);
+        }
         if (force)
           force->vector_value_list(values.get_quadrature_points(), f);
         double integral = 0;
@@ -222,12 +293,26 @@ namespace ddcontact
           const double grad_div_0 = H[0][0][0] + H[1][1][0];
           const double grad_div_1 = H[0][0][1] + H[1][1][1];
           Tensor<1, 2> r;
-          r[0] = (lambda + mu) * grad_div_0 + mu * trace(H[0]);
-          r[1] = (lambda + mu) * grad_div_1 + mu * trace(H[1]);
+          r[0]              = (lambda + mu) * grad_div_0 + mu * trace(H[0]);
+          r[1]              = (lambda + mu) * grad_div_1 + mu * trace(H[1]);
+          const Point<2> &x = values.quadrature_point(q);
+          if (geometry == Geometry::axisymmetric)
+          {
+            // The terms of the hoop strain u_r / r in (r, z): with a = u_r,
+            // b = u_z, div sigma gains (lambda + 2 mu)(a_r / r - a / r^2)
+            // and ((lambda + mu) a_z + mu b_r) / r, the remainder of
+            // (sigma_rr - sigma_tt) / r and sigma_rz / r once sigma holds
+            // lambda a / r. Quadrature points lie off the axis, r > 0.
+            const auto  &G  = grad[q];
+            const double rr = x[0];
+            r[0] += (lambda + 2. * mu) * (G[0][0] / rr - u[q](0) / (rr * rr));
+            r[1] += ((lambda + mu) * G[0][1] + mu * G[1][0]) / rr;
+          }
           if (force)
             for (unsigned int c = 0; c < 2; ++c)
               r[c] += f[q](c);
-          integral += (r / (2. * mu)).norm_square() * values.JxW(q);
+          integral += (r / (2. * mu)).norm_square() * values.JxW(q) *
+                      section_measure(geometry, x);
         }
         integrals(cell->active_cell_index()) += cell->diameter() * integral;
       }
@@ -243,6 +328,7 @@ namespace ddcontact
                         QGauss<1>(body.get_fe().degree + 1),
                         u_fem,
                         &body.get_material(),
+                        body.get_geometry(),
                         integrals);
     add_boundary_residuals(u_fem, contact, integrals);
     add_cell_residuals(u_fem, integrals);

@@ -67,6 +67,13 @@ namespace ddcontact
                       "Initial normal gap f_n(x) [length], an expression in "
                       "x, y and the constants (Gap type = expression).");
     prm.declare_entry(
+      "Interference",
+      "0",
+      Patterns::Double(),
+      "An interference fit's overlap delta [length], taken off the gap on "
+      "the whole zone (f_n - delta, either Gap type): a press or shrink fit "
+      "on meshes that touch; negative: a clearance.");
+    prm.declare_entry(
       "Gap evaluation",
       "nodes",
       selection_pattern<GapEvaluation>(),
@@ -143,6 +150,7 @@ namespace ddcontact
     formulation = parse_selection<ContactFormulation>(prm.get("Formulation"));
     gap_type    = parse_selection<GapType>(prm.get("Gap type"));
     gap_expression = prm.get("Gap");
+    interference   = prm.get_double("Interference");
     gap_evaluation = parse_selection<GapEvaluation>(prm.get("Gap evaluation"));
     penalty_type   = parse_selection<PenaltyType>(prm.get("Penalty type"));
     penalty        = prm.get_double("Penalty");
@@ -162,6 +170,9 @@ namespace ddcontact
                          "' is neither auto nor a length > 0");
       search_distance = d;
     }
+    if (!std::isfinite(interference))
+      throw InputError(section + "Interference: " + prm.get("Interference") +
+                       " is not a finite length");
     if (!(penalty > 0.))
       throw InputError(section + "Penalty: " + prm.get("Penalty") +
                        " must be positive");

@@ -408,6 +408,8 @@ namespace ddcontact
                              " of S_1; give an expression that is finite "
                              "on the whole zone");
           report.record(p.x, p.gap, partner->gap, length);
+          // After the report: an interference is meant to overlap.
+          p.gap -= parameters.interference;
           if (!body_2.is_mesh_distributed())
             shapes_2.push_back(point_shapes_at(
               body_2, faces_2[partner->segment].cell, {p.projection})[0]);

@@ -208,12 +208,13 @@ namespace ddcontact
     suffix << "_step" << std::setw(4) << std::setfill('0') << step;
     write_contact_profiles(results, suffix.str());
     Json row, pairs = Json::array();
-    row["step"] = step;
-    row["t"]    = t;
+    row["step"]       = step;
+    row["t"]          = t;
+    const auto states = contact_states(results);
     for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
     {
-      const auto state = results.contact_solver->contact_state(p);
-      Json       c;
+      const auto &state = states[p];
+      Json        c;
       c["pair"]         = results.contact_pairs[p]->name();
       c["force"]        = Json::array({state.force_1[0], state.force_1[1]});
       c["normal_force"] = state.normal_force;
@@ -225,20 +226,21 @@ namespace ddcontact
       pairs.push_back(c);
     }
     row["pairs"] = pairs;
-    record_supports(results, step, t, row);
+    record_supports(results, states, step, t, row);
     load_steps.push_back(row);
   }
 
   void
-  RunReport::record_supports(const Results     &results,
-                             const unsigned int step,
-                             const double       t,
-                             Json              &row)
+  RunReport::record_supports(const Results                   &results,
+                             const std::vector<ContactState> &states,
+                             const unsigned int               step,
+                             const double                     t,
+                             Json                            &row)
   {
     Json supports = Json::array();
     for (const auto &body : results.bodies)
     {
-      const auto reactions = reactions_of(results, *body);
+      const auto reactions = reactions_of(results, states, *body);
       for (const auto &s : reactions.supports())
       {
         Json support;

@@ -98,7 +98,8 @@ namespace ddcontact
   Json
   RunReport::bodies_json(const Results &results) const
   {
-    Json list = Json::array();
+    Json       list   = Json::array();
+    const auto states = contact_states(results);
     for (const auto &body : results.bodies)
     {
       Json b;
@@ -119,38 +120,50 @@ namespace ddcontact
         body->stresses().largest_strain_and_rotation();
       b["largest_strain"]   = Utilities::MPI::max(strain, MPI_COMM_WORLD);
       b["largest_rotation"] = Utilities::MPI::max(rotation, MPI_COMM_WORLD);
-      add_reactions(results, *body, b);
+      add_reactions(results, states, *body, b);
       list.push_back(b);
     }
     return list;
   }
 
+  std::vector<ContactState>
+  RunReport::contact_states(const Results &results)
+  {
+    std::vector<ContactState> states;
+    if (results.contact_solver != nullptr)
+      for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
+        states.push_back(results.contact_solver->contact_state(p));
+    return states;
+  }
+
   ReactionForces<2>
-  RunReport::reactions_of(const Results &results, const ElasticBody<2> &body)
+  RunReport::reactions_of(const Results                   &results,
+                          const std::vector<ContactState> &states,
+                          const ElasticBody<2>            &body)
   {
     // The contact traction of the reported state (contact_<pair>.csv).
     BodyVector contact_load;
-    if (results.contact_solver != nullptr)
-      for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
-      {
-        const auto &pair = *results.contact_pairs[p];
-        if (&pair.get_body_1() != &body && &pair.get_body_2() != &body)
-          continue;
-        if (contact_load.size() == 0)
-          body.reinit_vector(contact_load);
-        const auto state = results.contact_solver->contact_state(p);
-        pair.add_unconstrained_contact_load(state.sigma_n, body, contact_load);
-        pair.add_unconstrained_friction_load(state.t, body, contact_load);
-      }
+    for (unsigned int p = 0; p < states.size(); ++p)
+    {
+      const auto &pair = *results.contact_pairs[p];
+      if (&pair.get_body_1() != &body && &pair.get_body_2() != &body)
+        continue;
+      if (contact_load.size() == 0)
+        body.reinit_vector(contact_load);
+      pair.add_unconstrained_contact_load(
+        states[p].sigma_n, body, contact_load);
+      pair.add_unconstrained_friction_load(states[p].t, body, contact_load);
+    }
     return ReactionForces<2>(body, body.get_solution(), contact_load);
   }
 
   void
-  RunReport::add_reactions(const Results        &results,
-                           const ElasticBody<2> &body,
-                           Json                 &json) const
+  RunReport::add_reactions(const Results                   &results,
+                           const std::vector<ContactState> &states,
+                           const ElasticBody<2>            &body,
+                           Json                            &json) const
   {
-    const ReactionForces<2> reactions = reactions_of(results, body);
+    const ReactionForces<2> reactions = reactions_of(results, states, body);
     const auto vector = [](const Tensor<1, 2> &f) { return Json{f[0], f[1]}; };
     Json       supports = Json::array();
     for (const auto &support : reactions.supports())

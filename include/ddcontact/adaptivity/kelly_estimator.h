@@ -8,6 +8,7 @@
 #include <deal.II/fe/mapping.h>
 
 #include <ddcontact/adaptivity/error_estimator.h>
+#include <ddcontact/body/geometry.h>
 #include <ddcontact/body/material.h>
 
 namespace ddcontact
@@ -54,7 +55,9 @@ namespace ddcontact
   /**
    * The face integrals of face_jump_indicators() per active cell, before
    * the factor h_K/24: the sum over the interior (sub-)faces F of K of
-   * int_F |[face_flux()]|^2, with or without a @p material. @p jumps is resized
+   * int_F |[face_flux()]|^2, with or without a @p material, over the
+   * section's measure (dS = 2 pi r ds for an axisymmetric @p geometry; the
+   * hoop strain u_r / r is continuous and has no jump). @p jumps is resized
    * to the number of active cells; only faces with a locally owned side are
    * integrated.
    */
@@ -64,6 +67,7 @@ namespace ddcontact
                       const Quadrature<1> &face_quadrature,
                       const BodyVector    &solution,
                       const Material      *material,
+                      const Geometry       geometry,
                       Vector<double>      &jumps);
 
   /**

@@ -33,6 +33,10 @@ namespace ddcontact
    * moments sum_q w_q g_q L_j(x_q) of the samples on the face, the moments
    * that load the FEM problem (20).
    *
+   * In an axisymmetric body (Geometry = axisymmetric) sigma holds the hoop
+   * strain u_r / r, div sigma its terms in (r, z), and every integral is
+   * over the ring (2 pi r; doc/axisymmetric.md).
+   *
    * Its units are those of Kelly's (a strain times a length), so threshold
    * marking does not apply.
    */

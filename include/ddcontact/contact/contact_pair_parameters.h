@@ -71,6 +71,7 @@ namespace ddcontact
     ContactFormulation formulation          = ContactFormulation::exact;
     GapType            gap_type             = GapType::expression;
     std::string        gap_expression       = "0";
+    double             interference         = 0; // delta, off f_n
     GapEvaluation      gap_evaluation       = GapEvaluation::nodes;
     PenaltyType        penalty_type         = PenaltyType::relative;
     double             penalty              = 0.05; // c, or theta itself

@@ -197,23 +197,33 @@ namespace ddcontact
      * with its applied load, contact force and their imbalance, into
      * @p json. Collective over a partitioned mesh. */
     void
-    add_reactions(const Results        &results,
-                  const ElasticBody<2> &body,
-                  Json                 &json) const;
+    add_reactions(const Results                   &results,
+                  const std::vector<ContactState> &states,
+                  const ElasticBody<2>            &body,
+                  Json                            &json) const;
+
+    /** The contact state of every pair, in the order of the pairs. */
+    static std::vector<ContactState>
+    contact_states(const Results &results);
 
     /** The reactions of @p body in the current state, loaded by its
-     * contact tractions. Collective over a partitioned mesh. */
+     * contact tractions (@p states, contact_states()). Collective over a
+     * partitioned mesh. */
     static ReactionForces<2>
-    reactions_of(const Results &results, const ElasticBody<2> &body);
+    reactions_of(const Results                   &results,
+                 const std::vector<ContactState> &states,
+                 const ElasticBody<2>            &body);
 
     /** Each Dirichlet id's mean displacement and reaction at load step
-     * @p step (t): summary.json's load_steps[].supports and the rows of
-     * force_displacement.csv, rewritten whole. Collective. */
+     * @p step (t), in the contact @p states: summary.json's
+     * load_steps[].supports and the rows of force_displacement.csv,
+     * rewritten whole. Collective. */
     void
-    record_supports(const Results &results,
-                    unsigned int   step,
-                    double         t,
-                    Json          &row);
+    record_supports(const Results                   &results,
+                    const std::vector<ContactState> &states,
+                    unsigned int                     step,
+                    double                           t,
+                    Json                            &row);
 
     /** The values at the requested points, also printed on the screen. */
     Json
