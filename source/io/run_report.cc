@@ -222,6 +222,8 @@ namespace ddcontact
       c["half_width"]   = state.half_width;
       if (state.contact_radius >= 0)
         c["contact_radius"] = state.contact_radius;
+      if (state.stick_radius >= 0)
+        c["stick_radius"] = state.stick_radius;
       add_friction(state, c);
       pairs.push_back(c);
     }

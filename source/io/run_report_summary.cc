@@ -93,6 +93,68 @@ namespace ddcontact
           << "/Penalty";
       return s.str();
     }
+    /** The largest |u_1n| + |u_2n| of @p state. max_penetration is the
+     * largest u_1n + u_2n - f_n (at least 0), with u_an the displacement of
+     * body a along its outward normal; the approach is the measure of the
+     * AL tolerance (ContactProblem::penetration()): u_1n + u_2n itself is
+     * the penetration on a zero gap, not how far the bodies were pressed
+     * together. |u_1n| + |u_2n| is that distance for two blocks pressed
+     * against each other, and twice it for a rigid punch on a soft body. */
+    double
+    approach_of(const ContactState &state)
+    {
+      double approach = 0;
+      for (unsigned int q = 0; q < state.u_1n.size(); ++q)
+        approach =
+          std::max(approach, std::abs(state.u_1n[q]) + std::abs(state.u_2n[q]));
+      return approach;
+    }
+
+    /** summary.json's record of the contact search at the pair's last
+     * setup. */
+    Json
+    search_json(const ContactSearchReport &found)
+    {
+      Json search;
+      search["search_distance"]     = found.search_distance;
+      search["points_examined"]     = found.n_examined;
+      search["points_with_partner"] = found.n_points;
+      if (found.n_points > 0)
+      {
+        search["min_initial_gap"] = found.min_gap;
+        search["max_initial_gap"] = found.max_gap;
+        search["min_initial_gap_at"] =
+          Json::array({found.min_gap_at[0], found.min_gap_at[1]});
+        search["deepest_initial_overlap"] = std::max(0., -found.min_gap);
+      }
+      if (found.worst_excess > 0)
+        search["gap_below_geometry"] = {
+          {"expression", found.worst_expression},
+          {"geometric", found.worst_geometric},
+          {"at",
+           Json::array({found.worst_excess_at[0], found.worst_excess_at[1]})}};
+      return search;
+    }
+    /** An approach beyond the fraction @p limit of the thinner body is no
+     * small-strain contact (units, most likely): the warning, or "". */
+    std::string
+    small_strain_warning(const ContactPair &pair,
+                         const double       approach,
+                         const double       limit)
+    {
+      const double thinner =
+        std::min(pair.thickness_of_body_1(), pair.thickness_of_body_2());
+      if (!(approach > limit * thinner))
+        return "";
+      std::ostringstream s;
+      s << std::setprecision(3) << "contact pair " << pair.name()
+        << ": the bodies approach by " << approach << ", "
+        << 100 * approach / thinner << " % of the thinner body (" << thinner
+        << "), beyond the " << 100 * limit
+        << " % of a small-strain problem; check the units of the loads, "
+           "the prescribed displacements and Young's modulus";
+      return s.str();
+    }
   } // namespace
 
   Json
@@ -288,59 +350,18 @@ namespace ddcontact
         c["friction"] =
           selection_name(results.contact_pairs[p]->friction_law());
       add_friction(state, c);
-      // max_penetration is the largest u_1n + u_2n - f_n (at least 0), with
-      // u_an the displacement of body a along its outward normal. The
-      // approach is the largest |u_1n| + |u_2n|, the measure of the AL
-      // tolerance (ContactProblem::penetration()): u_1n + u_2n itself is
-      // the penetration on a zero gap, not how far the bodies were pressed
-      // together. |u_1n| + |u_2n| is that distance for two blocks pressed
-      // against each other, and twice it for a rigid punch on a soft body.
-      double approach = 0;
-      for (unsigned int q = 0; q < state.u_1n.size(); ++q)
-        approach =
-          std::max(approach, std::abs(state.u_1n[q]) + std::abs(state.u_2n[q]));
+      const double approach        = approach_of(state);
       const auto  &pair_parameters = parameters.contact_pairs[p];
       const auto  &pair            = *results.contact_pairs[p];
       const double h               = std::min(
         zone_cell_diameter(pair.get_body_1(), pair_parameters.boundary_id_1),
         zone_cell_diameter(pair.get_body_2(), pair_parameters.boundary_id_2));
       c["approach"] = approach;
-      // An approach beyond a few per cent of the thinner body is no
-      // small-strain contact (units, most likely).
-      const double thinner =
-        std::min(pair.thickness_of_body_1(), pair.thickness_of_body_2());
-      if (approach > small_strain_limit * thinner)
-      {
-        std::ostringstream s;
-        s << std::setprecision(3) << "contact pair " << pair.name()
-          << ": the bodies approach by " << approach << ", "
-          << 100 * approach / thinner << " % of the thinner body (" << thinner
-          << "), beyond the " << 100 * small_strain_limit
-          << " % of a small-strain problem; check the units of the loads, "
-             "the prescribed displacements and Young's modulus";
-        json["warnings"].push_back(s.str());
-      }
-      // The contact search at the last setup of the pair.
-      const auto &found = pair.search_report();
-      Json        search;
-      search["search_distance"]     = found.search_distance;
-      search["points_examined"]     = found.n_examined;
-      search["points_with_partner"] = found.n_points;
-      if (found.n_points > 0)
-      {
-        search["min_initial_gap"] = found.min_gap;
-        search["max_initial_gap"] = found.max_gap;
-        search["min_initial_gap_at"] =
-          Json::array({found.min_gap_at[0], found.min_gap_at[1]});
-        search["deepest_initial_overlap"] = std::max(0., -found.min_gap);
-      }
-      if (found.worst_excess > 0)
-        search["gap_below_geometry"] = {
-          {"expression", found.worst_expression},
-          {"geometric", found.worst_geometric},
-          {"at",
-           Json::array({found.worst_excess_at[0], found.worst_excess_at[1]})}};
-      c["search"] = search;
+      if (const auto w =
+            small_strain_warning(pair, approach, small_strain_limit);
+          !w.empty())
+        json["warnings"].push_back(w);
+      c["search"] = search_json(pair.search_report());
       for (const auto &warning : pair.setup_warnings())
         json["warnings"].push_back(warning);
       if (h < std::numeric_limits<double>::max())
