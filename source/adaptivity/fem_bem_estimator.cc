@@ -26,42 +26,13 @@ namespace ddcontact
     mesh_changed.disconnect();
   }
 
-  void
-  FemBemEstimator::estimate(const BodyVector              &u_fem,
-                            const BoundaryTractionSamples &contact)
+  double
+  FemBemEstimator::compare(const CellStresses &sigma_B,
+                           const CellStresses &sigma_F,
+                           Vector<double>     &area)
   {
-    Timer timer;
-    if (!bem_is_current)
-    {
-      bem.setup(body.get_dof_handler(), body.get_mapping());
-      bem_is_current = true;
-      time.bem_setup += timer.wall_time();
-    }
-
-    timer.restart();
-    bem.solve(contact);
-    time.bem_solve += timer.wall_time();
-
-    timer.restart();
-    // The BEM stress is interpolated from the support points inside the
-    // body (a fraction of the quadrature points). Under mpirun every
-    // process holds the body and its boundary solution and takes a share
-    // of the points, with the same result on any number of processes; a
-    // distributed mesh (p4est) interpolates its own cells.
-    const auto sigma_B =
-      bem.interpolated_stress_at_quadrature_points(body.get_dof_handler(),
-                                                   body.get_mapping(),
-                                                   body.get_cell_quadrature(),
-                                                   MPI_COMM_WORLD);
-    time.bem_interior += timer.wall_time();
-
-    // (24), (27): cell norms of sigma_B - sigma_F and the global norm of
-    // sigma_B, with the cell quadrature of the FEM (the sigma_B above
-    // lives at its points).
-    timer.restart();
-    const auto     sigma_F = body.stresses(u_fem).at_quadrature_points();
-    const auto    &tria    = body.get_triangulation();
-    Vector<double> area(tria.n_active_cells());
+    const auto &tria = body.get_triangulation();
+    area.reinit(tria.n_active_cells());
     local_error.reinit(tria.n_active_cells());
     local_energy_error.reinit(tria.n_active_cells());
     double total_area = 0, bem_norm2 = 0, error2 = 0;
@@ -113,6 +84,46 @@ namespace ddcontact
     energy_error    = std::sqrt(energy_error2);
     energy_norm     = std::sqrt(energy_norm2);
     bem_stress_norm = std::sqrt(bem_norm2);
+
+    return total_area;
+  }
+
+  void
+  FemBemEstimator::estimate(const BodyVector              &u_fem,
+                            const BoundaryTractionSamples &contact)
+  {
+    Timer timer;
+    if (!bem_is_current)
+    {
+      bem.setup(body.get_dof_handler(), body.get_mapping());
+      bem_is_current = true;
+      time.bem_setup += timer.wall_time();
+    }
+
+    timer.restart();
+    bem.solve(contact);
+    time.bem_solve += timer.wall_time();
+
+    timer.restart();
+    // The BEM stress is interpolated from the support points inside the
+    // body (a fraction of the quadrature points). Under mpirun every
+    // process holds the body and its boundary solution and takes a share
+    // of the points, with the same result on any number of processes; a
+    // distributed mesh (p4est) interpolates its own cells.
+    const auto sigma_B =
+      bem.interpolated_stress_at_quadrature_points(body.get_dof_handler(),
+                                                   body.get_mapping(),
+                                                   body.get_cell_quadrature(),
+                                                   MPI_COMM_WORLD);
+    time.bem_interior += timer.wall_time();
+
+    // (24), (27), with the cell quadrature of the FEM (the sigma_B above
+    // lives at its points).
+    timer.restart();
+    const auto     sigma_F = body.stresses(u_fem).at_quadrature_points();
+    const auto    &tria    = body.get_triangulation();
+    Vector<double> area;
+    const double   total_area = compare(sigma_B, sigma_F, area);
 
     eta.reinit(tria.n_active_cells());
     const double reference =

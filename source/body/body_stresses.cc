@@ -293,105 +293,116 @@ namespace ddcontact
 
   template <int dim>
   PointValues<dim>
-  BodyStresses<dim>::at_point(const Point<dim> &x) const
+  BodyStresses<dim>::at_unit_point(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const Point<dim>                                     &xi,
+    const Point<dim>                                     &x) const
   {
-    const auto outside = [&]()
-    {
-      std::ostringstream s;
-      s << std::setprecision(std::numeric_limits<double>::max_digits10)
-        << "Output/Points: the point (" << x << ") does not lie in body '"
-        << body.name() << "'";
-      return InputError(s.str());
-    };
+    const Quadrature<dim> at_xi(std::vector<Point<dim>>{xi});
+    FEValues<dim>         fe_values(body.get_mapping(),
+                            body.get_fe(),
+                            at_xi,
+                            update_values | update_gradients |
+                              update_quadrature_points);
+    fe_values.reinit(cell);
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<Tensor<1, dim>>          value(1);
+    std::vector<Tensor<2, dim>>          gradient(1);
+    std::vector<SymmetricTensor<2, dim>> strain(1);
+    fe_values[displacement].get_function_values(u, value);
+    fe_values[displacement].get_function_gradients(u, gradient);
+    fe_values[displacement].get_function_symmetric_gradients(u, strain);
+    const double hoop =
+      hoop_strain(fe_values.quadrature_point(0), value[0], gradient[0]);
+    const unsigned int c = cell->active_cell_index();
+    PointValues<dim>   result;
+    result.x            = x;
+    result.displacement = value[0];
+    result.stress       = stress(strain[0], c, hoop);
+    result.out_of_plane = out_of_plane(strain[0], c, hoop);
+    return result;
+  }
+
+  template <int dim>
+  PointValues<dim>
+  BodyStresses<dim>::at_point_distributed(const Point<dim> &x,
+                                          const InputError &outside) const
+  {
     using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
     const Triangulation<dim> &tria = body.get_triangulation();
-    // Displacement and stress at the unit point @p xi of @p cell.
-    const auto evaluate = [&](const CellIterator &cell, const Point<dim> &xi)
-    {
-      const Quadrature<dim> at_xi(std::vector<Point<dim>>{xi});
-      FEValues<dim>         fe_values(body.get_mapping(),
-                              body.get_fe(),
-                              at_xi,
-                              update_values | update_gradients |
-                                update_quadrature_points);
-      fe_values.reinit(cell);
-      const FEValuesExtractors::Vector     displacement(0);
-      std::vector<Tensor<1, dim>>          value(1);
-      std::vector<Tensor<2, dim>>          gradient(1);
-      std::vector<SymmetricTensor<2, dim>> strain(1);
-      fe_values[displacement].get_function_values(u, value);
-      fe_values[displacement].get_function_gradients(u, gradient);
-      fe_values[displacement].get_function_symmetric_gradients(u, strain);
-      const double hoop =
-        hoop_strain(fe_values.quadrature_point(0), value[0], gradient[0]);
-      const unsigned int c = cell->active_cell_index();
-      PointValues<dim>   result;
-      result.x            = x;
-      result.displacement = value[0];
-      result.stress       = stress(strain[0], c, hoop);
-      result.out_of_plane = out_of_plane(strain[0], c, hoop);
-      return result;
-    };
+    static_assert(dim == 2, "six values: u and the stress");
+    using Values = std::array<double, 6>;
+    Utilities::MPI::RemotePointEvaluation<dim> remote(1e-6, true);
+    remote.reinit({x}, tria, body.get_mapping());
+    if (!remote.all_points_found())
+      throw outside;
+    std::vector<Values> found, buffer;
+    remote.template evaluate_and_process<Values>(
+      found,
+      buffer,
+      [&](const ArrayView<Values> &values, const auto &cell_data)
+      {
+        for (unsigned int c = 0; c < cell_data.cells.size(); ++c)
+        {
+          const CellIterator cell(&tria,
+                                  cell_data.cells[c].first,
+                                  cell_data.cells[c].second,
+                                  &body.get_dof_handler());
+          for (unsigned int k = cell_data.reference_point_ptrs[c];
+               k < cell_data.reference_point_ptrs[c + 1];
+               ++k)
+          {
+            const auto v =
+              at_unit_point(cell, cell_data.reference_point_values[k], x);
+            values[k] = {{v.displacement[0],
+                          v.displacement[1],
+                          v.stress[0][0],
+                          v.stress[1][1],
+                          v.stress[0][1],
+                          v.out_of_plane}};
+          }
+        }
+      });
+    const Values    &v = found.at(0);
+    PointValues<dim> result;
+    result.x            = x;
+    result.displacement = Tensor<1, dim>({v[0], v[1]});
+    result.stress[0][0] = v[2];
+    result.stress[1][1] = v[3];
+    result.stress[0][1] = v[4];
+    result.out_of_plane = v[5];
+    return result;
+  }
+
+  template <int dim>
+  PointValues<dim>
+  BodyStresses<dim>::at_point(const Point<dim> &x) const
+  {
+    std::ostringstream message;
+    message << std::setprecision(std::numeric_limits<double>::max_digits10)
+            << "Output/Points: the point (" << x << ") does not lie in body '"
+            << body.name() << "'";
+    const InputError outside(message.str());
 
     PointValues<dim> result;
     if (body.is_mesh_distributed())
-    {
-      // The process owning the cell around x evaluates and sends
-      // (collective over the mesh's processes, which all ask for x).
-      static_assert(dim == 2, "six values: u and the stress");
-      using Values = std::array<double, 6>;
-      Utilities::MPI::RemotePointEvaluation<dim> remote(1e-6, true);
-      remote.reinit({x}, tria, body.get_mapping());
-      if (!remote.all_points_found())
-        throw outside();
-      std::vector<Values> found, buffer;
-      remote.template evaluate_and_process<Values>(
-        found,
-        buffer,
-        [&](const ArrayView<Values> &values, const auto &cell_data)
-        {
-          for (unsigned int c = 0; c < cell_data.cells.size(); ++c)
-          {
-            const CellIterator cell(&tria,
-                                    cell_data.cells[c].first,
-                                    cell_data.cells[c].second,
-                                    &body.get_dof_handler());
-            for (unsigned int k = cell_data.reference_point_ptrs[c];
-                 k < cell_data.reference_point_ptrs[c + 1];
-                 ++k)
-            {
-              const auto v =
-                evaluate(cell, cell_data.reference_point_values[k]);
-              values[k] = {{v.displacement[0],
-                            v.displacement[1],
-                            v.stress[0][0],
-                            v.stress[1][1],
-                            v.stress[0][1],
-                            v.out_of_plane}};
-            }
-          }
-        });
-      const Values &v     = found.at(0);
-      result.x            = x;
-      result.displacement = Tensor<1, dim>({v[0], v[1]});
-      result.stress[0][0] = v[2];
-      result.stress[1][1] = v[3];
-      result.stress[0][1] = v[4];
-      result.out_of_plane = v[5];
-    }
+      result = at_point_distributed(x, outside);
     else
     {
       // The cache version reports a point outside the mesh by an invalid
       // iterator instead of an assertion.
+      const Triangulation<dim>   &tria = body.get_triangulation();
       const GridTools::Cache<dim> cache(tria, body.get_mapping());
       const auto found = GridTools::find_active_cell_around_point(cache, x);
       if (found.first.state() != IteratorState::valid)
-        throw outside();
-      result = evaluate(CellIterator(&tria,
-                                     found.first->level(),
-                                     found.first->index(),
-                                     &body.get_dof_handler()),
-                        found.second);
+        throw outside;
+      result = at_unit_point(
+        typename DoFHandler<dim>::active_cell_iterator(&tria,
+                                                       found.first->level(),
+                                                       found.first->index(),
+                                                       &body.get_dof_handler()),
+        found.second,
+        x);
     }
     result.von_mises =
       body.get_material().von_mises(result.stress, result.out_of_plane);

@@ -19,6 +19,67 @@
 
 namespace ddcontact
 {
+  namespace
+  {
+    /** The mass matrix's pattern over every cell, also on a shared mesh
+     * (whose DoFTools functions take only the cells this process owns). */
+    template <int dim>
+    void
+    make_pattern(const DoFHandler<dim>           &dof_handler,
+                 const AffineConstraints<double> &constraints,
+                 SparsityPattern                 &pattern)
+    {
+      std::vector<types::global_dof_index> dofs(
+        dof_handler.get_fe().n_dofs_per_cell());
+      DynamicSparsityPattern dsp(dof_handler.n_dofs());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        constraints.add_entries_local_to_global(dofs, dsp, false);
+      }
+      pattern.copy_from(dsp);
+    }
+
+    /**
+     * The L2 projection @p x of @p load (overwritten): M x = load. The mass
+     * matrix scaled by its diagonal has a condition number bounded cell by
+     * cell, so independently of h and of the mesh's grading (Wathen 1987:
+     * 9 for bilinear quadrilaterals, 4 for linear triangles): Jacobi-
+     * preconditioned CG reaches round-off in a few dozen products, where a
+     * factorization cost more than the rest of the output on fine meshes.
+     * Constrained rows hold only their diagonal.
+     */
+    void
+    solve_projection(const SparseMatrix<double>      &mass,
+                     const AffineConstraints<double> &constraints,
+                     Vector<double>                  &load,
+                     Vector<double>                  &x)
+    {
+      // The last iterate of a diverged run, written for diagnosis, may
+      // hold inf or NaN: its projection is NaN, not a failed CG.
+      if (!std::all_of(load.begin(),
+                       load.end(),
+                       [](const double v) { return std::isfinite(v); }))
+      {
+        x = std::numeric_limits<double>::quiet_NaN();
+        return;
+      }
+      // Solved for the load scaled to a largest entry of one, so that no
+      // norm of CG overflows for huge (finite) stresses.
+      const double scale = load.linfty_norm();
+      if (scale == 0.)
+        return;
+      load /= scale;
+      PreconditionJacobi<SparseMatrix<double>> jacobi;
+      jacobi.initialize(mass);
+      SolverControl control(std::max<unsigned int>(200, mass.m()),
+                            1e-14 * load.l2_norm());
+      SolverCG<Vector<double>>(control).solve(mass, x, load, jacobi);
+      x *= scale;
+      constraints.distribute(x);
+    }
+  } // namespace
+
   template <int dim>
   std::vector<std::string>
   SmoothedStresses<dim>::names() const
@@ -48,18 +109,10 @@ namespace ddcontact
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     constraints.close();
 
-    // Every cell, also on a shared mesh (whose DoFTools functions take
-    // only the cells this process owns).
     const unsigned int n = dof_handler.get_fe().n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
-    DynamicSparsityPattern               dsp(dof_handler.n_dofs());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-    {
-      cell->get_dof_indices(dofs);
-      constraints.add_entries_local_to_global(dofs, dsp, false);
-    }
-    SparsityPattern pattern;
-    pattern.copy_from(dsp);
+    SparsityPattern                      pattern;
+    make_pattern(dof_handler, constraints, pattern);
     SparseMatrix<double> mass(pattern);
 
     // The stress of u at the quadrature points of the body's assembly
@@ -104,39 +157,9 @@ namespace ddcontact
         constraints.distribute_local_to_global(cell_load[c], dofs, load[c]);
     }
 
-    // The mass matrix scaled by its diagonal has a condition number bounded
-    // cell by cell, so independently of h and of the mesh's grading (Wathen
-    // 1987: 9 for bilinear quadrilaterals, 4 for linear triangles): Jacobi-
-    // preconditioned CG reaches round-off in a few dozen products, where a
-    // factorization cost more than the rest of the output on fine meshes.
-    // Constrained rows hold only their diagonal.
-    PreconditionJacobi<SparseMatrix<double>> jacobi;
-    jacobi.initialize(mass);
     projected.resize(5, Vector<double>(dof_handler.n_dofs()));
     for (unsigned int c = 0; c < n_fields; ++c)
-    {
-      // The last iterate of a diverged run, written for diagnosis, may
-      // hold inf or NaN: its projection is NaN, not a failed CG.
-      if (!std::all_of(load[c].begin(),
-                       load[c].end(),
-                       [](const double v) { return std::isfinite(v); }))
-      {
-        projected[c] = std::numeric_limits<double>::quiet_NaN();
-        continue;
-      }
-      // Solved for the load scaled to a largest entry of one, so that no
-      // norm of CG overflows for huge (finite) stresses.
-      const double scale = load[c].linfty_norm();
-      if (scale == 0.)
-        continue;
-      load[c] /= scale;
-      SolverControl control(std::max<unsigned int>(200, mass.m()),
-                            1e-14 * load[c].l2_norm());
-      SolverCG<Vector<double>>(control).solve(
-        mass, projected[c], load[c], jacobi);
-      projected[c] *= scale;
-      constraints.distribute(projected[c]);
-    }
+      solve_projection(mass, constraints, load[c], projected[c]);
     const Material &material = body.get_material();
     for (unsigned int i = 0; i < dof_handler.n_dofs(); ++i)
     {

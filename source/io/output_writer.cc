@@ -95,6 +95,89 @@ namespace ddcontact
       const bool              axisymmetric;
     };
 
+    /** What DataOut reads when it builds its patches, kept beside it. */
+    struct BodyFields
+    {
+      std::unique_ptr<StressPostprocessor<2>> stress;
+      std::unique_ptr<SmoothedStresses<2>>    smoothed;
+      Vector<double>                          body_id, level, process;
+      std::vector<Vector<double>>             extra;
+    };
+
+    /**
+     * Attaches the fields of body number @p b to @p data_out (its
+     * @p solution, stresses, @p smooth ed stresses, the cell fields body_id,
+     * level and process, and every name of @p extra_fields, from @p data
+     * where it has it and zero elsewhere), held in @p fields.
+     */
+    void
+    attach_fields(DataOut<2>                   &data_out,
+                  BodyFields                   &fields,
+                  const ElasticBody<2>         &body,
+                  const BodyVector             &solution,
+                  const unsigned int            b,
+                  const std::set<std::string>  &extra_fields,
+                  const OutputWriter::CellData *data,
+                  const bool                    smooth)
+    {
+      const auto n_cells = body.get_triangulation().n_active_cells();
+      data_out.attach_dof_handler(body.get_dof_handler());
+
+      const std::vector<std::string> displacement_names(2, "displacement");
+      const std::vector<
+        DataComponentInterpretation::DataComponentInterpretation>
+        interpretation(
+          2, DataComponentInterpretation::component_is_part_of_vector);
+      data_out.add_data_vector(solution,
+                               displacement_names,
+                               DataOut<2>::type_dof_data,
+                               interpretation);
+      fields.stress = std::make_unique<StressPostprocessor<2>>(body, solution);
+      data_out.add_data_vector(solution, *fields.stress);
+      if (smooth)
+      {
+        fields.smoothed = std::make_unique<SmoothedStresses<2>>(body, solution);
+        const auto names = fields.smoothed->names();
+        for (unsigned int i = 0; i < names.size(); ++i)
+          data_out.add_data_vector(fields.smoothed->get_dof_handler(),
+                                   fields.smoothed->fields()[i],
+                                   names[i]);
+      }
+
+      fields.body_id.reinit(n_cells);
+      fields.level.reinit(n_cells);
+      fields.process.reinit(n_cells);
+      for (const auto &cell : body.get_triangulation().active_cell_iterators())
+      {
+        fields.body_id(cell->active_cell_index()) = b;
+        fields.level(cell->active_cell_index())   = cell->level();
+        // The process that assembles the cell (0 on a serial mesh).
+        fields.process(cell->active_cell_index()) =
+          cell->subdomain_id() == numbers::invalid_subdomain_id
+            ? 0.
+            : cell->subdomain_id();
+      }
+      data_out.add_data_vector(
+        fields.body_id, "body_id", DataOut<2>::type_cell_data);
+      data_out.add_data_vector(
+        fields.level, "level", DataOut<2>::type_cell_data);
+      data_out.add_data_vector(
+        fields.process, "process", DataOut<2>::type_cell_data);
+
+      fields.extra.reserve(extra_fields.size());
+      for (const auto &field : extra_fields)
+      {
+        const auto it =
+          data ? data->find(field) : OutputWriter::CellData::const_iterator();
+        if (data && it != data->end())
+          fields.extra.push_back(it->second);
+        else
+          fields.extra.emplace_back(n_cells);
+        data_out.add_data_vector(
+          fields.extra.back(), field, DataOut<2>::type_cell_data);
+      }
+    }
+
     std::string
     step_name(const std::string &base, const unsigned int step)
     {
@@ -140,8 +223,7 @@ namespace ddcontact
 
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
-      const auto &body    = *bodies[b];
-      const auto  n_cells = body.get_triangulation().n_active_cells();
+      const auto &body = *bodies[b];
 
       // A partitioned mesh is written by every process, each its own
       // cells (DataOut's default selection); a serial one by process 0.
@@ -152,58 +234,15 @@ namespace ddcontact
         continue;
 
       DataOut<2> data_out;
-      data_out.attach_dof_handler(body.get_dof_handler());
-
-      const std::vector<std::string> displacement_names(2, "displacement");
-      const std::vector<
-        DataComponentInterpretation::DataComponentInterpretation>
-        interpretation(
-          2, DataComponentInterpretation::component_is_part_of_vector);
-      data_out.add_data_vector(*solutions[b],
-                               displacement_names,
-                               DataOut<2>::type_dof_data,
-                               interpretation);
-      StressPostprocessor<2> stress(body, *solutions[b]);
-      data_out.add_data_vector(*solutions[b], stress);
-      std::unique_ptr<SmoothedStresses<2>> smoothed;
-      if (smooth)
-      {
-        smoothed = std::make_unique<SmoothedStresses<2>>(body, *solutions[b]);
-        const auto names = smoothed->names();
-        for (unsigned int i = 0; i < names.size(); ++i)
-          data_out.add_data_vector(
-            smoothed->get_dof_handler(), smoothed->fields()[i], names[i]);
-      }
-
-      Vector<double> body_id(n_cells), level(n_cells), process(n_cells);
-      for (const auto &cell : body.get_triangulation().active_cell_iterators())
-      {
-        body_id(cell->active_cell_index()) = b;
-        level(cell->active_cell_index())   = cell->level();
-        // The process that assembles the cell (0 on a serial mesh).
-        process(cell->active_cell_index()) =
-          cell->subdomain_id() == numbers::invalid_subdomain_id
-            ? 0.
-            : cell->subdomain_id();
-      }
-      data_out.add_data_vector(body_id, "body_id", DataOut<2>::type_cell_data);
-      data_out.add_data_vector(level, "level", DataOut<2>::type_cell_data);
-      data_out.add_data_vector(process, "process", DataOut<2>::type_cell_data);
-
-      std::vector<Vector<double>> extra;
-      extra.reserve(extra_fields.size());
-      for (const auto &field : extra_fields)
-      {
-        const CellData *data = (b < cell_data.size()) ? &cell_data[b] : nullptr;
-        const auto it = data ? data->find(field) : CellData::const_iterator();
-        if (data && it != data->end())
-          extra.push_back(it->second);
-        else
-          extra.emplace_back(n_cells);
-        data_out.add_data_vector(
-          extra.back(), field, DataOut<2>::type_cell_data);
-      }
-
+      BodyFields fields;
+      attach_fields(data_out,
+                    fields,
+                    body,
+                    *solutions[b],
+                    b,
+                    extra_fields,
+                    b < cell_data.size() ? &cell_data[b] : nullptr,
+                    smooth);
       data_out.build_patches(body.get_mapping(), body.get_fe().degree);
       data_out.set_flags(vtk_flags());
 

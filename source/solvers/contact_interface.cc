@@ -7,6 +7,64 @@
 
 namespace ddcontact
 {
+  namespace
+  {
+    /** Per face of S_1 (@p faces): whether it wholly faces S_2, its
+     * points' plain lengths summing to its length. */
+    std::vector<bool>
+    wholly_facing(const std::vector<std::array<Point<2>, 2>> &faces,
+                  const std::vector<ContactPoint>            &points)
+    {
+      std::vector<double> covered(faces.size(), 0.);
+      for (const auto &p : points)
+        covered[p.face] += p.ds;
+      std::vector<bool> whole(faces.size());
+      for (unsigned int f = 0; f < faces.size(); ++f)
+        whole[f] =
+          covered[f] > (1. - 1e-10) * faces[f][0].distance(faces[f][1]);
+      return whole;
+    }
+
+    /**
+     * With the weight w = 2 pi r of an axisymmetric zone the biorthogonal
+     * basis of a face is phi = D M^{-1} psi, from its weighted mass matrix
+     * M_ab = int psi_a psi_b w and D = diag(int psi_a w) (the points'
+     * Gauss rule integrates both exactly); for a constant weight this is
+     * 2 psi_a - psi_b. The coefficients of phi_a in (psi_0, psi_1) per face
+     * of @p n_faces, on the faces with @p dual_face; @p hats gives psi at
+     * a point.
+     */
+    template <typename Hats>
+    std::vector<std::array<std::array<double, 2>, 2>>
+    weighted_dual_basis(const unsigned int               n_faces,
+                        const std::vector<ContactPoint> &points,
+                        const std::vector<bool>         &dual_face,
+                        const Hats                      &hats)
+    {
+      std::vector<std::array<double, 5>> sums(n_faces, {{0, 0, 0, 0, 0}});
+      for (const auto &p : points)
+      {
+        const auto psi = hats(p);
+        auto      &m   = sums[p.face];
+        m[0] += psi[0] * psi[0] * p.JxW;
+        m[1] += psi[0] * psi[1] * p.JxW;
+        m[2] += psi[1] * psi[1] * p.JxW;
+        m[3] += psi[0] * p.JxW;
+        m[4] += psi[1] * p.JxW;
+      }
+      std::vector<std::array<std::array<double, 2>, 2>> basis(n_faces);
+      for (unsigned int f = 0; f < n_faces; ++f)
+        if (dual_face[f])
+        {
+          const auto  &m   = sums[f];
+          const double det = m[0] * m[2] - m[1] * m[1];
+          basis[f]         = {{{{m[3] * m[2] / det, -m[3] * m[1] / det}},
+                               {{-m[4] * m[1] / det, m[4] * m[0] / det}}}};
+        }
+      return basis;
+    }
+  } // namespace
+
   ContactInterface::ContactInterface(const ContactProblem &problem,
                                      const bool            on_nodes,
                                      const bool            exact_contact,
@@ -116,46 +174,14 @@ namespace ddcontact
     // S_2 and not where a contact or stick zone ends, keeps the hat
     // functions (the dual functions of a sliver grow like the inverse of
     // its length and spoil the conditioning of S).
-    std::vector<bool> dual_face(faces.size(), false);
-    if (dual)
-    {
-      std::vector<double> covered(faces.size(), 0.);
-      for (const auto &p : points)
-        covered[p.face] += p.ds;
-      for (unsigned int f = 0; f < faces.size(); ++f)
-        dual_face[f] =
-          covered[f] > (1. - 1e-10) * faces[f][0].distance(faces[f][1]);
-    }
+    const std::vector<bool> dual_face =
+      dual ? wholly_facing(faces, points) : std::vector<bool>(faces.size());
 
-    // With the weight 2 pi r of an axisymmetric zone the biorthogonal
-    // basis of a face is phi = D M^{-1} psi, from its weighted mass matrix
-    // M_ab = int psi_a psi_b w and D = diag(int psi_a w) (the points'
-    // Gauss rule integrates both exactly); for a constant weight this is
-    // 2 psi_a - psi_b above.
+    // The weight 2 pi r of an axisymmetric zone: weighted_dual_basis().
     std::vector<std::array<std::array<double, 2>, 2>> weighted_dual;
     if (dual && pair.get_body_1().get_geometry() == Geometry::axisymmetric)
-    {
-      std::vector<std::array<double, 5>> sums(faces.size(), {{0, 0, 0, 0, 0}});
-      for (const auto &p : points)
-      {
-        const auto psi = hats(p);
-        auto      &m   = sums[p.face];
-        m[0] += psi[0] * psi[0] * p.JxW;
-        m[1] += psi[0] * psi[1] * p.JxW;
-        m[2] += psi[1] * psi[1] * p.JxW;
-        m[3] += psi[0] * p.JxW;
-        m[4] += psi[1] * p.JxW;
-      }
-      weighted_dual.resize(faces.size());
-      for (unsigned int f = 0; f < faces.size(); ++f)
-        if (dual_face[f])
-        {
-          const auto  &m   = sums[f];
-          const double det = m[0] * m[2] - m[1] * m[1];
-          weighted_dual[f] = {{{{m[3] * m[2] / det, -m[3] * m[1] / det}},
-                               {{-m[4] * m[1] / det, m[4] * m[0] / det}}}};
-        }
-    }
+      weighted_dual =
+        weighted_dual_basis(faces.size(), points, dual_face, hats);
 
     std::map<std::pair<double, double>, unsigned int> node_of;
     for (unsigned int q = 0; q < points.size(); ++q)

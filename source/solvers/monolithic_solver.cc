@@ -269,6 +269,63 @@ namespace ddcontact
   }
 
   void
+  MonolithicContactSolver::add_node_rows(const unsigned int             i,
+                                         const std::vector<NodeStatus> &active,
+                                         const Vector<double>          &u,
+                                         const PointVector             &p,
+                                         SparseMatrix<double>          &matrix,
+                                         Vector<double> &rhs) const
+  {
+    const auto         n    = offset.back();
+    const unsigned int n_t  = penetrations.size(); // offset of the t_i
+    const auto        &d    = penetrations[i];
+    const unsigned int k    = d.g.size();
+    auto               dofs = d.dofs;
+    // Row and column of p_i: m g^T u - m theta p = m f, or p_i = 0.
+    dofs.push_back(n + i);
+    const unsigned int size = friction ? k + 2 : k + 1;
+    FullMatrix<double> local_matrix(size, size);
+    Vector<double>     local_rhs(size);
+    if (active[i].closed())
+    {
+      for (unsigned int j = 0; j < k; ++j)
+        local_matrix(j, k) = local_matrix(k, j) = d.weight * d.g[j];
+      local_matrix(k, k) = -d.weight * d.theta;
+      local_rhs(k)       = d.weight * d.f;
+    }
+    else
+      local_matrix(k, k) = 1;
+    if (friction)
+    {
+      // Column of t_i (the force m t h) and its row: stick
+      // m h^T u - m theta t = m (s_old - theta t_old), slip t = sigma g
+      // (Tresca) or t - sigma mu p = 0 (Coulomb), else t = 0.
+      const unsigned int kt = k + 1;
+      dofs.push_back(n + n_t + i);
+      for (unsigned int j = 0; j < d.h.size(); ++j)
+        local_matrix(j, kt) = d.weight * d.h[j];
+      if (active[i].state == NodeState::stick)
+      {
+        for (unsigned int j = 0; j < d.h.size(); ++j)
+          local_matrix(kt, j) = d.weight * d.h[j];
+        local_matrix(kt, kt) = -d.weight * d.theta;
+        local_rhs(kt)        = d.weight * (d.s_old - d.theta * d.t_old);
+      }
+      else
+      {
+        // t = value + coupling p (Coulomb linearised: t = sigma mu p).
+        const auto slip = interface.law().slip_equation(
+          i, active[i], interface.law().bound(i, trial(i, u, p)), true);
+        local_matrix(kt, kt) = 1;
+        local_matrix(kt, k)  = -slip.coupling;
+        local_rhs(kt)        = slip.value;
+      }
+    }
+    constraints.distribute_local_to_global(
+      local_matrix, local_rhs, dofs, matrix, rhs);
+  }
+
+  void
   MonolithicContactSolver::solve_linearised(
     const std::vector<NodeStatus> &active,
     Vector<double>                &u,
@@ -277,7 +334,6 @@ namespace ddcontact
     const auto          &bodies = problem.get_bodies();
     const auto           n      = offset.back();
     const unsigned int   n_p    = on_nodes ? p.size() : 0;
-    const unsigned int   n_t    = penetrations.size(); // offset of the t_i
     SparseMatrix<double> matrix(sparsity);
     Vector<double>       rhs(n + n_p);
     // blockdiag(K_a) and the bodies' condensed loads (12).
@@ -296,50 +352,7 @@ namespace ddcontact
       const unsigned int k    = d.g.size();
       auto               dofs = d.dofs;
       if (on_nodes)
-      {
-        // Row and column of p_i: m g^T u - m theta p = m f, or p_i = 0.
-        dofs.push_back(n + i);
-        const unsigned int size = friction ? k + 2 : k + 1;
-        FullMatrix<double> local_matrix(size, size);
-        Vector<double>     local_rhs(size);
-        if (active[i].closed())
-        {
-          for (unsigned int j = 0; j < k; ++j)
-            local_matrix(j, k) = local_matrix(k, j) = d.weight * d.g[j];
-          local_matrix(k, k) = -d.weight * d.theta;
-          local_rhs(k)       = d.weight * d.f;
-        }
-        else
-          local_matrix(k, k) = 1;
-        if (friction)
-        {
-          // Column of t_i (the force m t h) and its row: stick
-          // m h^T u - m theta t = m (s_old - theta t_old), slip t = sigma g
-          // (Tresca) or t - sigma mu p = 0 (Coulomb), else t = 0.
-          const unsigned int kt = k + 1;
-          dofs.push_back(n + n_t + i);
-          for (unsigned int j = 0; j < d.h.size(); ++j)
-            local_matrix(j, kt) = d.weight * d.h[j];
-          if (active[i].state == NodeState::stick)
-          {
-            for (unsigned int j = 0; j < d.h.size(); ++j)
-              local_matrix(kt, j) = d.weight * d.h[j];
-            local_matrix(kt, kt) = -d.weight * d.theta;
-            local_rhs(kt)        = d.weight * (d.s_old - d.theta * d.t_old);
-          }
-          else
-          {
-            // t = value + coupling p (Coulomb linearised: t = sigma mu p).
-            const auto slip = interface.law().slip_equation(
-              i, active[i], interface.law().bound(i, trial(i, u, p)), true);
-            local_matrix(kt, kt) = 1;
-            local_matrix(kt, k)  = -slip.coupling;
-            local_rhs(kt)        = slip.value;
-          }
-        }
-        constraints.distribute_local_to_global(
-          local_matrix, local_rhs, dofs, matrix, rhs);
-      }
+        add_node_rows(i, active, u, p, matrix, rhs);
       else if (active[i].closed())
       {
         // (m/theta) g g^T and (m/theta) f g (f shifted by theta lambda).
@@ -436,6 +449,50 @@ namespace ddcontact
     return 1;
   }
 
+  void
+  MonolithicContactSolver::print_active_set(
+    const unsigned int iteration, const std::vector<NodeStatus> &active) const
+  {
+    pcout << "  Newton " << iteration << ": "
+          << std::count_if(active.begin(),
+                           active.end(),
+                           [](const NodeStatus &s) { return s.closed(); })
+          << (on_nodes ? " active nodes" : " active contact points");
+    if (friction)
+      pcout << " ("
+            << std::count_if(active.begin(),
+                             active.end(),
+                             [](const NodeStatus &s)
+                             { return s.direction != 0; })
+            << " slipping)";
+    pcout << std::endl;
+  }
+
+  void
+  MonolithicContactSolver::stop_unsettled(const bool cycled) const
+  {
+    const std::string unsettled =
+      "the monolithic Newton solver did not settle its active set in " +
+      std::to_string(max_iterations) + " iterations";
+    const std::string tresca = tresca_lift_off_note(problem.get_pairs());
+    // No active set met twice: still moving, stopped by the limit alone
+    // (with Tresca, more likely nodes lifted off by g: tresca says so).
+    if (!cycled)
+      throw NotConvergedError(
+        unsettled + " (no active set repeated)" +
+        (tresca.empty()
+           ? "; raise Contact solver/Monolithic/Max Newton iterations"
+           : tresca));
+    throw DivergenceError(
+      unsettled +
+      " (the active set cycles when theta is small against the compliance "
+      "of the contact zone, e.g. a slender body); raise the contact pairs' "
+      "Penalty (c) or Contact solver/Monolithic/Max Newton iterations" +
+      (on_nodes ? std::string()
+                : ", or set Contact solver/Contact pressure = nodes") +
+      tresca);
+  }
+
   unsigned int
   MonolithicContactSolver::solve_newton()
   {
@@ -461,25 +518,11 @@ namespace ddcontact
     // cycle, and damping starts.
     std::vector<std::vector<NodeStatus>> seen;
     bool                                 full_step = false, damped = false;
-    const std::string                    what =
-      on_nodes ? " active nodes" : " active contact points";
-    unsigned int iteration = 0;
+    unsigned int                         iteration = 0;
     for (; iteration < max_iterations; ++iteration)
     {
       const auto active = active_set(u, p, iteration == 0);
-      pcout << "  Newton " << iteration << ": "
-            << std::count_if(active.begin(),
-                             active.end(),
-                             [](const NodeStatus &s) { return s.closed(); })
-            << what;
-      if (friction)
-        pcout << " ("
-              << std::count_if(active.begin(),
-                               active.end(),
-                               [](const NodeStatus &s)
-                               { return s.direction != 0; })
-              << " slipping)";
-      pcout << std::endl;
+      print_active_set(iteration, active);
       // Settled: (u, p) solves the linear system of its own active set.
       if (full_step && active == seen.back())
         break;
@@ -515,27 +558,8 @@ namespace ddcontact
       residual_norm(Vector<double>(u.size()), PointVector(p.size(), 0.));
     final_residual =
       residual_norm(u, p) / (zero_residual > 0 ? zero_residual : 1.);
-    const std::string unsettled =
-      "the monolithic Newton solver did not settle its active set in " +
-      std::to_string(max_iterations) + " iterations";
-    const std::string tresca = tresca_lift_off_note(problem.get_pairs());
-    // No active set met twice: still moving, stopped by the limit alone
-    // (with Tresca, more likely nodes lifted off by g: tresca says so).
-    if (iteration == max_iterations && !damped)
-      throw NotConvergedError(
-        unsettled + " (no active set repeated)" +
-        (tresca.empty()
-           ? "; raise Contact solver/Monolithic/Max Newton iterations"
-           : tresca));
     if (iteration == max_iterations)
-      throw DivergenceError(
-        unsettled +
-        " (the active set cycles when theta is small against the compliance "
-        "of the contact zone, e.g. a slender body); raise the contact pairs' "
-        "Penalty (c) or Contact solver/Monolithic/Max Newton iterations" +
-        (on_nodes ? std::string()
-                  : ", or set Contact solver/Contact pressure = nodes") +
-        tresca);
+      stop_unsettled(damped);
     return iteration;
   }
 

@@ -148,6 +148,21 @@ namespace ddcontact
     }
 
   private:
+    /** The stresses of one body at the quadrature points of its cells. */
+    using CellStresses = std::vector<std::vector<SymmetricTensor<2, 2>>>;
+
+    /**
+     * (24), (27): the cell norms of sigma_B - sigma_F (local_error, and in
+     * the energy norm local_energy_error), their global norms and those of
+     * sigma_B, with the FEM's cell quadrature, on the cells this process
+     * computes (summed over a distributed mesh's processes). @p area gets
+     * every cell's area; returns the body's.
+     */
+    double
+    compare(const CellStresses &sigma_B,
+            const CellStresses &sigma_F,
+            Vector<double>     &area);
+
     const ElasticBody<2>       &body;
     const bool                  scaled;
     BoundaryElementSolver       bem;

@@ -5,11 +5,14 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <deal.II/dofs/dof_handler.h>
+
 #include <deal.II/fe/fe_values.h>
 
 #include <deal.II/lac/vector.h>
 
 #include <ddcontact/body/body_vector.h>
+#include <ddcontact/parameter_tools.h>
 
 #include <vector>
 
@@ -114,6 +117,20 @@ namespace ddcontact
     strain_energy() const;
 
   private:
+    /** Displacement and stress at the unit point @p xi of @p cell (of the
+     * body's DoFHandler), as at_point() reports them at @p x. */
+    PointValues<dim>
+    at_unit_point(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                  const Point<dim>                                     &xi,
+                  const Point<dim> &x) const;
+
+    /** at_point() on a distributed mesh: the process owning the cell
+     * around @p x evaluates and sends; collective over the mesh's
+     * processes, which all ask for @p x. Throws @p outside if no process
+     * holds it. */
+    PointValues<dim>
+    at_point_distributed(const Point<dim> &x, const InputError &outside) const;
+
     /** The one-point rule at the centre of the body's cells. */
     Quadrature<dim>
     cell_centre() const;

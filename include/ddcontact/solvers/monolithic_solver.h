@@ -203,6 +203,17 @@ namespace ddcontact
     NodalContactLaw::Trial
     trial(unsigned int i, const Vector<double> &u, const PointVector &p) const;
 
+    /** Node @p i's rows and columns in the Newton system on the states
+     * @p active at (@p u, @p p): its pressure p_i and, with friction, its
+     * tangential traction t_i, with their coupling to the displacements. */
+    void
+    add_node_rows(unsigned int                   i,
+                  const std::vector<NodeStatus> &active,
+                  const Vector<double>          &u,
+                  const PointVector             &p,
+                  SparseMatrix<double>          &matrix,
+                  Vector<double>                &rhs) const;
+
     /** One Newton step on the states @p active: the new @p u and, on
      * the nodes, @p p. */
     void
@@ -230,6 +241,17 @@ namespace ddcontact
     /** The Newton method to a settled active set; returns its steps. */
     unsigned int
     solve_newton();
+
+    /** Prints Newton step @p iteration's counts of closed (and slipping)
+     * nodes or points of @p active. */
+    void
+    print_active_set(unsigned int                   iteration,
+                     const std::vector<NodeStatus> &active) const;
+
+    /** The error of an active set not settled in Max Newton iterations:
+     * moving still (no set met twice, not @p cycled), or cycling. */
+    [[noreturn]] void
+    stop_unsettled(bool cycled) const;
 
     const bool                           on_nodes;
     const bool                           friction; // tangential unknowns
