@@ -103,6 +103,8 @@ case_ "old solver subsection" "Domain decomposition/eps_residual is now Contact 
 case_ "old solver entry in --set" "Domain decomposition/Gamma is now Contact solver/Domain decomposition/Gamma" "$paper" --set "Domain decomposition/Gamma=0.1"
 printf 'set Bodies = a\n' >"$work/nosub.prm"
 case_ "body listed without its subsection" "Bodies: 'a' is listed, but the file has no subsection 'Body a'" "$work/nosub.prm"
+case_ "interference not a number" "Contact pair S/Interference" "$paper" --set "Contact pair S/Interference=nan"
+case_ "interference deeper than the bodies" "Contact pair S/Interference: the gap is" "$paper" --set "Contact pair S/Interference=1e3"
 case_ "pair listed without its subsection" "Contact pairs: 'T' is listed, but the file has no subsection 'Contact pair T'" "$paper" --set "Contact pairs=S, T"
 printf 'include %s\nsubsection Body omega2\n  subsection Meshh\n  end\nend\n' "$paper" >"$work/misspelled.prm"
 case_ "misspelled subsection" "misspelled.prm, line 3: there is no subsection 'Body omega2/Meshh' (did you mean 'Body omega2/Mesh'?)" "$work/misspelled.prm"

@@ -494,9 +494,12 @@ namespace ddcontact
     // contact problem (a gap given in other units, or a sign error).
     for (const auto &p : contact_points)
       if (p.gap < -(extent_1.second - extent_1.first + thickness_2))
-        throw InputError(section + "Gap: " + gap_at(p) +
-                         ", an overlap deeper than both bodies together; "
-                         "check its sign and units");
+        throw InputError(
+          section + (parameters.interference > 0 ? "Interference" : "Gap") +
+          ": " + gap_at(p) +
+          (parameters.interference > 0 ? " with the Interference" : "") +
+          ", an overlap deeper than both bodies together; check its sign "
+          "and units");
 
     // theta = c H / E_1 (paper, section 6), or given.
     theta = (parameters.penalty_type == PenaltyType::relative)
