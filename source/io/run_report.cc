@@ -128,11 +128,20 @@ namespace ddcontact
   RunReport::write_contact_profiles(const Results     &results,
                                     const std::string &suffix) const
   {
+    if (writes_files)
+      write_contact_profiles(results, contact_states(results), suffix);
+  }
+
+  void
+  RunReport::write_contact_profiles(const Results                   &results,
+                                    const std::vector<ContactState> &states,
+                                    const std::string &suffix) const
+  {
     if (!writes_files)
       return;
     for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
     {
-      const auto  state = results.contact_solver->contact_state(p);
+      const auto &state = states[p];
       const auto &pair  = *results.contact_pairs[p];
       const auto &pts   = pair.points();
       OutputFile  file(parameters.output_directory + "/contact_" + pair.name() +
@@ -206,11 +215,11 @@ namespace ddcontact
   {
     std::ostringstream suffix;
     suffix << "_step" << std::setw(4) << std::setfill('0') << step;
-    write_contact_profiles(results, suffix.str());
-    Json row, pairs = Json::array();
-    row["step"]       = step;
-    row["t"]          = t;
     const auto states = contact_states(results);
+    write_contact_profiles(results, states, suffix.str());
+    Json row, pairs = Json::array();
+    row["step"] = step;
+    row["t"]    = t;
     for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
     {
       const auto &state = states[p];
@@ -275,11 +284,12 @@ namespace ddcontact
   }
 
   void
-  RunReport::print_contact_states(const Results &results) const
+  RunReport::print_contact_states(const Results                   &results,
+                                  const std::vector<ContactState> &states) const
   {
     for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
     {
-      const auto state = results.contact_solver->contact_state(p);
+      const auto &state = states[p];
       pcout << std::setprecision(6) << "  contact "
             << results.contact_pairs[p]->name() << ": normal force "
             << state.normal_force;
@@ -364,8 +374,9 @@ namespace ddcontact
     if (const auto *solver = results.contact_solver)
     {
       write_history(solver->history());
-      write_contact_profiles(results, "");
-      print_contact_states(results);
+      const auto states = contact_states(results);
+      write_contact_profiles(results, states, "");
+      print_contact_states(results, states);
     }
     write_summary(results, outcome);
     print_reactions();

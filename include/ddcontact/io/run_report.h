@@ -82,15 +82,23 @@ namespace ddcontact
     void
     write_history(const std::vector<IterationRecord> &history) const;
 
-    /** contact_<pair><suffix>.csv for every contact pair. */
+    /** contact_<pair><suffix>.csv for every contact pair, in its current
+     * state. */
     void
     write_contact_profiles(const Results     &results,
                            const std::string &suffix) const;
 
-    /** Force, peak pressure, half-width and penetration of every contact
-     * pair, on the screen. */
+    /** The same, in the pairs' states @p states (contact_states()). */
     void
-    print_contact_states(const Results &results) const;
+    write_contact_profiles(const Results                   &results,
+                           const std::vector<ContactState> &states,
+                           const std::string               &suffix) const;
+
+    /** Force, peak pressure, half-width and penetration of every contact
+     * pair (@p states), on the screen. */
+    void
+    print_contact_states(const Results                   &results,
+                         const std::vector<ContactState> &states) const;
 
     /** cells_<body>-NNNN.csv (NNNN = @p step) for every adapted body.
      * Collective over the processes of a distributed mesh. */
