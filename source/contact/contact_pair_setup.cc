@@ -3,11 +3,10 @@
 #include <cmath>
 #include <ddcontact/contact/contact_pair.h>
 #include <ddcontact/contact/contact_search.h>
+#include <ddcontact/contact/point_shape.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/mpi_remote_point_evaluation.h>
 #include <deal.II/base/polynomial.h>
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe_values.h>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -82,165 +81,6 @@ namespace ddcontact
       return s.str();
     }
 
-    /**
-     * What the cell holding a point knows of it: the cell's dofs, the
-     * value of every shape function at the point (of its one nonzero
-     * component), and the body's constraint of every dof (n_entries[i] < 0:
-     * none; otherwise that many entries of masters/weights, none for a
-     * Dirichlet dof). Sent between processes by RemotePointEvaluation.
-     */
-    struct PointShape
-    {
-      std::vector<types::global_dof_index> dofs;
-      std::vector<double>                  values;
-      std::vector<int>                     n_entries;
-      std::vector<types::global_dof_index> masters;
-      std::vector<double>                  weights;
-
-      template <class Archive>
-      void
-      serialize(Archive &archive, const unsigned int)
-      {
-        archive &dofs &values &n_entries &masters &weights;
-      }
-    };
-
-    /** PointShape at unit points of one cell (one FEValues per cell). */
-    std::vector<PointShape>
-    point_shapes(const ElasticBody<2>                      &body,
-                 const DoFHandler<2>::active_cell_iterator &cell,
-                 const std::vector<Point<2>>               &unit_points)
-    {
-      FEValues<2> fe_values(body.get_mapping(),
-                            body.get_fe(),
-                            Quadrature<2>(unit_points),
-                            update_values);
-      fe_values.reinit(cell);
-      PointShape common;
-      common.dofs.resize(body.get_fe().dofs_per_cell);
-      cell->get_dof_indices(common.dofs);
-      const auto &constraints = body.get_constraints();
-      for (const auto dof : common.dofs)
-      {
-        if (!constraints.is_constrained(dof))
-        {
-          common.n_entries.push_back(-1);
-          continue;
-        }
-        const auto *entries = constraints.get_constraint_entries(dof);
-        common.n_entries.push_back(entries ? entries->size() : 0);
-        if (entries)
-          for (const auto &[master, weight] : *entries)
-          {
-            common.masters.push_back(master);
-            common.weights.push_back(weight);
-          }
-      }
-      std::vector<PointShape> shapes(unit_points.size(), common);
-      for (unsigned int q = 0; q < unit_points.size(); ++q)
-        for (unsigned int i = 0; i < common.dofs.size(); ++i)
-          shapes[q].values.push_back(fe_values.shape_value(i, q));
-      return shapes;
-    }
-
-    /** PointShape at points given in real coordinates in one cell. */
-    std::vector<PointShape>
-    point_shapes_at(const ElasticBody<2>                      &body,
-                    const DoFHandler<2>::active_cell_iterator &cell,
-                    const std::vector<Point<2>>               &points)
-    {
-      std::vector<Point<2>> unit_points;
-      for (const auto &x : points)
-        unit_points.push_back(
-          body.get_mapping().transform_real_to_unit_cell(cell, x));
-      return point_shapes(body, cell, unit_points);
-    }
-
-    /** PointShape at @p points of a distributed mesh: the owners of the
-     * cells around the points evaluate and send (collective). */
-    std::vector<PointShape>
-    remote_point_shapes(const ElasticBody<2>        &body,
-                        const std::vector<Point<2>> &points,
-                        const std::string           &section)
-    {
-      // Process 0 asks and sends the answer to all: a point on an edge
-      // between two processes' cells has two equally valid answers that
-      // differ in round-off, and the DD, replicated on every process, must
-      // see the same numbers everywhere. One cell per point, else a point
-      // on an edge would be loaded twice; the tolerance is in unit
-      // coordinates.
-      const MPI_Comm comm = body.get_triangulation().get_communicator();
-      const bool     root = Utilities::MPI::this_mpi_process(comm) == 0;
-      Utilities::MPI::RemotePointEvaluation<2> remote(1e-6, true);
-      remote.reinit(root ? points : std::vector<Point<2>>(),
-                    body.get_triangulation(),
-                    body.get_mapping());
-      if (Utilities::MPI::broadcast(comm, remote.all_points_found(), 0) ==
-          false)
-        throw InputError(section +
-                         ": a contact point lies in no cell of "
-                         "body '" +
-                         body.name() + "'");
-      std::vector<PointShape> shapes, buffer;
-      remote.evaluate_and_process<PointShape>(
-        shapes,
-        buffer,
-        [&](const ArrayView<PointShape> &values, const auto &cell_data)
-        {
-          for (unsigned int c = 0; c < cell_data.cells.size(); ++c)
-          {
-            const DoFHandler<2>::active_cell_iterator cell(
-              &body.get_triangulation(),
-              cell_data.cells[c].first,
-              cell_data.cells[c].second,
-              &body.get_dof_handler());
-            const unsigned int begin = cell_data.reference_point_ptrs[c],
-                               end   = cell_data.reference_point_ptrs[c + 1];
-            const auto in_cell =
-              point_shapes(body,
-                           cell,
-                           std::vector<Point<2>>(
-                             cell_data.reference_point_values.begin() + begin,
-                             cell_data.reference_point_values.begin() + end));
-            std::copy(in_cell.begin(), in_cell.end(), values.begin() + begin);
-          }
-        });
-      shapes = Utilities::MPI::broadcast(comm, shapes, 0);
-      AssertDimension(shapes.size(), points.size());
-      return shapes;
-    }
-
-    /** The normal-component coefficients of a point, and its load with the
-     * constraints resolved (see ContactPoint). */
-    void
-    couple(const PointShape                     &shape,
-           const FiniteElement<2>               &fe,
-           const Tensor<1, 2>                   &normal,
-           std::vector<types::global_dof_index> &dofs,
-           std::vector<double>                  &a,
-           std::vector<types::global_dof_index> &load_dofs,
-           std::vector<double>                  &load)
-    {
-      dofs = shape.dofs;
-      a.resize(dofs.size());
-      load_dofs.clear();
-      load.clear();
-      for (unsigned int i = 0, e = 0; i < dofs.size(); ++i)
-      {
-        a[i] = shape.values[i] * normal[fe.system_to_component_index(i).first];
-        if (shape.n_entries[i] < 0)
-        {
-          load_dofs.push_back(dofs[i]);
-          load.push_back(a[i]);
-        }
-        else
-          for (int k = 0; k < shape.n_entries[i]; ++k, ++e)
-          {
-            load_dofs.push_back(shape.masters[e]);
-            load.push_back(a[i] * shape.weights[e]);
-          }
-      }
-    }
     /** Sample @p law, the pair's friction expression, on @p faces of
      * S_1: InputError where it is < 0 or not finite. */
     void
@@ -273,92 +113,110 @@ namespace ddcontact
         }
     }
 
-  } // namespace
-
-  void
-  ContactPair::setup()
-  {
-    const std::string section = "Contact pair " + parameters.name + "/";
-    const auto        faces_1 = zone_faces(body_1, parameters.boundary_id_1);
-    const auto        faces_2 = zone_faces(body_2, parameters.boundary_id_2);
-    if (faces_1.empty())
-      throw InputError(section + "Boundary id 1: body '" + body_1.name() +
-                       "' has no face with boundary id " +
-                       std::to_string(parameters.boundary_id_1));
-    if (faces_2.empty())
-      throw InputError(section + "Boundary id 2: body '" + body_2.name() +
-                       "' has no face with boundary id " +
-                       std::to_string(parameters.boundary_id_2));
-
-    if (has_friction())
-      check_friction_on(faces_1, *friction_function, parameters, body_1.name());
-
-    // The contact search on S_2 (doc/method.md, section 1.1): R-trees of
-    // its faces and vertices, O(n log n) in all.
-    std::vector<std::array<Point<2>, 2>> segments_2;
-    std::vector<Tensor<1, 2>>            normals_2;
-    double                               h_max = 0;
-    for (const auto &f : faces_2)
+    /** InputError naming @p entry when the zone has no face. */
+    void
+    require_faces(const std::vector<ZoneFace> &faces,
+                  const ElasticBody<2>        &body,
+                  const types::boundary_id     id,
+                  const std::string           &entry)
     {
-      segments_2.push_back({{f.a, f.b}});
-      normals_2.push_back(f.normal);
-      h_max = std::max(h_max, f.a.distance(f.b));
-    }
-    for (const auto &f : faces_1)
-      h_max = std::max(h_max, f.a.distance(f.b));
-    const double        search_distance = parameters.search_distance > 0
-                                            ? parameters.search_distance
-                                            : default_search_distance(h_max);
-    const ContactSearch search_2(segments_2, normals_2, search_distance);
-    // Zones whose normals are nowhere opposed can never touch: a wrong
-    // boundary id (issue 31's same-facing zones).
-    if (std::none_of(faces_1.begin(),
-                     faces_1.end(),
-                     [&](const ZoneFace &f)
-                     { return search_2.has_opposed_normal(f.normal); }))
-      throw InputError(
-        section + "Boundary id 2: no face of the zone of '" + body_1.name() +
-        "' (boundary id " + std::to_string(parameters.boundary_id_1) +
-        ") faces any face of the zone of '" + body_2.name() +
-        "' (boundary id " + std::to_string(parameters.boundary_id_2) +
-        "): their outward normals are nowhere opposed (within "
-        "60 degrees), so the zones can never touch; check the "
-        "boundary ids");
-
-    const QGauss<1> gauss(parameters.n_gauss);
-    contact_points.clear();
-    report                 = ContactSearchReport();
-    report.search_distance = search_distance;
-    report.expression_gap  = static_cast<bool>(gap_function);
-    // Per point, the shapes of both bodies there: computed from the face's
-    // cell at once on a serial or shared mesh, by the owners of a
-    // distributed one at the end.
-    std::vector<PointShape> shapes_1, shapes_2;
-    zone_1.clear();
-    // Gap evaluation = nodes: f_n on each face of S_1 is the polynomial of
-    // body 1's degree through its values at the face's nodes (the
-    // Gauss-Lobatto points: the vertices for degree 1, and the midpoint for
-    // 2), so that a gap the trace can follow is met exactly.
-    std::vector<Point<1>>                        nodes;
-    std::vector<Polynomials::Polynomial<double>> lagrange; // of the nodes
-    std::vector<double>                          node_f;   // f_n there
-    if (gap_function && parameters.gap_evaluation == GapEvaluation::nodes)
-    {
-      nodes    = QGaussLobatto<1>(body_1.get_fe().degree + 1).get_points();
-      lagrange = Polynomials::generate_complete_Lagrange_basis(nodes);
+      if (faces.empty())
+        throw InputError(entry + ": body '" + body.name() +
+                         "' has no face with boundary id " +
+                         std::to_string(id));
     }
 
-    for (const auto &face : faces_1)
+    /** The longest face of either zone. */
+    double
+    longest_face(const std::vector<ZoneFace> &faces_1,
+                 const std::vector<ZoneFace> &faces_2)
     {
-      zone_1.push_back({{face.a, face.b}});
-      const Tensor<1, 2> t      = face.b - face.a;
-      const double       length = t.norm();
-      node_f.clear();
-      for (const auto &s : nodes)
-        node_f.push_back(gap_function->value(face.a + s[0] * t));
-      // The face is split where the normal lines through the vertices of
-      // S_2 within reach cross it: there the partner face changes, and so
-      // does the polynomial of u_2n (ContactSearch).
+      double h_max = 0;
+      for (const auto *faces : {&faces_1, &faces_2})
+        for (const auto &f : *faces)
+          h_max = std::max(h_max, f.a.distance(f.b));
+      return h_max;
+    }
+
+    /** The contact search on S_2 (doc/method.md, section 1.1): R-trees of
+     * its faces and vertices, O(n log n) in all. */
+    ContactSearch
+    search_on(const std::vector<ZoneFace> &faces_2, const double distance)
+    {
+      std::vector<std::array<Point<2>, 2>> segments_2;
+      std::vector<Tensor<1, 2>>            normals_2;
+      for (const auto &f : faces_2)
+      {
+        segments_2.push_back({{f.a, f.b}});
+        normals_2.push_back(f.normal);
+      }
+      return ContactSearch(segments_2, normals_2, distance);
+    }
+
+    /** The gap f_n at the points of one face of S_1: the search's gap
+     * without a Gap expression, else the expression. With Gap evaluation
+     * = nodes f_n on each face is the polynomial of body 1's degree
+     * through its values at the face's nodes (the Gauss-Lobatto points:
+     * the vertices for degree 1, and the midpoint for 2), so that a gap
+     * the trace can follow is met exactly. */
+    class FaceGap
+    {
+    public:
+      FaceGap(const Function<2>           *expression,
+              const ContactPairParameters &parameters,
+              const unsigned int           degree)
+        : expression(expression)
+      {
+        if (expression && parameters.gap_evaluation == GapEvaluation::nodes)
+        {
+          nodes    = QGaussLobatto<1>(degree + 1).get_points();
+          lagrange = Polynomials::generate_complete_Lagrange_basis(nodes);
+        }
+      }
+
+      /** The values at the nodes of @p face. */
+      void
+      start(const ZoneFace &face)
+      {
+        node_f.clear();
+        for (const auto &s : nodes)
+          node_f.push_back(
+            expression->value(face.a + s[0] * (face.b - face.a)));
+      }
+
+      /** f_n at @p x, the point at @p s along the face, whose partner on
+       * S_2 is @p search_gap away. */
+      double
+      at(const double s, const Point<2> &x, const double search_gap) const
+      {
+        if (!expression)
+          return search_gap;
+        if (nodes.empty())
+          return expression->value(x);
+        double gap = 0;
+        for (unsigned int k = 0; k < nodes.size(); ++k)
+          gap += lagrange[k].value(s) * node_f[k];
+        return gap;
+      }
+
+    private:
+      const Function<2>                           *expression;
+      std::vector<Point<1>>                        nodes;
+      std::vector<Polynomials::Polynomial<double>> lagrange; // of the nodes
+      std::vector<double>                          node_f;   // f_n there
+    };
+
+    /** Where @p face is split, as parameters in [0, 1]: where the normal
+     * lines through the vertices of S_2 within reach cross it; there the
+     * partner face changes, and so does the polynomial of u_2n
+     * (ContactSearch). */
+    std::vector<double>
+    face_breaks(const ZoneFace      &face,
+                const ContactSearch &search_2,
+                const double         search_distance)
+    {
+      const Tensor<1, 2>  t      = face.b - face.a;
+      const double        length = t.norm();
       std::vector<double> breaks = {0., 1.};
       for (const auto &v : search_2.segments().end_points_over(face.a, face.b))
       {
@@ -374,7 +232,61 @@ namespace ddcontact
                                [](double x, double y)
                                { return std::abs(x - y) < 1e-10; }),
                    breaks.end());
+      return breaks;
+    }
 
+    /**
+     * The contact points of S_1, face by face, on the common refinement
+     * of the two zones: every piece of a face between its breaks
+     * (face_breaks()) gets its own Gauss rule, and a point keeps its
+     * partner on S_2, its gap and (serial or shared meshes) the shapes of
+     * both bodies there, computed from the face's cell at once.
+     */
+    class ZoneSampler
+    {
+    public:
+      ZoneSampler(const ContactPairParameters &parameters,
+                  const ElasticBody<2>        &body_1,
+                  const ElasticBody<2>        &body_2,
+                  const std::vector<ZoneFace> &faces_2,
+                  const ContactSearch         &search_2,
+                  const Function<2>           *gap_function)
+        : parameters(parameters)
+        , body_1(body_1)
+        , body_2(body_2)
+        , faces_2(faces_2)
+        , search_2(search_2)
+        , gauss(parameters.n_gauss)
+        , gap(gap_function, parameters, body_1.get_fe().degree)
+      {
+        report.search_distance = search_2.distance();
+        report.expression_gap  = gap_function != nullptr;
+      }
+
+      /** Adds the points of @p face, the zone's face @p index. */
+      void
+      add_face(const ZoneFace &face, const unsigned int index);
+
+      std::vector<ContactPoint> points;
+      std::vector<PointShape>   shapes_1, shapes_2;
+      ContactSearchReport       report;
+
+    private:
+      const ContactPairParameters &parameters;
+      const ElasticBody<2>        &body_1, &body_2;
+      const std::vector<ZoneFace> &faces_2;
+      const ContactSearch         &search_2;
+      const QGauss<1>              gauss;
+      FaceGap                      gap;
+    };
+
+    void
+    ZoneSampler::add_face(const ZoneFace &face, const unsigned int index)
+    {
+      const Tensor<1, 2> t      = face.b - face.a;
+      const double       length = t.norm();
+      gap.start(face);
+      const auto breaks = face_breaks(face, search_2, search_2.distance());
       std::vector<Point<2>> xs;
       for (unsigned int piece = 0; piece + 1 < breaks.size(); ++piece)
         for (unsigned int q = 0; q < gauss.size(); ++q)
@@ -387,7 +299,7 @@ namespace ddcontact
           p.ds = gauss.weight(q) * (breaks[piece + 1] - breaks[piece]) * length;
           p.JxW    = p.ds * section_measure(body_1.get_geometry(), p.x);
           p.normal = face.normal;
-          p.face   = zone_1.size() - 1;
+          p.face   = index;
           ++report.n_examined;
 
           // A point without a partner on S_2 cannot touch it: it carries no
@@ -396,15 +308,10 @@ namespace ddcontact
           if (!partner)
             continue;
           p.projection = partner->point;
-          if (!gap_function)
-            p.gap = partner->gap;
-          else if (nodes.empty())
-            p.gap = gap_function->value(p.x);
-          else
-            for (unsigned int k = 0; k < nodes.size(); ++k)
-              p.gap += lagrange[k].value(s) * node_f[k];
+          p.gap        = gap.at(s, p.x, partner->gap);
           if (!std::isfinite(p.gap))
-            throw InputError(section + "Gap: " + gap_at(p) +
+            throw InputError("Contact pair " + parameters.name +
+                             "/Gap: " + gap_at(p) +
                              " of S_1; give an expression that is finite "
                              "on the whole zone");
           report.record(p.x, p.gap, partner->gap, length);
@@ -414,15 +321,62 @@ namespace ddcontact
             shapes_2.push_back(point_shapes_at(
               body_2, faces_2[partner->segment].cell, {p.projection})[0]);
           xs.push_back(p.x);
-          contact_points.push_back(p);
+          points.push_back(p);
         }
       if (!body_1.is_mesh_distributed() && !xs.empty())
         for (const auto &shape : point_shapes_at(body_1, face.cell, xs))
           shapes_1.push_back(shape);
     }
 
-    arc_length = ZoneArcLength(zone_1);
+  } // namespace
 
+  void
+  ContactPair::setup()
+  {
+    const std::string section = "Contact pair " + parameters.name + "/";
+    const auto        faces_1 = zone_faces(body_1, parameters.boundary_id_1);
+    const auto        faces_2 = zone_faces(body_2, parameters.boundary_id_2);
+    require_faces(
+      faces_1, body_1, parameters.boundary_id_1, section + "Boundary id 1");
+    require_faces(
+      faces_2, body_2, parameters.boundary_id_2, section + "Boundary id 2");
+    if (has_friction())
+      check_friction_on(faces_1, *friction_function, parameters, body_1.name());
+
+    const ContactSearch search_2 =
+      search_on(faces_2,
+                parameters.search_distance > 0
+                  ? parameters.search_distance
+                  : default_search_distance(longest_face(faces_1, faces_2)));
+    // Zones whose normals are nowhere opposed can never touch: a wrong
+    // boundary id (issue 31's same-facing zones).
+    if (std::none_of(faces_1.begin(),
+                     faces_1.end(),
+                     [&](const ZoneFace &f)
+                     { return search_2.has_opposed_normal(f.normal); }))
+      throw InputError(
+        section + "Boundary id 2: no face of the zone of '" + body_1.name() +
+        "' (boundary id " + std::to_string(parameters.boundary_id_1) +
+        ") faces any face of the zone of '" + body_2.name() +
+        "' (boundary id " + std::to_string(parameters.boundary_id_2) +
+        "): their outward normals are nowhere opposed (within "
+        "60 degrees), so the zones can never touch; check the "
+        "boundary ids");
+
+    ZoneSampler sampler(
+      parameters, body_1, body_2, faces_2, search_2, gap_function.get());
+    zone_1.clear();
+    for (const auto &face : faces_1)
+    {
+      zone_1.push_back({{face.a, face.b}});
+      sampler.add_face(face, zone_1.size() - 1);
+    }
+    contact_points = std::move(sampler.points);
+    report         = sampler.report;
+    arc_length     = ZoneArcLength(zone_1);
+
+    // On a distributed mesh the owners of the points' cells compute the
+    // shapes, at the end.
     if (body_1.is_mesh_distributed() || body_2.is_mesh_distributed())
     {
       std::vector<Point<2>> xs, projections;
@@ -432,51 +386,28 @@ namespace ddcontact
         projections.push_back(p.projection);
       }
       if (body_1.is_mesh_distributed())
-        shapes_1 = remote_point_shapes(body_1, xs, section + "Boundary id 1");
+        sampler.shapes_1 =
+          remote_point_shapes(body_1, xs, section + "Boundary id 1");
       if (body_2.is_mesh_distributed())
-        shapes_2 =
+        sampler.shapes_2 =
           remote_point_shapes(body_2, projections, section + "Boundary id 2");
     }
     for (unsigned int q = 0; q < contact_points.size(); ++q)
-    {
-      auto &p    = contact_points[q];
-      p.values_1 = shapes_1[q].values;
-      couple(shapes_1[q],
-             body_1.get_fe(),
-             p.normal,
-             p.dofs_1,
-             p.a,
-             p.load_dofs_1,
-             p.load_1);
-      // n_2 = -n_1 (small-gap assumption).
-      couple(shapes_2[q],
-             body_2.get_fe(),
-             -p.normal,
-             p.dofs_2,
-             p.b,
-             p.load_dofs_2,
-             p.load_2);
-      if (!has_friction())
-        continue;
-      // The tangent tau = n_1 turned by +90 degrees, tau_2 = -tau; the
-      // same dofs and load dofs as the normal's.
-      const Tensor<1, 2>                   tau({-p.normal[1], p.normal[0]});
-      std::vector<types::global_dof_index> dofs, load_dofs;
-      couple(
-        shapes_1[q], body_1.get_fe(), tau, dofs, p.at, load_dofs, p.load_t1);
-      couple(
-        shapes_2[q], body_2.get_fe(), -tau, dofs, p.bt, load_dofs, p.load_t2);
-      p.friction = friction_function->value(p.x);
-      if (!std::isfinite(p.friction) || p.friction < 0)
-      {
-        std::ostringstream message;
-        message << parameters.friction_entry() << ": " << p.friction << " at ("
-                << p.x[0] << ", " << p.x[1]
-                << ") of S_1; give an expression >= 0 and finite on the "
-                   "whole zone";
-        throw InputError(message.str());
-      }
-    }
+      couple_point(contact_points[q],
+                   sampler.shapes_1[q],
+                   sampler.shapes_2[q],
+                   body_1,
+                   body_2,
+                   has_friction() ? friction_function.get() : nullptr,
+                   parameters.friction_entry());
+
+    set_penalty();
+  }
+
+  void
+  ContactPair::set_penalty()
+  {
+    const std::string section = "Contact pair " + parameters.name + "/";
 
     // Thickness of both bodies along the mean normal of S_1 (the x axis
     // if the normals cancel).

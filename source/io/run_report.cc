@@ -371,14 +371,14 @@ namespace ddcontact
   void
   RunReport::write_final(const Results &results, const RunOutcome outcome)
   {
+    const auto states = contact_states(results);
     if (const auto *solver = results.contact_solver)
     {
       write_history(solver->history());
-      const auto states = contact_states(results);
       write_contact_profiles(results, states, "");
       print_contact_states(results, states);
     }
-    write_summary(results, outcome);
+    write_summary(results, states, outcome, "");
     print_reactions();
     print_warnings();
   }

@@ -158,10 +158,10 @@ namespace ddcontact
   } // namespace
 
   Json
-  RunReport::bodies_json(const Results &results) const
+  RunReport::bodies_json(const Results                   &results,
+                         const std::vector<ContactState> &states) const
   {
-    Json       list   = Json::array();
-    const auto states = contact_states(results);
+    Json list = Json::array();
     for (const auto &body : results.bodies)
     {
       Json b;
@@ -304,9 +304,10 @@ namespace ddcontact
   }
 
   void
-  RunReport::add_contact(const Results &results,
-                         const bool     judge_penetration,
-                         Json          &json) const
+  RunReport::add_contact(const Results                   &results,
+                         const std::vector<ContactState> &states,
+                         const bool                       judge_penetration,
+                         Json                            &json) const
   {
     const ContactSolver &contact_solver = *results.contact_solver;
     json["dd_iterations"]               = contact_solver.n_dd_iterations();
@@ -328,7 +329,7 @@ namespace ddcontact
     Json thetas = Json::array(), contact = Json::array();
     for (unsigned int p = 0; p < results.contact_pairs.size(); ++p)
     {
-      const auto state = contact_solver.contact_state(p);
+      const auto &state = states[p];
       thetas.push_back(results.contact_pairs[p]->penalty());
       Json c;
       c["pair"] = results.contact_pairs[p]->name();
@@ -484,6 +485,15 @@ namespace ddcontact
                            const RunOutcome   outcome,
                            const std::string &error)
   {
+    write_summary(results, contact_states(results), outcome, error);
+  }
+
+  void
+  RunReport::write_summary(const Results                   &results,
+                           const std::vector<ContactState> &states,
+                           const RunOutcome                 outcome,
+                           const std::string               &error)
+  {
     Json json;
     json["scene"]         = parameters.scene_name;
     json["code_revision"] = git_revision();
@@ -502,7 +512,7 @@ namespace ddcontact
         : "consistent units of the scene; forces and energies per unit "
           "thickness (plane strain)";
     json["warnings"] = run_warnings; // added to below
-    json["bodies"]   = bodies_json(results);
+    json["bodies"]   = bodies_json(results, states);
     for (const auto &b : json["bodies"])
     {
       const double strain   = b["largest_strain"].get<double>();
@@ -531,7 +541,7 @@ namespace ddcontact
     // The penetration is judged only where the contact iteration converged
     // (also "stalled": the DD converged, the Uzawa loop did not).
     if (!results.contact_pairs.empty())
-      add_contact(results, contact_converged(outcome), json);
+      add_contact(results, states, contact_converged(outcome), json);
     if (parameters.adaptation.enabled())
       add_adaptation(results, json);
     json["wall_time_s"] = wall_clock.wall_time();

@@ -284,6 +284,12 @@ namespace ddcontact
      * twice the longest zone face @p h_max. */
     double
     default_search_distance(double h_max) const;
+
+    /** The thickness of both bodies along the mean normal of S_1 and
+     * theta (end of setup()), with the checks of the overlap and of the
+     * penalty. */
+    void
+    set_penalty();
   };
 } // namespace ddcontact
 

@@ -197,9 +197,19 @@ namespace ddcontact
     }
 
   private:
-    /** Name, size, memory and strain energy of every body. */
+    /** write_summary() in the pairs' contact @p states
+     * (contact_states()). */
+    void
+    write_summary(const Results                   &results,
+                  const std::vector<ContactState> &states,
+                  RunOutcome                       outcome,
+                  const std::string               &error);
+
+    /** Name, size, memory, strain energy and reactions (in the contact
+     * @p states) of every body. */
     Json
-    bodies_json(const Results &results) const;
+    bodies_json(const Results                   &results,
+                const std::vector<ContactState> &states) const;
 
     /** The reaction forces of @p body (ReactionForces): per Dirichlet id,
      * with its applied load, contact force and their imbalance, into
@@ -241,12 +251,14 @@ namespace ddcontact
      * converged contact iteration (@p judge_penetration), a warning in
      * json["warnings"] for every pair that penetrates more than
      * penetration_per_approach of its approach or penetration_per_cell of
-     * the smallest cell along its zone, naming the remedy. Collective (the
-     * cell sizes of distributed meshes). */
+     * the smallest cell along its zone, naming the remedy; the forces are
+     * those of the contact @p states. Collective (the cell sizes of
+     * distributed meshes). */
     void
-    add_contact(const Results &results,
-                bool           judge_penetration,
-                Json          &json) const;
+    add_contact(const Results                   &results,
+                const std::vector<ContactState> &states,
+                bool                             judge_penetration,
+                Json                            &json) const;
 
     /** With friction, a pair's tangential force, stick half-width and
      * dissipated energy into @p json. */

@@ -1,9 +1,9 @@
 #ifndef ddcontact_dd_newton_solver_h
 #define ddcontact_dd_newton_solver_h
 
-#include <ddcontact/solvers/contact_interface.h>
+#include <ddcontact/contact/contact_interface.h>
+#include <ddcontact/contact/friction_history.h>
 #include <ddcontact/solvers/contact_solver.h>
-#include <ddcontact/solvers/friction_history.h>
 #include <ddcontact/solvers/interface_krylov_solver.h>
 #include <ddcontact/solvers/penalty_continuation.h>
 #include <ddcontact/solvers/rigid_mode_coarse_space.h>

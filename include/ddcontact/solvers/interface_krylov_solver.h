@@ -1,8 +1,8 @@
 #ifndef ddcontact_interface_krylov_solver_h
 #define ddcontact_interface_krylov_solver_h
 
+#include <ddcontact/contact/contact_interface.h>
 #include <ddcontact/contact/contact_problem.h>
-#include <ddcontact/solvers/contact_interface.h>
 #include <ddcontact/solvers/rigid_mode_coarse_space.h>
 #include <ddcontact/solvers/robin_preconditioner.h>
 

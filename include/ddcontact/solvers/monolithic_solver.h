@@ -7,9 +7,9 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
-#include <ddcontact/solvers/contact_interface.h>
+#include <ddcontact/contact/contact_interface.h>
+#include <ddcontact/contact/friction_history.h>
 #include <ddcontact/solvers/contact_solver.h>
-#include <ddcontact/solvers/friction_history.h>
 
 #include <vector>
 

@@ -3,8 +3,8 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
+#include <ddcontact/contact/contact_interface.h>
 #include <ddcontact/contact/contact_pair.h>
-#include <ddcontact/solvers/contact_interface.h>
 #include <ddcontact/solvers/robin_preconditioner.h>
 
 #include <vector>

@@ -3,7 +3,7 @@
 
 #include <deal.II/lac/full_matrix.h>
 
-#include <ddcontact/solvers/contact_interface.h>
+#include <ddcontact/contact/contact_interface.h>
 
 #include <string>
 #include <vector>

@@ -6,7 +6,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <ddcontact/body/body_linear_solver.h>
-#include <ddcontact/solvers/contact_interface.h>
+#include <ddcontact/contact/contact_interface.h>
 
 #include <algorithm>
 #include <memory>

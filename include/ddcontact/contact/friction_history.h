@@ -1,8 +1,8 @@
 #ifndef ddcontact_friction_history_h
 #define ddcontact_friction_history_h
 
+#include <ddcontact/contact/contact_interface.h>
 #include <ddcontact/contact/contact_problem.h>
-#include <ddcontact/solvers/contact_interface.h>
 
 #include <vector>
 

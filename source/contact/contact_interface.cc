@@ -1,4 +1,4 @@
-#include <ddcontact/solvers/contact_interface.h>
+#include <ddcontact/contact/contact_interface.h>
 
 #include <algorithm>
 #include <cmath>

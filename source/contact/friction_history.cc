@@ -1,4 +1,4 @@
-#include <ddcontact/solvers/friction_history.h>
+#include <ddcontact/contact/friction_history.h>
 
 #include <cmath>
 
