@@ -106,6 +106,30 @@ namespace ddcontact
         throw InputError(what + ": '" + text + "' is not a finite number");
       }
     }
+
+    unsigned int
+    edit_distance(const std::string &a, const std::string &b)
+    {
+      const auto lower = [](const char c)
+      { return std::tolower(static_cast<unsigned char>(c)); };
+      std::vector<unsigned int> row(b.size() + 1);
+      for (unsigned int j = 0; j <= b.size(); ++j)
+        row[j] = j;
+      for (unsigned int i = 1; i <= a.size(); ++i)
+      {
+        unsigned int diagonal = row[0];
+        row[0]                = i;
+        for (unsigned int j = 1; j <= b.size(); ++j)
+        {
+          const unsigned int above = row[j];
+          row[j]                   = std::min({row[j] + 1,
+                                               row[j - 1] + 1,
+                                               diagonal + (lower(a[i - 1]) != lower(b[j - 1]))});
+          diagonal                 = above;
+        }
+      }
+      return row[b.size()];
+    }
   } // namespace parsing
 
   void

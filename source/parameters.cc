@@ -15,6 +15,7 @@
 
 namespace ddcontact
 {
+  using parsing::edit_distance;
   using parsing::message_of;
   using parsing::n_world_processes;
   using parsing::split;
@@ -152,31 +153,6 @@ namespace ddcontact
         }
       }
       return sections;
-    }
-
-    /** The edit distance of @p a and @p b, ignoring case. */
-    unsigned int
-    edit_distance(const std::string &a, const std::string &b)
-    {
-      const auto lower = [](const char c)
-      { return std::tolower(static_cast<unsigned char>(c)); };
-      std::vector<unsigned int> row(b.size() + 1);
-      for (unsigned int j = 0; j <= b.size(); ++j)
-        row[j] = j;
-      for (unsigned int i = 1; i <= a.size(); ++i)
-      {
-        unsigned int diagonal = row[0];
-        row[0]                = i;
-        for (unsigned int j = 1; j <= b.size(); ++j)
-        {
-          const unsigned int above = row[j];
-          row[j]                   = std::min({row[j] + 1,
-                                               row[j - 1] + 1,
-                                               diagonal + (lower(a[i - 1]) != lower(b[j - 1]))});
-          diagonal                 = above;
-        }
-      }
-      return row[b.size()];
     }
 
     /**

@@ -352,12 +352,14 @@ namespace ddcontact
     // The bodies check their boundary data at every load time.
     set_checked_load_steps(loading.n_checked_load_times());
     // The combined algorithm (Fig. 2) interleaves single DD steps with the
-    // refinement; the monolithic solver has no such steps.
-    if (adaptation.mode == AdaptationMode::combined &&
-        contact_solver.solver == ContactSolverType::monolithic)
+    // refinement; a solver that solves whole has no such steps.
+    const auto &can = capabilities_of(contact_solver.solver);
+    if (adaptation.mode == AdaptationMode::combined && !can.single_steps)
       throw InputError("Adaptation/Mode: combined needs Contact "
-                       "solver/Solver = dd-newton or dd; use Mode = "
-                       "nested with the monolithic solver");
+                       "solver/Solver = " +
+                       solvers_with(&SolverCapabilities::single_steps) +
+                       "; use Mode = nested with the " + contact_solver.solver +
+                       " solver");
     prm.enter_subsection("Parallel");
     parallel.parse(prm, body_names);
     prm.leave_subsection();
@@ -371,10 +373,11 @@ namespace ddcontact
         "process (Body owners = auto with at most as many processes as "
         "bodies, or a list of single processes), so no mesh is split; use "
         "more processes, Body owners = all, or Mesh = auto");
-    if (contact_solver.solver == ContactSolverType::monolithic &&
-        n_world_processes() > 1)
-      throw InputError("Contact solver/Solver: monolithic runs on one "
-                       "process; use Solver = dd-newton or dd under mpirun");
+    if (!can.several_processes && n_world_processes() > 1)
+      throw InputError("Contact solver/Solver: " + contact_solver.solver +
+                       " runs on one process; use Solver = " +
+                       solvers_with(&SolverCapabilities::several_processes) +
+                       " under mpirun");
 
     check_adaptation_bodies(*this);
     // The BEM's kernels (Kelvin's solution) are those of plane strain; an

@@ -104,12 +104,12 @@ namespace ddcontact
   LoadPathMeasures
   Simulation::path_measures() const
   {
-    std::vector<ContactState>         states;
-    std::vector<ContactLaw::Friction> friction;
+    std::vector<ContactState>    states;
+    std::vector<FrictionResults> friction;
     for (unsigned int p = 0; p < contact_pairs.size(); ++p)
     {
       states.push_back(contact_solver->contact_state(p));
-      friction.push_back(contact_solver->get_problem().law(p).get_friction());
+      friction.push_back(contact_solver->solution_of(p).friction);
     }
     return LoadPathMeasures(states, friction);
   }

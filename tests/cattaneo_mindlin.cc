@@ -79,9 +79,8 @@ namespace
   check_invariants(const Simulation &sim, const std::string &name)
   {
     const auto  points = sim.get_contact_solver().contact_state(0);
-    const auto &nodes =
-      sim.get_contact_solver().get_problem().law(0).get_friction();
-    double excess = 0, against = 0, t_scale = 0, s_scale = 0;
+    const auto &nodes  = sim.get_contact_solver().solution_of(0).friction;
+    double      excess = 0, against = 0, t_scale = 0, s_scale = 0;
     for (unsigned int i = 0; i < nodes.nodal_t.size(); ++i)
     {
       t_scale = std::max(t_scale, std::abs(nodes.nodal_t[i]));

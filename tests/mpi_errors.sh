@@ -5,7 +5,7 @@
 # exit 1; the same bad value on every process is printed once without a
 # process number; different errors on the processes are each printed once
 # with their processes; Parallel/Mesh = distributed where no mesh is split
-# is refused in one line
+# is refused in one line, and so is a solver that runs on one process
 # usage: mpi_errors.sh MPIRUN DDCONTACT_EXECUTABLE SOURCE_DIR
 set -u
 mpirun="$1"; exe="$2"; src="$3"
@@ -56,6 +56,16 @@ code=$?
 [ "$code" -eq 1 ]; check $? "Mesh = distributed without process groups: exit 1 (got $code)"
 [ "$(count "ddcontact: error: Parallel/Mesh: distributed, but every body is solved whole on one process" "$work/4.err")" -eq 1 ]
 check $? "printed once, naming Parallel/Mesh"
+
+# 5. A solver without several processes (SolverCapabilities) under
+# mpirun: refused in one line naming the entry and the solvers that can.
+"$mpirun" -np 2 "$exe" "$good" --set "Contact solver/Solver=monolithic" \
+  --set "Adaptation/Mode=nested" --output "$work/e" >"$work/5.out" 2>"$work/5.err"
+code=$?
+[ "$code" -eq 1 ]; check $? "the monolithic solver under mpirun: exit 1 (got $code)"
+[ "$(count "ddcontact: error: Contact solver/Solver: monolithic runs on one process; use Solver = dd-newton or dd under mpirun" "$work/5.err")" -eq 1 ]
+check $? "printed once, naming Contact solver/Solver"
+[ ! -e "$work/e/summary.json" ]; check $? "a refused run writes no summary"
 
 for f in "$work"/*.err; do echo "--- $(basename "$f")"; grep "ddcontact" "$f"; done
 [ "$failures" -eq 0 ] && echo PASSED || { echo "FAILED ($failures)"; exit 1; }

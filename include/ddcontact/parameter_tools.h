@@ -158,6 +158,11 @@ namespace ddcontact
     /** The message of @p e on one line (deal.II's span several). */
     std::string
     message_of(const std::exception &e);
+
+    /** The edit distance of @p a and @p b, ignoring case (the closest
+     * name to a misspelled one). */
+    unsigned int
+    edit_distance(const std::string &a, const std::string &b);
   } // namespace parsing
 } // namespace ddcontact
 

@@ -14,7 +14,6 @@ namespace ddcontact
   ContactLaw::reset()
   {
     lambda.assign(pair.points().size(), 0.);
-    peak = 0;
     lambda_points.clear();
     for (const auto &p : pair.points())
       lambda_points.push_back(p.x);
@@ -115,11 +114,9 @@ namespace ddcontact
   }
 
   void
-  ContactLaw::set_contact_pressure(const std::vector<double> &sigma_n,
-                                   const double               peak_pressure)
+  ContactLaw::set_contact_pressure(const std::vector<double> &sigma_n)
   {
     Assert(from_solver, ExcMessage("only with set_solver_pressure()"));
     set_multipliers(sigma_n);
-    peak = peak_pressure;
   }
 } // namespace ddcontact

@@ -228,7 +228,9 @@ namespace ddcontact
   } // namespace
 
   ContactState
-  ContactProblem::contact_state(const unsigned int p, const Iterate &u) const
+  ContactProblem::contact_state(const unsigned int  p,
+                                const Iterate      &u,
+                                const PairSolution *published) const
   {
     const auto  &pair = *pairs[p];
     ContactState state;
@@ -242,7 +244,8 @@ namespace ddcontact
     pair.get_body_2().reinit_vector(l2);
     std::tie(state.force_1, state.force_2) =
       pair.add_contact_loads(state.sigma_n, l1, l2);
-    const auto &friction = laws[p].get_friction();
+    static const FrictionResults none;
+    const auto &friction = published ? published->friction : none;
     if (pair.has_friction() && !pair.points().empty() &&
         friction.t.size() == pair.points().size())
     {
@@ -295,7 +298,7 @@ namespace ddcontact
     // The peak is that of the field written to the CSV and the VTU, at the
     // contact points; the largest nodal multiplier (exact contact, Contact
     // pressure = nodes) lies at a node of S_1 and is kept beside it.
-    state.max_nodal_pressure = laws[p].peak_pressure();
+    state.max_nodal_pressure = published ? published->peak_nodal_pressure : 0.;
     return state;
   }
 

@@ -84,13 +84,14 @@ namespace ddcontact
   }
 
   void
-  FrictionHistory::publish(ContactProblem                         &problem,
+  FrictionHistory::publish(const ContactProblem                   &problem,
                            const ContactInterface                 &interface,
                            const PointVector                      &p,
                            const PointVector                      &t,
                            const PointVector                      &nodal_slips,
                            const std::vector<bool>                &sticking,
-                           const std::vector<std::vector<double>> &sigma_n)
+                           const std::vector<std::vector<double>> &sigma_n,
+                           std::vector<PairSolution>              &published)
   {
     const unsigned int n = interface.size();
     AssertDimension(t.size(), n);
@@ -117,7 +118,7 @@ namespace ddcontact
       const auto &pair = *pairs[k];
       if (!pair.has_friction())
         continue;
-      ContactLaw::Friction result;
+      FrictionResults result;
       if (k < carried_dissipation.size())
         result.dissipation = carried_dissipation[k];
       result.slip = pair.slips(
@@ -148,9 +149,9 @@ namespace ddcontact
                                : sticks[k][q]      ? NodeState::stick
                                                    : NodeState::slip);
       }
-      last_point_slips[k] = result.slip;
-      last_dissipation[k] = result.dissipation;
-      problem.law(k).set_friction(result);
+      last_point_slips[k]   = result.slip;
+      last_dissipation[k]   = result.dissipation;
+      published[k].friction = std::move(result);
     }
   }
 } // namespace ddcontact

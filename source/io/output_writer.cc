@@ -185,6 +185,43 @@ namespace ddcontact
       s << base << '-' << std::setw(4) << std::setfill('0') << step;
       return s.str();
     }
+
+    /** The VTU of one body of a step, @p name.vtu, or on a partitioned
+     * mesh @p name.P.vtu of every process P that owns cells (each writes
+     * its own); the names of all go into @p pieces. Collective over a
+     * partitioned mesh. */
+    void
+    write_pieces(const DataOut<2>                     &data_out,
+                 const std::string                    &name,
+                 const parallel::TriangulationBase<2> *partitioned,
+                 const std::string                    &directory,
+                 const MPI_Comm                        communicator,
+                 std::vector<std::string>             &pieces)
+    {
+      if (!partitioned)
+      {
+        pieces.push_back(name + ".vtu");
+        OutputFile out(directory + "/" + pieces.back());
+        out.write([&](std::ostream &s) { data_out.write_vtu(s); });
+        out.commit();
+        return;
+      }
+      const unsigned int this_process =
+        Utilities::MPI::this_mpi_process(communicator);
+      const auto owned = Utilities::MPI::all_gather(
+        communicator, partitioned->n_locally_owned_active_cells());
+      for (unsigned int p = 0; p < owned.size(); ++p)
+        if (owned[p] > 0)
+          pieces.push_back(name + "." + std::to_string(p) + ".vtu");
+      if (owned[this_process] > 0)
+      {
+        OutputFile out(directory + "/" + name + "." +
+                       std::to_string(this_process) + ".vtu");
+        out.write([&](std::ostream &s) { data_out.write_vtu(s); });
+        out.commit();
+      }
+    }
+
   } // namespace
 
   OutputWriter::OutputWriter(const std::string &directory,
@@ -211,9 +248,7 @@ namespace ddcontact
 
     std::vector<std::string> pieces;
     const std::string        group = step_name("bodies", step) + ".pvtu";
-    const unsigned int       this_process =
-      Utilities::MPI::this_mpi_process(communicator);
-    const bool root = this_process == 0;
+    const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
     // The projection needs the whole mesh on this process.
     const bool smooth = smoothed_stresses &&
                         std::none_of(bodies.begin(),
@@ -246,29 +281,12 @@ namespace ddcontact
       data_out.build_patches(body.get_mapping(), body.get_fe().degree);
       data_out.set_flags(vtk_flags());
 
-      const std::string name = step_name(body.name(), step);
-      if (partitioned)
-      {
-        const auto owned = Utilities::MPI::all_gather(
-          communicator, partitioned->n_locally_owned_active_cells());
-        for (unsigned int p = 0; p < owned.size(); ++p)
-          if (owned[p] > 0)
-            pieces.push_back(name + "." + std::to_string(p) + ".vtu");
-        if (owned[this_process] > 0)
-        {
-          OutputFile out(directory + "/" + name + "." +
-                         std::to_string(this_process) + ".vtu");
-          out.write([&](std::ostream &s) { data_out.write_vtu(s); });
-          out.commit();
-        }
-      }
-      else
-      {
-        pieces.push_back(name + ".vtu");
-        OutputFile out(directory + "/" + pieces.back());
-        out.write([&](std::ostream &s) { data_out.write_vtu(s); });
-        out.commit();
-      }
+      write_pieces(data_out,
+                   step_name(body.name(), step),
+                   partitioned,
+                   directory,
+                   communicator,
+                   pieces);
       // Group the bodies of this step; every piece has the same fields.
       if (root && b + 1 == bodies.size())
       {

@@ -6,8 +6,8 @@
 namespace ddcontact
 {
   LoadPathMeasures::LoadPathMeasures(
-    const std::vector<ContactState>         &states,
-    const std::vector<ContactLaw::Friction> &friction)
+    const std::vector<ContactState>    &states,
+    const std::vector<FrictionResults> &friction)
   {
     AssertDimension(states.size(), friction.size());
     for (unsigned int k = 0; k < states.size(); ++k)

@@ -22,6 +22,7 @@ namespace ddcontact
     , problem(bodies, pairs, distribution)
     , uzawa(this->parameters, pcout)
     , pcout(pcout)
+    , published(pairs.size())
   {
   }
 
@@ -47,65 +48,88 @@ namespace ddcontact
                                          const BodyDistribution &,
                                          ConditionalOStream &);
 
-    /** A registered solver: its entry value, its factory and what it can
-     * take. */
+    /** A registered solver: its entry value, its factory, what it can
+     * take and its description (Contact solver/Solver's documentation). */
     struct SolverEntry
     {
       const char        *name;
-      ContactSolverType  type;
       SolverFactory      factory;
       SolverCapabilities can;
+      const char        *description;
     };
 
-    /** The registered solvers, one line each: a new solver is its header,
-     * its source, its value in ContactSolverType and its line here.
-     * Capabilities: friction, floating bodies, pressure on the nodes, exact
-     * contact on the nodes, (the same only with friction), auto = points
-     * for the Uzawa loop. */
+    /** The registered solvers, one row each: a new solver is its header,
+     * its source, its row here and its test. Capabilities: friction,
+     * floating bodies, pressure on the nodes, exact contact on the nodes,
+     * (the same only with friction), auto = points for the Uzawa loop,
+     * single steps, several processes. */
     const std::vector<SolverEntry> solvers = {
-      {"dd",
-       ContactSolverType::dd,
-       &make_solver<NeumannDDSolver>,
-       {false, false, false, false, false, false}},
-      {"monolithic",
-       ContactSolverType::monolithic,
-       &make_solver<MonolithicContactSolver>,
-       {true, false, true, false, true, true}},
       {"dd-newton",
-       ContactSolverType::dd_newton,
        &make_solver<DDNewtonSolver>,
-       {true, true, true, true, true, false}}};
+       {true, true, true, true, true, false, true, true},
+       "(the default): semismooth Newton on the contact pressure of (20), "
+       "whose linear systems are solved by preconditioned CG with one set "
+       "of body solves per iteration (doc/contact-solvers.md)"},
+      {"monolithic",
+       &make_solver<MonolithicContactSolver>,
+       {true, false, true, false, true, true, false, false},
+       "semismooth Newton on the penalised problem (16) for all bodies at "
+       "once (the reference)"},
+      {"dd",
+       &make_solver<NeumannDDSolver>,
+       {false, false, false, false, false, false, true, true},
+       "the paper's parallel Neumann domain decomposition (20)-(21) with "
+       "the relaxation of the subsection Domain decomposition, kept for "
+       "reproducing the paper (and needed when a body is solved by a "
+       "process group)"}};
 
     const SolverEntry &
-    entry_of(const ContactSolverType solver)
+    entry_of(const std::string &solver)
     {
       for (const auto &entry : solvers)
-        if (entry.type == solver)
+        if (entry.name == solver)
           return entry;
-      AssertThrow(false, ExcInternalError());
+      AssertThrow(false, ExcMessage("unknown contact solver " + solver));
       return solvers.front();
     }
   } // namespace
 
-  // Contact solver/Solver's entry values come from the registry above.
-  template <>
-  const std::vector<std::pair<std::string, ContactSolverType>> &
-  selection_names<ContactSolverType>()
+  Patterns::Selection
+  contact_solver_pattern()
   {
-    static const auto names = []
-    {
-      std::vector<std::pair<std::string, ContactSolverType>> list;
-      for (const auto &entry : solvers)
-        list.emplace_back(entry.name, entry.type);
-      return list;
-    }();
-    return names;
+    std::string names;
+    for (const auto &entry : solvers)
+      names += (names.empty() ? "" : "|") + std::string(entry.name);
+    return Patterns::Selection(names);
+  }
+
+  std::string
+  contact_solver_documentation()
+  {
+    std::string text;
+    for (const auto &entry : solvers)
+      text += (text.empty() ? "" : "; ") + std::string(entry.name) +
+              (entry.description[0] == '(' ? " " : ": ") + entry.description;
+    return text + ".";
   }
 
   const SolverCapabilities &
-  capabilities_of(const ContactSolverType solver)
+  capabilities_of(const std::string &solver)
   {
     return entry_of(solver).can;
+  }
+
+  std::string
+  solvers_with(bool SolverCapabilities::*capability)
+  {
+    std::vector<std::string> names;
+    for (const auto &entry : solvers)
+      if (entry.can.*capability)
+        names.emplace_back(entry.name);
+    std::string list;
+    for (unsigned int i = 0; i < names.size(); ++i)
+      list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    return list;
   }
 
   std::unique_ptr<ContactSolver>
@@ -120,16 +144,18 @@ namespace ddcontact
     // carries the normal approach only.
     const auto &entry = entry_of(parameters.solver);
     if (!entry.can.floating_bodies)
-      refuse_floating_bodies(bodies,
-                             "; only Contact solver/Solver = dd-newton "
-                             "solves floating bodies, not " +
-                               selection_name(parameters.solver));
+      refuse_floating_bodies(
+        bodies,
+        "; only Contact solver/Solver = " +
+          solvers_with(&SolverCapabilities::floating_bodies) +
+          " solves floating bodies, not " + parameters.solver);
     else if (parameters.friction)
       refuse_floating_bodies(bodies,
-                             ", and dd-newton solves floating bodies without "
-                             "friction only; hold the body by a Dirichlet "
-                             "condition, or set Friction = none on its "
-                             "contact pairs");
+                             ", and " + parameters.solver +
+                               " solves floating bodies without friction "
+                               "only; hold the body by a Dirichlet "
+                               "condition, or set Friction = none on its "
+                               "contact pairs");
     return entry.factory(parameters, bodies, pairs, distribution, pcout);
   }
 
@@ -194,6 +220,7 @@ namespace ddcontact
   {
     records.clear();
     problem.reset_laws();
+    published.assign(problem.get_pairs().size(), PairSolution());
     uzawa.reset();
     start_phase();
     timer.restart();
@@ -293,7 +320,7 @@ namespace ddcontact
       {
         // With friction the tangential traction too (the FEM problem's
         // whole contact load).
-        const auto &t = problem.law(p).get_friction().t;
+        const auto &t = published[p].friction.t;
         pairs[p]->add_traction_samples(
           last_sigma_n[p],
           body,
@@ -428,6 +455,6 @@ namespace ddcontact
   ContactState
   ContactSolver::contact_state(const unsigned int p) const
   {
-    return problem.contact_state(p, problem.current_iterate());
+    return problem.contact_state(p, problem.current_iterate(), &published[p]);
   }
 } // namespace ddcontact

@@ -181,18 +181,10 @@ namespace ddcontact
   void
   ContactSolverParameters::declare(ParameterHandler &prm)
   {
-    prm.declare_entry(
-      "Solver",
-      "dd-newton",
-      selection_pattern<ContactSolverType>(),
-      "dd-newton (the default): semismooth Newton on the contact pressure "
-      "of (20), whose linear systems are solved by preconditioned CG with "
-      "one set of body solves per iteration (doc/contact-solvers.md); dd: "
-      "the paper's parallel Neumann domain decomposition (20)-(21) with the "
-      "relaxation of the subsection Domain decomposition, kept for "
-      "reproducing the paper (and needed when a body is solved by a process "
-      "group); monolithic: semismooth Newton on the penalised problem (16) "
-      "for all bodies at once (the reference).");
+    prm.declare_entry("Solver",
+                      "dd-newton",
+                      contact_solver_pattern(),
+                      contact_solver_documentation());
     prm.declare_entry("Max iterations",
                       "5000",
                       Patterns::Integer(1),
@@ -256,7 +248,7 @@ namespace ddcontact
   void
   ContactSolverParameters::parse(ParameterHandler &prm)
   {
-    solver         = parse_selection<ContactSolverType>(prm.get("Solver"));
+    solver         = prm.get("Solver");
     max_iterations = prm.get_integer("Max iterations");
     tolerance      = prm.get_double("Tolerance");
     if (prm.get("Initial guess") == "winkler")
@@ -330,9 +322,9 @@ namespace ddcontact
     if (friction && !can.friction)
       throw InputError("Contact pair " + frictional_pair +
                        "/Friction: friction is solved by Contact "
-                       "solver/Solver = dd-newton or monolithic, not by the "
-                       "paper's " +
-                       selection_name(solver) +
+                       "solver/Solver = " +
+                       solvers_with(&SolverCapabilities::friction) +
+                       ", not by " + solver +
                        "; set Solver = dd-newton or Friction = none");
     if (friction && contact_pressure == ContactPressure::points)
       throw InputError("Contact pair " + frictional_pair +
@@ -347,17 +339,20 @@ namespace ddcontact
     }
     pressure_on_nodes = (contact_pressure == ContactPressure::nodes);
     if (pressure_on_nodes && !can.pressure_on_nodes)
-      throw InputError("Contact solver/Contact pressure = nodes needs "
-                       "Solver = dd-newton or monolithic (the DD takes the "
-                       "pressure at the contact points)");
+      throw InputError(
+        "Contact solver/Contact pressure = nodes needs Solver = " +
+        solvers_with(&SolverCapabilities::pressure_on_nodes) + " (" + solver +
+        " takes the pressure at the contact points)");
     // The Uzawa loop updates pointwise multipliers; dd-newton solves exact
     // contact on the nodes directly.
     if (pressure_on_nodes && exact && !can.exact_on_nodes)
       throw InputError("Contact solver/Contact pressure = nodes with "
                        "Solver = " +
-                       selection_name(solver) +
+                       solver +
                        " is a penalty; for exact contact "
                        "(Contact pair/Formulation = exact) on the nodes use "
-                       "Solver = dd-newton, or set Formulation = penalty");
+                       "Solver = " +
+                       solvers_with(&SolverCapabilities::exact_on_nodes) +
+                       ", or set Formulation = penalty");
   }
 } // namespace ddcontact

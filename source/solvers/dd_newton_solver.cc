@@ -177,7 +177,10 @@ namespace ddcontact
     {
       const auto peak = interface.peak_pressures(p);
       for (unsigned int k = 0; k < last_sigma_n.size(); ++k)
-        problem.law(k).set_contact_pressure(last_sigma_n[k], peak[k]);
+      {
+        problem.law(k).set_contact_pressure(last_sigma_n[k]);
+        published[k].peak_nodal_pressure = peak[k];
+      }
     }
     if (interface.has_friction())
     {
@@ -191,7 +194,8 @@ namespace ddcontact
                       PointVector(p.begin() + n, p.end()),
                       interface.slip_average(last_u_tilde),
                       sticking,
-                      last_sigma_n);
+                      last_sigma_n,
+                      published);
     }
   }
 

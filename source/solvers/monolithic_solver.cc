@@ -447,7 +447,10 @@ namespace ddcontact
     const auto         sigma_n = interface.reported_field(pressure, -1.);
     const auto         peaks   = interface.peak_pressures(pressure);
     for (unsigned int k = 0; k < sigma_n.size(); ++k)
-      problem.law(k).set_contact_pressure(sigma_n[k], peaks[k]);
+    {
+      problem.law(k).set_contact_pressure(sigma_n[k]);
+      published[k].peak_nodal_pressure = peaks[k];
+    }
     if (!friction)
       return;
 
@@ -467,6 +470,7 @@ namespace ddcontact
                     PointVector(p.begin() + n_nodes, p.end()),
                     slips,
                     sticking,
-                    sigma_n);
+                    sigma_n,
+                    published);
   }
 } // namespace ddcontact

@@ -113,55 +113,15 @@ namespace ddcontact
     }
 
     /** The solver's pressure: the normal stress sigma_n = -p at the
-     * points, and
-     * the largest nodal value of p (the peak of the piecewise linear
-     * pressure, at a node, which the points between the nodes miss). */
+     * points (with set_solver_pressure()). */
     void
-    set_contact_pressure(const std::vector<double> &sigma_n, double peak);
-
-    /** The peak set by set_contact_pressure(); 0 otherwise. */
-    double
-    peak_pressure() const
-    {
-      return peak;
-    }
-
-    /** The solver's frictional result at every point: the tangential
-     * traction t (the traction -t tau on body 1, see ContactPoint), the
-     * slip increment of the load step, the slip since the start, and the
-     * state; and over the pair the energy dissipated in the step,
-     * int_S1 t . slip increment >= 0. */
-    struct Friction
-    {
-      std::vector<double>    t, slip_increment, slip;
-      std::vector<NodeState> state; // open, stick or slip
-      double                 dissipation = 0;
-      /** The law holds node by node for the averaged slip (doc/friction.md,
-       * section 3): the multipliers t_i, the averaged slip increments
-       * ds_i and the bounds (g_i or mu_i p_i) of the pair's nodes. */
-      std::vector<double> nodal_t, nodal_slip_increment, nodal_bound;
-    };
-
-    void
-    set_friction(const Friction &result)
-    {
-      friction = result;
-    }
-
-    /** Empty vectors until a solver with friction has set them. */
-    const Friction &
-    get_friction() const
-    {
-      return friction;
-    }
+    set_contact_pressure(const std::vector<double> &sigma_n);
 
   private:
     const ContactPair    &pair;
     std::vector<double>   lambda;
     std::vector<Point<2>> lambda_points;       // where lambda lives
     bool                  from_solver = false; // the solver's pressure
-    double                peak        = 0;
-    Friction              friction;
   };
 } // namespace ddcontact
 

@@ -17,6 +17,40 @@ namespace ddcontact
 {
   using namespace dealii;
 
+  /** A frictional solver's results on a pair: at every point the
+   * tangential traction t (the traction -t tau on body 1, see
+   * ContactPoint), the slip increment of the load step, the slip since the
+   * start, and the state; over the pair the energy dissipated in the step,
+   * int_S1 t . slip increment >= 0. */
+  struct FrictionResults
+  {
+    std::vector<double>    t, slip_increment, slip;
+    std::vector<NodeState> state; // open, stick or slip
+    double                 dissipation = 0;
+    /** The law holds node by node for the averaged slip (doc/friction.md,
+     * section 3): the multipliers t_i, the averaged slip increments ds_i
+     * and the bounds (g_i or mu_i p_i) of the pair's nodes. */
+    std::vector<double> nodal_t, nodal_slip_increment, nodal_bound;
+  };
+
+  /**
+   * What a contact solver computes on a pair beyond its iterate. The
+   * displacements are the bodies' and the pressure the pair's law's
+   * (ContactProblem::contact_state() computes forces, zone and
+   * penetration from them); the solver publishes the rest here
+   * (ContactSolver::solution_of()) for the report, the load steps and
+   * the estimators: the frictional results (empty vectors until a solver
+   * with friction has published them) and the peak of a nodal pressure
+   * (0 for a pressure at the points).
+   */
+  struct PairSolution
+  {
+    FrictionResults friction;
+    /** The largest nodal value of p: the peak of the piecewise linear
+     * pressure, at a node, which the points between the nodes miss. */
+    double peak_nodal_pressure = 0;
+  };
+
   /** Contact results of one pair for one iterate. */
   struct ContactState
   {
@@ -34,7 +68,7 @@ namespace ddcontact
     double contact_radius  = -1;
     double stick_radius    = -1;
     double max_penetration = 0;
-    // With friction (ContactLaw::get_friction(); empty or 0 without): the
+    // With friction (PairSolution::friction; empty or 0 without): the
     // tangential traction t at the points (the traction -t tau on body 1),
     // the slip increment and state, the tangential force on body 1 along
     // each point's tau (included in force_1; the integral of -t), the
@@ -195,9 +229,13 @@ namespace ddcontact
     std::vector<std::vector<double>>
     normal_displacements_by_body(const Iterate &u) const;
 
-    /** Forces, pressure, active set and penetration of pair @p p. */
+    /** Forces, pressure, active set and penetration of pair @p p; with
+     * what the solver published on the pair (@p published, if given) its
+     * friction and nodal peak too. */
     ContactState
-    contact_state(unsigned int p, const Iterate &u) const;
+    contact_state(unsigned int        p,
+                  const Iterate      &u,
+                  const PairSolution *published = nullptr) const;
 
     /** The largest penetration u_1n + u_2n - f_n over all pairs, and its
      * ratio to the largest approach |u_1n| + |u_2n| (the measure of the

@@ -16,7 +16,7 @@ namespace ddcontact
    * and the tangential multiplier t_i,old of every node of S_1 at the end
    * of the last step, and the slip at the pairs' points. It also turns an
    * iterate of nodal multipliers into the frictional results of the
-   * pairs' laws (ContactLaw::set_friction()): the traction, slip and state
+   * pairs (PairSolution::friction): the traction, slip and state
    * at the points, the nodal values and the dissipated energy. Shared by
    * the monolithic solver and dd-newton, whose nodes are the same
    * (ContactInterface).
@@ -78,23 +78,24 @@ namespace ddcontact
     /**
      * Hand the frictional results of the nodal pressures @p p, tangential
      * multipliers @p t and averaged slips @p nodal_slips (interface.size()
-     * values each) to the laws of the frictional pairs; @p sigma_n is the
-     * normal stress at the points (per pair), @p sticking the nodes that
-     * stick in the solver's states. A point in contact sticks where one of
-     * its nodes does, else it slips (between slipping or open nodes, where
-     * t = sigma b): the solver's states, not a comparison of |t| with the
+     * values each) into @p published, per pair, for the frictional pairs; @p
+     * sigma_n is the normal stress at the points (per pair), @p sticking the
+     * nodes that stick in the solver's states. A point in contact sticks where
+     * one of its nodes does, else it slips (between slipping or open nodes,
+     * where t = sigma b): the solver's states, not a comparison of |t| with the
      * bound, which an iterative solver meets only to its tolerance. The energy
      * dissipated at node i is m_i t_i (ds_i - theta_i (t_i - t_i,old)): the
      * slip beyond the penalty's elastic part, zero where the node sticks.
      */
     void
-    publish(ContactProblem                         &problem,
+    publish(const ContactProblem                   &problem,
             const ContactInterface                 &interface,
             const PointVector                      &p,
             const PointVector                      &t,
             const PointVector                      &nodal_slips,
             const std::vector<bool>                &sticking,
-            const std::vector<std::vector<double>> &sigma_n);
+            const std::vector<std::vector<double>> &sigma_n,
+            std::vector<PairSolution>              &published);
 
   private:
     std::vector<Point<2>>              nodes; // where slips and tractions live

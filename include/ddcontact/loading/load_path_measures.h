@@ -32,9 +32,9 @@ namespace ddcontact
     double bound_force = 0;
 
     /** The measures of the pairs' states @p states and frictional
-     * results @p friction (ContactLaw::get_friction()). */
-    LoadPathMeasures(const std::vector<ContactState>         &states,
-                     const std::vector<ContactLaw::Friction> &friction);
+     * results @p friction (PairSolution::friction). */
+    LoadPathMeasures(const std::vector<ContactState>    &states,
+                     const std::vector<FrictionResults> &friction);
 
     /**
      * The relative difference of two solutions of one step (the same

@@ -200,6 +200,15 @@ namespace ddcontact
     ContactState
     contact_state(unsigned int p) const;
 
+    /** What the solver computed on pair @p p beyond the iterate: its
+     * friction and the peak of a nodal pressure (PairSolution). */
+    const PairSolution &
+    solution_of(const unsigned int p) const
+    {
+      AssertIndexRange(p, published.size());
+      return published[p];
+    }
+
     /** The contact problem (bodies, pairs, laws) the solver iterates on. */
     const ContactProblem &
     get_problem() const
@@ -325,8 +334,10 @@ namespace ddcontact
     // The last step's loads sigma_n (per pair) and body solutions u~.
     std::vector<std::vector<double>> last_sigma_n;
     ContactProblem::Iterate          last_u_tilde;
-    unsigned int                     phase_start = 0; // first record
-    Timer                            timer;
+    // What the last step published on each pair (PairSolution).
+    std::vector<PairSolution> published;
+    unsigned int              phase_start = 0; // first record
+    Timer                     timer;
 
   private:
     std::function<void(unsigned int)> iteration_callback;

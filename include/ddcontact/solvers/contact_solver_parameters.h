@@ -11,16 +11,6 @@ namespace ddcontact
 {
   using namespace dealii;
 
-  /** Contact solver/Solver: the DD (20)-(21), the monolithic
-   * semismooth Newton method on (16), or the body-by-body semismooth
-   * Newton method on the contact pressure (DDNewtonSolver). */
-  enum class ContactSolverType
-  {
-    dd,
-    monolithic,
-    dd_newton
-  };
-
   /** Contact solver/Domain decomposition/Relaxation: the paper's fixed gamma of
    * (21), the optimal fixed gamma estimated at the start ("auto"), Aitken or
    * Anderson. */
@@ -82,13 +72,31 @@ namespace ddcontact
     /** With a frictionless exact contact, auto takes the points (the
      * Uzawa loop's pointwise multipliers) rather than the nodes. */
     bool auto_points_for_uzawa = false;
+    /** Single outer steps, which the combined algorithm (Fig. 2)
+     * interleaves with the refinement. */
+    bool single_steps = false;
+    /** Runs under mpirun (bodies on several processes). */
+    bool several_processes = false;
   };
 
-  /** The capabilities of @p solver (contact_solver.cc). */
+  /** The capabilities of Contact solver/Solver = @p solver, from the
+   * table of solvers in contact_solver.cc. */
   const SolverCapabilities &
-  capabilities_of(ContactSolverType solver);
+  capabilities_of(const std::string &solver);
 
-  DDCONTACT_DECLARE_SELECTION(ContactSolverType)
+  /** "dd-newton or monolithic": the solvers that have @p capability, for
+   * messages. */
+  std::string
+  solvers_with(bool SolverCapabilities::*capability);
+
+  /** Contact solver/Solver's entry values (the table's names) as a
+   * selection, and its documentation (each solver's description). */
+  Patterns::Selection
+  contact_solver_pattern();
+
+  std::string
+  contact_solver_documentation();
+
   DDCONTACT_DECLARE_SELECTION(ContactPressure)
   DDCONTACT_DECLARE_SELECTION(CoulombLinearization)
   DDCONTACT_DECLARE_SELECTION(RelaxationType)
@@ -165,10 +173,12 @@ namespace ddcontact
    */
   struct ContactSolverParameters
   {
-    ContactSolverType solver         = ContactSolverType::dd_newton;
-    unsigned int      max_iterations = 5000;
-    double            tolerance      = 1e-8; // relative residual on S
-    InitialGuess      initial_guess  = InitialGuess::elastic_layer;
+    /** Contact solver/Solver: the name of a row of the table of solvers
+     * (contact_solver.cc). */
+    std::string  solver         = "dd-newton";
+    unsigned int max_iterations = 5000;
+    double       tolerance      = 1e-8; // relative residual on S
+    InitialGuess initial_guess  = InitialGuess::elastic_layer;
     /** The pairs' Formulation = exact (exact contact, solved directly or
      * by the Uzawa loop): set by the scene from its pairs, not read
      * here. */
