@@ -67,7 +67,7 @@ namespace ddcontact
       {"dd-newton",
        &make_solver<DDNewtonSolver>,
        {true, true, true, true, true, false, true, true},
-       "(the default): semismooth Newton on the contact pressure of (20), "
+       "semismooth Newton on the contact pressure of (20), "
        "whose linear systems are solved by preconditioned CG with one set "
        "of body solves per iteration (doc/contact-solvers.md)"},
       {"monolithic",
@@ -106,10 +106,12 @@ namespace ddcontact
   std::string
   contact_solver_documentation()
   {
-    std::string text;
+    const std::string default_solver = ContactSolverParameters().solver;
+    std::string       text;
     for (const auto &entry : solvers)
       text += (text.empty() ? "" : "; ") + std::string(entry.name) +
-              (entry.description[0] == '(' ? " " : ": ") + entry.description;
+              (entry.name == default_solver ? " (the default): " : ": ") +
+              entry.description;
     return text + ".";
   }
 

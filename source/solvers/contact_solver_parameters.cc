@@ -182,7 +182,7 @@ namespace ddcontact
   ContactSolverParameters::declare(ParameterHandler &prm)
   {
     prm.declare_entry("Solver",
-                      "dd-newton",
+                      ContactSolverParameters().solver,
                       contact_solver_pattern(),
                       contact_solver_documentation());
     prm.declare_entry("Max iterations",
