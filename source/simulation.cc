@@ -1,6 +1,7 @@
 #include <ddcontact/interruption.h>
 #include <ddcontact/io/json.h>
 #include <ddcontact/io/scene_summary.h>
+#include <ddcontact/io/self_checks.h>
 #include <ddcontact/output_file.h>
 #include <ddcontact/simulation.h>
 #include <ddcontact/tasks.h>
@@ -383,11 +384,22 @@ namespace ddcontact
   }
 
   void
+  Simulation::check_answer()
+  {
+    TimerOutput::Scope t(timer, "self-checks");
+    const SelfChecks   checks(results(), parameters.contact_solver.tolerance);
+    report.set_self_checks(checks.json());
+    if (!checks.passed())
+      throw NotConvergedError(checks.failure());
+  }
+
+  void
   Simulation::solve()
   {
     try
     {
       strategy->solve();
+      check_answer();
     }
     catch (const DivergenceError &error)
     {

@@ -154,10 +154,16 @@ namespace ddcontact
     void
     output_results(unsigned int step);
 
-    /** Run the strategy; on a failure (divergence, interruption) write
-     * what was reached before passing the error on. */
+    /** Run the strategy, then check its answer (check_answer()); on a
+     * failure (divergence, a failed self-check, interruption) write what
+     * was reached before passing the error on. */
     void
     solve();
+
+    /** SelfChecks of the current answer into the report; a failed check
+     * throws NotConvergedError with its line. */
+    void
+    check_answer();
 
     /** The load steps of Loading (simulation_load_steps.cc): a fixed
      * number, or with Steps = auto those that LoadStepControl accepts. */

@@ -1,5 +1,6 @@
 #include <deal.II/fe/fe_values.h>
 
+#include <ddcontact/body/axis_of_symmetry.h>
 #include <ddcontact/body/boundary_data_checks.h>
 #include <ddcontact/body/elastic_body.h>
 
@@ -182,6 +183,55 @@ namespace ddcontact
             }
     }
 
+    /** An axisymmetric body's u_r = u_x at the vertices of its Dirichlet
+     * faces that prescribe x and lie on the axis r = 0 (whole faces, or a
+     * face's end): symmetry holds u_r = 0 there (AxisOfSymmetry), and a
+     * value prescribed otherwise would be replaced silently, its reaction
+     * printed (issue 59). InputError at the first nonzero value. */
+    template <int dim>
+    void
+    check_radial_on_axis(const ElasticBody<dim>    &body,
+                         const std::vector<double> &times)
+    {
+      if (body.get_geometry() != Geometry::axisymmetric)
+        return;
+      const double on_axis =
+        AxisOfSymmetry::tolerance(body.get_dof_handler().get_triangulation());
+      const auto    &dirichlet = body.get_boundary_conditions().dirichlet;
+      Vector<double> value(dim);
+      for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+        if (!cell->is_artificial())
+          for (const auto &face : cell->face_iterators())
+          {
+            if (!face->at_boundary())
+              continue;
+            const auto it = dirichlet.find(face->boundary_id());
+            if (it == dirichlet.end() || !it->second.mask[0])
+              continue;
+            for (unsigned int v = 0; v < face->n_vertices(); ++v)
+              if (std::abs(face->vertex(v)[0]) <= on_axis)
+                for (const double t : times)
+                {
+                  auto &f = *it->second.displacement;
+                  f.set_time(t);
+                  f.vector_value(face->vertex(v), value);
+                  if (std::abs(value[0]) > on_axis)
+                  {
+                    std::ostringstream s;
+                    s << std::setprecision(6) << "Body " << body.name()
+                      << "/Boundary conditions/Dirichlet: boundary id "
+                      << it->first << " prescribes u_r = " << value[0]
+                      << at_time(t) << at_point(face->vertex(v))
+                      << " on the axis of symmetry (x = r = 0), where "
+                         "symmetry holds u_r = 0; prescribe y alone there "
+                         "(e.g. '"
+                      << it->first << ": y: ...') or x = 0";
+                    throw InputError(s.str());
+                  }
+                }
+          }
+    }
+
     /** The body force at the cells' quadrature points, then the tractions
      * at those of their Neumann faces, on the cells this process assembles.
      */
@@ -257,6 +307,7 @@ namespace ddcontact
     check_dirichlet(body, check);
     check_loads(body, check);
     check.throw_if_found();
+    check_radial_on_axis(body, times);
   }
 
   template <int dim>

@@ -6,6 +6,8 @@
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/body/reaction_forces.h>
 
+#include <algorithm>
+
 namespace ddcontact
 {
   namespace
@@ -209,6 +211,22 @@ namespace ddcontact
     for (const auto &s : support_forces)
       sum += s.force;
     return sum;
+  }
+
+  template <int dim>
+  double
+  ReactionForces<dim>::relative_imbalance(const bool axial_only) const
+  {
+    const auto size = [axial_only](Tensor<1, dim> f)
+    {
+      if (axial_only)
+        f[0] = 0;
+      return f.norm();
+    };
+    double largest = std::max(size(applied), size(contact));
+    for (const auto &support : support_forces)
+      largest = std::max(largest, size(support.force));
+    return (largest > 0) ? size(imbalance()) / largest : 0.;
   }
 
   template class ReactionForces<2>;

@@ -14,6 +14,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace ddcontact
@@ -122,6 +123,20 @@ namespace ddcontact
       warnings.push_back(s.str());
     }
     return warnings;
+  }
+
+  double
+  ContactPair::multiplier_side_ratio() const
+  {
+    // A cell of body 2 by the dofs its points couple to.
+    std::set<unsigned int>                         faces_1;
+    std::set<std::vector<types::global_dof_index>> cells_2;
+    for (const auto &p : contact_points)
+    {
+      faces_1.insert(p.face);
+      cells_2.insert(p.dofs_2);
+    }
+    return cells_2.empty() ? 0. : double(faces_1.size()) / cells_2.size();
   }
 
   void

@@ -261,6 +261,7 @@ namespace ddcontact
       {
         report.search_distance = search_2.distance();
         report.expression_gap  = gap_function != nullptr;
+        report.interference    = parameters.interference;
       }
 
       /** Adds the points of @p face, the zone's face @p index. */

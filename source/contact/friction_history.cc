@@ -139,6 +139,8 @@ namespace ddcontact
                                 (ds - theta * (t[i] - old_traction(i)));
           result.nodal_t.push_back(t[i]);
           result.nodal_slip_increment.push_back(ds);
+          result.nodal_inelastic_slip.push_back(
+            ds - theta * (t[i] - old_traction(i)));
           result.nodal_bound.push_back(
             interface.law().converged_bound(i, p[i]));
         }

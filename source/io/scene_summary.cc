@@ -36,7 +36,12 @@ namespace ddcontact
       << " points of S_1 face S_2 within the search distance "
       << found.search_distance;
     if (found.n_points > 0)
-      s << ", initial gap " << found.min_gap << " to " << found.max_gap;
+    {
+      s << ", initial gap " << found.min_gap - found.interference << " to "
+        << found.max_gap - found.interference;
+      if (found.interference != 0)
+        s << " (with the Interference " << found.interference << ")";
+    }
     if (!exact_contact)
       s << ", theta = " << pair.penalty();
     s << '\n';

@@ -454,6 +454,39 @@ namespace ddcontact
     return records.size();
   }
 
+  void
+  ContactSolver::publish_nodal_law(const ContactInterface        &interface,
+                                   const PointVector             &x,
+                                   const ContactProblem::Iterate &u)
+  {
+    if (!interface.on_nodes())
+      return;
+    const auto loads     = interface.normal_stresses(x);
+    const auto tractions = interface.has_friction()
+                             ? interface.tangential_tractions(x)
+                             : std::vector<std::vector<double>>();
+    // The weak gaps of the bodies' own displacements, not the solver's
+    // S p: an independent evaluation of the law at the nodes.
+    const PointVector d = interface.penetration(u);
+    for (unsigned int k = 0; k < published.size(); ++k)
+    {
+      auto &solution        = published[k];
+      solution.load_sigma_n = loads[k];
+      solution.load_t =
+        tractions.empty() ? std::vector<double>() : tractions[k];
+      solution.nodal_pressure.clear();
+      solution.nodal_gap.clear();
+      solution.nodal_penalty.clear();
+    }
+    for (unsigned int i = 0; i < interface.size(); ++i)
+    {
+      auto &solution = published[interface.shares(i)[0].pair];
+      solution.nodal_pressure.push_back(x[i]);
+      solution.nodal_gap.push_back(d[i]);
+      solution.nodal_penalty.push_back(interface.penalty(i));
+    }
+  }
+
   ContactState
   ContactSolver::contact_state(const unsigned int p) const
   {

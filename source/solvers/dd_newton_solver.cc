@@ -181,6 +181,7 @@ namespace ddcontact
         problem.law(k).set_contact_pressure(last_sigma_n[k]);
         published[k].peak_nodal_pressure = peak[k];
       }
+      publish_nodal_law(interface, p, last_u_tilde);
     }
     if (interface.has_friction())
     {
@@ -478,6 +479,25 @@ namespace ddcontact
         penalty_entries() +
         ") regularizes it, or prescribe the free motion of the body "
         "somewhere (Boundary conditions/Dirichlet)");
+    // A CG at its limit has not solved the step's system: its iterate is
+    // no Newton step, and Newton steps after it would converge on a
+    // meaningless pressure (a 9.7e19 force written "converged"). GMRES at
+    // its direction limit is an inexact Newton step by design.
+    if (!krylov.used_gmres() && !krylov.met_tolerance())
+    {
+      std::ostringstream s;
+      s << std::setprecision(3) << "the CG of dd-newton's Newton step "
+        << record.iteration << " stopped after " << cg << " iterations (limit "
+        << InterfaceKrylovSolver::max_cg_iterations << ") with the residual "
+        << krylov.final_residual()
+        << " above its tolerance: the Newton system on the active set is "
+           "singular, as where the Dirichlet conditions of both bodies "
+           "prescribe the motion of a contact node (a contact zone ending "
+           "at nodes held on both sides) or the active nodes do not hold a "
+           "floating body; hold the end of the zone on one body only, or "
+           "try Contact solver/Solver = monolithic";
+      throw DivergenceError(s.str());
+    }
   }
 
   SolverCounts

@@ -87,9 +87,10 @@ namespace ddcontact
                                PointVector             &Sx,
                                ContactProblem::Iterate &u_x) const
   {
-    if (std::any_of(step.coupling.begin(),
-                    step.coupling.end(),
-                    [](const double k) { return k != 0; }))
+    last_used_gmres = std::any_of(step.coupling.begin(),
+                                  step.coupling.end(),
+                                  [](const double k) { return k != 0; });
+    if (last_used_gmres)
       return gmres(step, tolerance, x, Sx, u_x);
     const auto        &active = step.active;
     const unsigned int n      = x.size();
@@ -116,7 +117,9 @@ namespace ddcontact
     };
     PointVector r = active_residual(step, x, Sx);
     project(r);
-    if (interface.norm(r) <= tolerance)
+    last_residual      = interface.norm(r);
+    last_met_tolerance = last_residual <= tolerance;
+    if (last_met_tolerance)
       return 0;
 
     // Soft stages of the continuation: Theta^{-1}, without body solves.
@@ -150,7 +153,10 @@ namespace ddcontact
       add(u_x, alpha, u_s);
       add(r, -alpha, Ms);
       project(r);
-      if (interface.norm(r) <= tolerance)
+      last_residual = interface.norm(r);
+      // A breakdown (a non-positive curvature of a singular or indefinite
+      // system) ends it too: the residual is then not finite.
+      if (last_residual <= tolerance || !std::isfinite(last_residual))
         break;
       precondition(z, r);
       project(z);
@@ -159,6 +165,7 @@ namespace ddcontact
         s[q] = z[q] + (rho_new / rho) * s[q];
       rho = rho_new;
     }
+    last_met_tolerance = last_residual <= tolerance;
     return iterations;
   }
 
@@ -174,9 +181,11 @@ namespace ddcontact
 
     // No coarse space: dd-newton refuses floating bodies with friction.
     Assert(coarse.empty(), ExcInternalError());
-    PointVector  r    = active_residual(step, x, Sx);
-    const double beta = interface.norm(r);
-    if (beta <= tolerance)
+    PointVector  r     = active_residual(step, x, Sx);
+    const double beta  = interface.norm(r);
+    last_residual      = beta;
+    last_met_tolerance = beta <= tolerance;
+    if (last_met_tolerance)
       return 0;
     preconditioner.update(active);
 
@@ -215,12 +224,14 @@ namespace ddcontact
       g.push_back(-sn[j] * g[j]);
       g[j] *= cs[j];
       // |g_{j+1}| is the residual's M-norm after j + 1 directions.
-      if (std::abs(g[j + 1]) <= tolerance || breakdown == 0.)
+      last_residual = std::abs(g[j + 1]);
+      if (last_residual <= tolerance || breakdown == 0.)
         break;
       for (double &v : w)
         v /= breakdown;
       V.push_back(w);
     }
+    last_met_tolerance          = last_residual <= tolerance;
     const std::vector<double> y = solve_upper_triangular(H, g);
     const unsigned int        m = H.size();
     for (unsigned int j = 0; j < m; ++j)

@@ -451,6 +451,7 @@ namespace ddcontact
       problem.law(k).set_contact_pressure(sigma_n[k]);
       published[k].peak_nodal_pressure = peaks[k];
     }
+    publish_nodal_law(interface, p, problem.current_iterate());
     if (!friction)
       return;
 

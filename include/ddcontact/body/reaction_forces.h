@@ -86,6 +86,13 @@ namespace ddcontact
     Tensor<1, dim>
     imbalance() const;
 
+    /** |imbalance()| against the largest of the forces (0 without any):
+     * summary.json's force_imbalance. With @p axial_only (an
+     * axisymmetric body, whose radial forces its hoop stresses hold) the
+     * axial components alone. */
+    double
+    relative_imbalance(bool axial_only) const;
+
   private:
     std::vector<Support> support_forces;
     Tensor<1, dim>       applied;

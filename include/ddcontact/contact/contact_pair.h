@@ -245,6 +245,13 @@ namespace ddcontact
     std::vector<std::string>
     setup_warnings() const;
 
+    /** How many faces of S_1 meet the points for every cell of body 2 that
+     * their projections meet: above 1, S_1 is the finer side where the
+     * zones face each other (0 without points). Multipliers on the nodes
+     * of a much finer S_1 oscillate (the mortar inf-sup condition). */
+    double
+    multiplier_side_ratio() const;
+
     /** The penalty parameter theta of (15) for this pair. */
     double
     penalty() const

@@ -31,6 +31,10 @@ namespace ddcontact
      * section 3): the multipliers t_i, the averaged slip increments ds_i
      * and the bounds (g_i or mu_i p_i) of the pair's nodes. */
     std::vector<double> nodal_t, nodal_slip_increment, nodal_bound;
+    /** ds_i - theta_i (t_i - t_i,old): the slip increment beyond the
+     * penalty's elastic slip, nonzero only where the node slips at its
+     * bound (0 for every sticking node). */
+    std::vector<double> nodal_inelastic_slip;
   };
 
   /**
@@ -49,6 +53,19 @@ namespace ddcontact
     /** The largest nodal value of p: the peak of the piecewise linear
      * pressure, at a node, which the points between the nodes miss. */
     double peak_nodal_pressure = 0;
+    /** The normal stress and the tangential traction at the points that
+     * the bodies were loaded with, sum_i p_i phi_i with the test
+     * functions phi_i (ContactInterface): with the dual basis not the
+     * reported field sum_i p_i psi_i, though of the same resultant; the
+     * reactions are computed from these (empty: the reported field, as
+     * for a pressure at the points). */
+    std::vector<double> load_sigma_n, load_t;
+    /** The nodal multipliers p_i, the weak gaps d_i = (1/m_i) int phi_i
+     * (u_1n + u_2n - g) of the bodies' displacements (> 0: penetration)
+     * and the nodes' theta_i (0 for exact contact): the law (20) at the
+     * nodes, p_i >= 0, d_i <= theta_i p_i, p_i (d_i - theta_i p_i) = 0,
+     * which SelfChecks verifies (empty for a pressure at the points). */
+    std::vector<double> nodal_pressure, nodal_gap, nodal_penalty;
   };
 
   /** Contact results of one pair for one iterate. */

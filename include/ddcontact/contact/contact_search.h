@@ -47,6 +47,10 @@ namespace ddcontact
     double   worst_excess_length = 0; // face length there
     /** Length of the face of S_1 at the deepest overlap. */
     double min_gap_face_length = 0;
+    /** Contact pair/Interference delta, taken off the gaps after they
+     * were recorded (the meshes' overlap is judged without it): the gap in
+     * use is min_gap - interference to max_gap - interference. */
+    double interference = 0;
 
     /** Take the point @p x with the gap in use @p gap and the geometric
      * gap @p geometric, on a face of S_1 of length @p length, into

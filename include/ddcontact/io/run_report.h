@@ -128,6 +128,26 @@ namespace ddcontact
       last_completed_step = what;
     }
 
+    /** The contact state of every pair, in the order of the pairs. */
+    static std::vector<ContactState>
+    contact_states(const Results &results);
+
+    /** The reactions of @p body in the current state, loaded by its
+     * contact tractions (@p states, contact_states()). Collective over a
+     * partitioned mesh. */
+    static ReactionForces<2>
+    reactions_of(const Results                   &results,
+                 const std::vector<ContactState> &states,
+                 const ElasticBody<2>            &body);
+
+    /** summary.json's `self_checks` (SelfChecks::json()) of the last
+     * solve, in every summary from now on. */
+    void
+    set_self_checks(const Json &checks)
+    {
+      self_checks = checks;
+    }
+
     /** The end of a solve that returned: history.csv, the contact
      * profiles and states, and summary.json with the @p outcome the driver
      * decided. Collective. */
@@ -220,18 +240,6 @@ namespace ddcontact
                   const ElasticBody<2>            &body,
                   Json                            &json) const;
 
-    /** The contact state of every pair, in the order of the pairs. */
-    static std::vector<ContactState>
-    contact_states(const Results &results);
-
-    /** The reactions of @p body in the current state, loaded by its
-     * contact tractions (@p states, contact_states()). Collective over a
-     * partitioned mesh. */
-    static ReactionForces<2>
-    reactions_of(const Results                   &results,
-                 const std::vector<ContactState> &states,
-                 const ElasticBody<2>            &body);
-
     /** Each Dirichlet id's mean displacement and reaction at load step
      * @p step (t), in the contact @p states: summary.json's
      * load_steps[].supports and the rows of force_displacement.csv,
@@ -281,6 +289,7 @@ namespace ddcontact
     const bool    writes_files;
     std::ofstream statistics;
     Json          summary_json;
+    Json          self_checks;                // set_self_checks()
     Json          load_steps = Json::array(); // record_load_step()
     // force_displacement.csv's rows, one per step and Dirichlet id.
     std::vector<std::string> force_displacement_rows;

@@ -196,6 +196,15 @@ namespace ddcontact
       return records.size();
     }
 
+    /** Whether the last inner linear solve (dd-newton's CG or GMRES on
+     * the interface) reached its tolerance; true for the solvers whose
+     * inner solves are direct. */
+    virtual bool
+    inner_solve_converged() const
+    {
+      return true;
+    }
+
     /** Contact state of pair @p p for the current iterate. */
     ContactState
     contact_state(unsigned int p) const;
@@ -310,6 +319,16 @@ namespace ddcontact
     complete_iterate()
     {
     }
+
+    /** Publish (PairSolution) what the bodies were loaded with and the
+     * nodal law of the unknowns @p x of @p interface (the pressures, then
+     * with friction the tangential tractions), its weak gaps taken from
+     * the bodies' displacements @p u: what SelfChecks and the reactions
+     * read. Nothing for a pressure at the points. */
+    void
+    publish_nodal_law(const ContactInterface        &interface,
+                      const PointVector             &x,
+                      const ContactProblem::Iterate &u);
 
     /** Append @p record to the history and call the iteration callback. */
     void

@@ -85,6 +85,12 @@ namespace ddcontact
     SolverCounts
     counts() const override;
 
+    bool
+    inner_solve_converged() const override
+    {
+      return krylov.met_tolerance();
+    }
+
     /** Sets of solves with the bodies' stiffness: the bodies' data, and
      * one per application of S. */
     unsigned int
@@ -204,7 +210,8 @@ namespace ddcontact
               double                         psi_new);
 
     /** The step's line of progress; DivergenceError on a non-finite
-     * residual. */
+     * residual, or where the step's CG stopped at its iteration limit
+     * above its tolerance (no Newton step: a singular system). */
     void
     print_step(const IterationRecord   &record,
                const std::vector<bool> &active,

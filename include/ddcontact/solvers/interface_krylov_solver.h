@@ -71,6 +71,29 @@ namespace ddcontact
           PointVector             &Sx,
           ContactProblem::Iterate &u_x) const;
 
+    /** Whether the last solve() reached its tolerance: a CG stopped at
+     * max_cg_iterations above it is no Newton step (a singular or
+     * indefinite system), a GMRES at max_gmres_directions an inexact one. */
+    bool
+    met_tolerance() const
+    {
+      return last_met_tolerance;
+    }
+
+    /** Whether the last solve() ran GMRES (a coupled slip), not CG. */
+    bool
+    used_gmres() const
+    {
+      return last_used_gmres;
+    }
+
+    /** The M-norm of the last solve()'s final residual. */
+    double
+    final_residual() const
+    {
+      return last_residual;
+    }
+
   private:
     /** GMRES on the coupled system; returns its sets of body solves. */
     unsigned int
@@ -97,6 +120,9 @@ namespace ddcontact
     const ContactInterface &interface;
     RobinPreconditioner    &preconditioner;
     RigidModeCoarseSpace   &coarse;
+    mutable bool            last_met_tolerance = true;
+    mutable double          last_residual      = 0;
+    mutable bool            last_used_gmres    = false;
   };
 } // namespace ddcontact
 
