@@ -39,6 +39,7 @@ IGNORED = {"mpi_processes", "body_owners", "wall_time_s", "timings",
 # solution, so compared to 1e-10 absolutely (a different direct solver's
 # round-off, 1e-16 of |u|, is 1e-10 of a residual of 1e-6).
 # force_imbalance is already divided by the body's largest force.
+# (self_checks: below.)
 RELATIVE_TO_SOLUTION = {"dd_residual", "dd_increment", "force_imbalance"}
 
 
@@ -74,7 +75,10 @@ def compare(a, b, path, scale, failures):
             if key not in a or key not in b:
                 failures.append(f"{path}/{key}: only in one run")
                 continue
-            scale = 1.0 if key in RELATIVE_TO_SOLUTION else inherited
+            # The self-checks' values are relative measures too (their
+            # limits are tied to the Tolerance).
+            scale = 1.0 if key in RELATIVE_TO_SOLUTION or \
+                key == "self_checks" else inherited
             # A body's reactions on the scale of the forces on the body: a
             # component that vanishes (the x reaction of rollers under a
             # vertical load) is round-off of them, 1e-13 of the load.

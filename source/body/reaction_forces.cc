@@ -7,6 +7,7 @@
 #include <ddcontact/body/reaction_forces.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace ddcontact
 {
@@ -215,7 +216,8 @@ namespace ddcontact
 
   template <int dim>
   double
-  ReactionForces<dim>::relative_imbalance(const bool axial_only) const
+  ReactionForces<dim>::relative_imbalance(const bool   axial_only,
+                                          const double floor) const
   {
     const auto size = [axial_only](Tensor<1, dim> f)
     {
@@ -223,10 +225,29 @@ namespace ddcontact
         f[0] = 0;
       return f.norm();
     };
-    double largest = std::max(size(applied), size(contact));
+    double largest = std::max({floor, size(applied), size(contact)});
     for (const auto &support : support_forces)
       largest = std::max(largest, size(support.force));
     return (largest > 0) ? size(imbalance()) / largest : 0.;
+  }
+
+  template <int dim>
+  double
+  ReactionForces<dim>::force_scale(const ElasticBody<dim> &body,
+                                   const BodyVector       &u)
+  {
+    double largest = 0;
+    for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
+      largest = std::max(largest, std::abs(u.local_element(i)));
+    largest     = Utilities::MPI::max(largest, MPI_COMM_WORLD);
+    double ring = 1;
+    if (body.get_geometry() == Geometry::axisymmetric)
+    {
+      Tensor<1, dim> radial;
+      radial[0] = 1;
+      ring      = 2 * M_PI * body.get_mesh().extent_along(radial).second;
+    }
+    return body.get_material().youngs_modulus * largest * ring;
   }
 
   template class ReactionForces<2>;

@@ -129,10 +129,49 @@ namespace ddcontact
                       "the solve broke down; check the units, and that "
                       "every body is held against its rigid motions"});
 
-    // Equilibrium of every body.
+    // Equilibrium of every body. A pressure at the points is the penalty
+    // law's of the displacements, p = max(0, d) / theta: the solvers'
+    // residual on the displacements, Tolerance relative in the Euclidean
+    // norm over the N points, bounds a point's error by sqrt(N) Tolerance
+    // A (A the zone's displacement), and the force by as much / theta
+    // over the zone: relative to the force, sqrt(N) A / (theta p_mean)
+    // times Tolerance (the relaxed DD on the flat punch at theta = 1e-7:
+    // 4.5e-7 at Tolerance 1e-10). The nodal solvers load the bodies with
+    // the pressure they report: no amplification.
+    double amplification = 1;
+    for (unsigned int p = 0; p < states.size(); ++p)
+    {
+      const auto  &pair  = *results.contact_pairs[p];
+      const double theta = pair.penalty();
+      // The mean pressure over the closed part of the zone: the force is
+      // its integral (a peak at a singular edge would understate the
+      // amplification).
+      double area = 0;
+      for (unsigned int q = 0; q < states[p].sigma_n.size(); ++q)
+        if (states[p].sigma_n[q] < 0)
+          area += pair.points()[q].JxW;
+      const double P = (area > 0) ? states[p].normal_force / area : 0.;
+      if (results.contact_solver->solution_of(p).nodal_pressure.empty() &&
+          theta > 0 && P > 0)
+        amplification = std::max(amplification,
+                                 std::sqrt(double(states[p].sigma_n.size())) *
+                                   zone_displacement(states[p]) / (theta * P));
+    }
+    // The relaxed DD's iterate u + gamma (u~ - u) is no solution of the
+    // bodies under any contact load: it trails its last solves by its
+    // change, and its stopping test bounds that change times 1 / gamma
+    // (the uniaxial blocks without contact: 4.9e-8 at Tolerance 1e-8 and
+    // gamma 0.02).
+    if (results.contact_solver != nullptr &&
+        !results.contact_solver->history().empty())
+    {
+      const double gamma = results.contact_solver->history().back().gamma;
+      if (gamma > 0 && gamma < 1)
+        amplification /= gamma;
+    }
     SelfCheck equilibrium{"equilibrium",
                           0.,
-                          limit,
+                          limit * amplification,
                           "",
                           "the bodies do not balance the forces they "
                           "exchange; " +
@@ -141,7 +180,9 @@ namespace ddcontact
     {
       const double imbalance =
         RunReport::reactions_of(results, states, *body)
-          .relative_imbalance(body->get_geometry() == Geometry::axisymmetric);
+          .relative_imbalance(
+            body->get_geometry() == Geometry::axisymmetric,
+            1e-6 * ReactionForces<2>::force_scale(*body, body->get_solution()));
       if (!(imbalance <= equilibrium.value))
       {
         equilibrium.value = imbalance;
@@ -302,7 +343,9 @@ namespace ddcontact
       j["value"]  = std::isfinite(c.value) ? Json(c.value) : Json("nan");
       j["limit"]  = c.limit;
       j["passed"] = c.passed();
-      if (!c.where.empty())
+      // Where a passing check is worst is round-off's choice (it differs
+      // with the number of processes): named only where it fails.
+      if (!c.passed() && !c.where.empty())
         j["where"] = c.where;
       list.push_back(j);
     }

@@ -461,8 +461,12 @@ namespace ddcontact
   {
     if (!interface.on_nodes())
       return;
-    const auto loads     = interface.normal_stresses(x);
-    const auto tractions = interface.has_friction()
+    // The monolithic solver keeps its tangential unknowns itself, after
+    // the pressures, with the same test functions.
+    const unsigned int n     = interface.size();
+    const auto         loads = interface.normal_stresses(
+      PointVector(x.begin(), x.begin() + std::min<std::size_t>(n, x.size())));
+    const auto tractions = (x.size() == 2 * n)
                              ? interface.tangential_tractions(x)
                              : std::vector<std::vector<double>>();
     // The weak gaps of the bodies' own displacements, not the solver's
@@ -478,7 +482,7 @@ namespace ddcontact
       solution.nodal_gap.clear();
       solution.nodal_penalty.clear();
     }
-    for (unsigned int i = 0; i < interface.size(); ++i)
+    for (unsigned int i = 0; i < n; ++i)
     {
       auto &solution = published[interface.shares(i)[0].pair];
       solution.nodal_pressure.push_back(x[i]);

@@ -396,10 +396,15 @@ namespace ddcontact
     // Inexact Newton: 0.1 of the residual while the active set moves, the
     // final tolerance (with a margin) once it has settled.
     const double final_tolerance = 0.5 * stopping_tolerance(p);
+    // Not below the round-off of the data: with every node open at p = 0
+    // the residual and its scale vanish, and a floating body's coarse
+    // correction leaves the CG a residual of round-off to reduce to 0 (a
+    // pin in a bore, issue 59).
     const double tolerance =
-      (n_changed == 0 && interface.get_continuation() == 0)
-        ? final_tolerance
-        : std::max(final_tolerance, 0.1 * psi);
+      std::max((n_changed == 0 && interface.get_continuation() == 0)
+                 ? final_tolerance
+                 : std::max(final_tolerance, 0.1 * psi),
+               1e-14 * interface.norm(d_0));
     const unsigned int factorizations = preconditioner.factorizations();
     const unsigned int cg             = krylov.solve(
       {active, d_0, slip_coupling, continuation.penalty_dominates()},

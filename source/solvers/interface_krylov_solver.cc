@@ -142,12 +142,27 @@ namespace ddcontact
     double                  rho = interface.inner(r, z);
     ContactProblem::Iterate u_s;
     unsigned int            iterations = 0;
+    bool                    exhausted  = false;
     while (iterations < max_cg_iterations)
     {
+      // rho = (r, z) = 0: the preconditioned, projected residual vanishes,
+      // nothing is left to solve on the active set (a floating body held
+      // by as many active nodes as it has free modes: the coarse
+      // correction alone solves it, and r is round-off). Going on would
+      // divide 0 by 0 (a pin in a bore, issue 59).
+      if (rho == 0)
+      {
+        exhausted = true;
+        break;
+      }
       interface.apply(s, u_s, Ss);
       ++iterations;
-      const PointVector Ms    = operator_on_active(active, s, Ss);
-      const double      alpha = rho / interface.inner(s, Ms);
+      const PointVector Ms        = operator_on_active(active, s, Ss);
+      const double      curvature = interface.inner(s, Ms);
+      // A singular or indefinite system: no step along s.
+      if (!(curvature > 0))
+        break;
+      const double alpha = rho / curvature;
       add(x, alpha, s);
       add(Sx, alpha, Ss);
       add(u_x, alpha, u_s);
@@ -165,7 +180,7 @@ namespace ddcontact
         s[q] = z[q] + (rho_new / rho) * s[q];
       rho = rho_new;
     }
-    last_met_tolerance = last_residual <= tolerance;
+    last_met_tolerance = exhausted || last_residual <= tolerance;
     return iterations;
   }
 

@@ -86,12 +86,21 @@ namespace ddcontact
     Tensor<1, dim>
     imbalance() const;
 
-    /** |imbalance()| against the largest of the forces (0 without any):
-     * summary.json's force_imbalance. With @p axial_only (an
-     * axisymmetric body, whose radial forces its hoop stresses hold) the
-     * axial components alone. */
+    /** |imbalance()| against the largest of the forces, or @p floor if
+     * that is larger (0 without either): summary.json's force_imbalance.
+     * With @p axial_only (an axisymmetric body, whose radial forces its
+     * hoop stresses hold) the axial components alone. */
     double
-    relative_imbalance(bool axial_only) const;
+    relative_imbalance(bool axial_only, double floor = 0) const;
+
+    /** E max|u| (times 2 pi r_max in axisymmetry): the force that
+     * displacements of the size of @p u cause in @p body, per unit
+     * thickness. Against a millionth of it (the floor of
+     * relative_imbalance() in the report and SelfChecks) the round-off of
+     * the reactions of a body that carries no force is round-off, not a
+     * relative error of 1. Collective over a partitioned mesh. */
+    static double
+    force_scale(const ElasticBody<dim> &body, const BodyVector &u);
 
   private:
     std::vector<Support> support_forces;

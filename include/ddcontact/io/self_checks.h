@@ -35,8 +35,15 @@ namespace ddcontact
    *   finite numbers (the count of those that are not; limit 0);
    * - `equilibrium`: every body balances its reactions, loads and contact
    *   tractions (force_imbalance: the largest of |sum| / the largest
-   *   force; axial only in axisymmetry), the reactions taken from the
-   *   tractions the bodies were loaded with (PairSolution::load_sigma_n);
+   *   force, or a millionth of E max|u| (ReactionForces::force_scale());
+   *   axial only in axisymmetry), the reactions taken from the tractions
+   *   the bodies were loaded with (PairSolution::load_sigma_n). A
+   *   pressure at the points, p = max(0, d) / theta of the displacements,
+   *   carries the solvers' residual into the forces amplified by
+   *   sqrt(N) A / (theta p_mean) (N points, A the zone's displacement,
+   *   p_mean the force over the closed area), and the relaxed DD's
+   *   iterate trails its last body solves by 1 / gamma: the
+   *   limit is that much larger there;
    * - on the nodal multipliers (PairSolution::nodal_pressure) the law (20)
    *   node by node, against the bodies' own weak gaps d_i:
    *   `contact_sign` max (-p_i)+ / max |p|, `contact_gap` max (d_i -
