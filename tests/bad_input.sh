@@ -323,6 +323,9 @@ fi
 case_ "Dirichlet value infinite at t = 0.5 only" "Body lower/Boundary conditions/Dirichlet: the displacement on boundary id 2 is not finite at t = 0.5 (load step 1 of 2)" "$base" --set "Loading/Steps=2" --set "Body lower/Boundary conditions/Dirichlet=2: xy: 0; 1/(t-0.5)"
 case_ "Dirichlet value infinite at one point and time" "is not finite at t = 0.25 (load step 1 of 4) at (x, y) = (-1, 0)" "$base" --set "Loading/Steps=4" --set "Body lower/Boundary conditions/Dirichlet=2: xy: 0; 1/(x-4*t+2)"
 case_ "load parameter in the gap" "Contact pair S/Gap" "$friction" --set "Contact pair S/Gap=t"
+# Symmetry holds u_r = 0 on the axis: a radial displacement prescribed there
+# was replaced silently and its reaction printed (issue 59).
+case_ "u_r prescribed on the axis" "Body shaft/Boundary conditions/Dirichlet: boundary id 0 prescribes u_r = 0.001" "$src/prm/shrink_fit.prm" --set "Body shaft/Boundary conditions/Dirichlet=0: x: 0.001; 0 | 3: y: 0; 0"
 
 total=$(( $(grep -c -E '^(expect_code=[0-9]+ )?(mpi_|file_)?case_ ' "$0") + 4 ))  # and four checks of outputs
 total=$((total - skipped))

@@ -5,11 +5,13 @@
 // whose displacements were spoiled; clamped blocks whose supports carry
 // the contact force to round-off under both multiplier bases, with the
 // same displacements; a push-out whose contact zone ends at nodes held on
-// both sides, which stops with the CG's error instead of "converged"; a
+// both sides, T = mu N from every solver (the prescribed slip); a Newton
+// step that cannot be solved, which stops instead of "converged"; a
 // floating pin in a bore with a clearance, whose plate carries its weight;
 // the Interference in the gap reports and a clearance that touches
-// nowhere; and the warning of a finer multiplier side against the
-// pressure's oscillation it announces
+// nowhere; the warning of a finer multiplier side against the pressure's
+// oscillation it announces; and a section touching the axis at a point,
+// which stays on it
 #include <ddcontact/io/self_checks.h>
 
 #include "scene_tools.h"
@@ -205,27 +207,100 @@ namespace
     check(checks_of(*dual, 1e-10).passed(), "restored: every check passes");
   }
 
-  /** A shaft pushed out of a hub with Coulomb friction, both ends of the
-   * shaft held axially: the zone's end nodes have their slip prescribed
-   * on both sides, and the first Newton step's stick system is singular.
-   * It wrote "converged" with a force of 9.7e19. */
+  /** A shaft pushed out of a hub with Coulomb friction mu = 0.15, both
+   * ends of the shaft held axially (prm/shrink_fit.prm): the zone's end
+   * nodes have their slip prescribed by both bodies' conditions, where a
+   * stick condition made the first Newton step's system singular (it
+   * wrote "converged" with a force of 9.7e19). The law takes the
+   * prescribed slip: every node slips, T = mu N, and the shaft's supports
+   * push with the tangential force, from dd-newton under both bases and
+   * from the monolithic solver; the hub pushed instead (mu = 0.3) in 4
+   * load steps ended in UMFPACK's failure. */
   void
   check_held_push_out(const std::string &source_dir)
   {
     std::cout << "Push-out with both ends held:" << std::endl;
+    const std::string              scene   = source_dir + "/prm/shrink_fit.prm";
+    const std::vector<std::string> coulomb = {
+      "Contact pair fit/Friction=coulomb",
+      "Contact pair fit/Friction coefficient=0.15",
+      "Body shaft/Boundary conditions/Dirichlet=3: y: 0; -0.002*t | 2: y: 0; "
+      "-0.002*t"};
+    std::vector<double> normal_forces;
+    for (const std::string solver :
+         {"dd-newton, dual", "dd-newton, standard", "monolithic"})
+    {
+      auto overrides = coulomb;
+      overrides.push_back("Output directory=self_checks_push_out");
+      if (solver == "monolithic")
+        overrides.push_back("Contact solver/Solver=monolithic");
+      if (solver == "dd-newton, standard")
+        overrides.push_back("Contact solver/Multiplier basis=standard");
+      const auto   s       = run_scene(scene, overrides, {});
+      const auto  &contact = s->summary().at("contact")[0];
+      const double N       = contact.at("normal_force").get<double>();
+      const double T = std::abs(contact.at("tangential_force").get<double>());
+      double       push = 0;
+      for (const auto &b : s->summary().at("bodies"))
+        if (b.at("name") == "shaft")
+          for (const auto &r : b.at("reactions"))
+            push += r.at("force")[1].get<double>();
+      std::cout << "  " << solver << ": N = " << N << ", T = " << T
+                << std::endl;
+      check(solver + ": T = mu N (every node slips)",
+            std::abs(T - 0.15 * N) / N,
+            1e-8);
+      check(solver + ": the shaft's supports push with T",
+            std::abs(std::abs(push) - T) / T,
+            1e-8);
+      normal_forces.push_back(N);
+    }
+    // The bases and solvers solve one discrete law (matching meshes): the
+    // same N to the Tolerance (1e-10).
+    check("dd-newton's bases and the monolithic solver: the same N",
+          std::max(std::abs(normal_forces[1] - normal_forces[0]),
+                   std::abs(normal_forces[2] - normal_forces[0])) /
+            normal_forces[0],
+          1e-8);
+
+    const auto hub = run_scene(
+      scene,
+      {"Output directory=self_checks_push_hub",
+       "Contact solver/Solver=monolithic",
+       "Loading/Steps=4",
+       "Contact pair fit/Friction=coulomb",
+       "Contact pair fit/Friction coefficient=0.3",
+       "Body hub/Boundary conditions/Dirichlet=2: y: 0; 0.002*t | 3: y: 0; "
+       "0.002*t"},
+      {});
+    const auto &contact = hub->summary().at("contact")[0];
+    check("hub pushed, monolithic, 4 steps: T = 0.3 N",
+          std::abs(std::abs(contact.at("tangential_force").get<double>()) -
+                   0.3 * contact.at("normal_force").get<double>()) /
+            contact.at("normal_force").get<double>(),
+          1e-8);
+  }
+
+  /** Both blocks' ends held in the normal direction with a penetration
+   * prescribed there (the upper block's sides moved down with its top):
+   * exact contact cannot hold at those nodes, the first Newton step's
+   * system is singular, and its CG stops above its tolerance. The run
+   * says so instead of going on (inner_solves). */
+  void
+  check_singular_step(const std::string &source_dir)
+  {
+    std::cout << "A Newton step that cannot be solved:" << std::endl;
     const std::string message = error_message<DivergenceError>(
       [&]()
       {
-        run_scene(source_dir + "/prm/shrink_fit.prm",
-                  {"Output directory=self_checks_push_out",
-                   "Contact pair fit/Friction=coulomb",
-                   "Contact pair fit/Friction coefficient=0.15",
-                   "Body shaft/Boundary conditions/Dirichlet=3: y: 0; "
-                   "-0.002*t | 2: y: 0; -0.002*t"},
+        run_scene(source_dir + "/tests/scenes/clamped_blocks.prm",
+                  {"Output directory=self_checks_singular",
+                   "Body upper/Boundary conditions/Dirichlet=3: xy: 0; "
+                   "-Delta | 0: xy: 0; -Delta | 1: xy: 0; -Delta"},
                   {});
       });
     check(message_names(message, {"CG", "Newton step 1", "held on both"}),
-          "stops at the CG's limit, naming the cause: " + message);
+          "stops at the CG, naming the cause: " + message);
   }
 
   /** A pin held only in x in a bore with a clearance of 0.02, loaded by
@@ -340,6 +415,23 @@ namespace
     check(rough > 0.01 && warns_of_finer_side(*fine),
           "2 faces per cell: oscillates (> 1 %), and the run warns");
   }
+
+  /** A section that touches the axis at one vertex: that point stays on
+   * the axis (u_r = 0 exactly, a constrained dof), where only whole faces
+   * on the axis were constrained before (u_r was 1.4e-9 against |u| =
+   * 4.5e-4 on this mesh). */
+  void
+  check_axis_point(const std::string &source_dir)
+  {
+    std::cout << "A body touching the axis at a point:" << std::endl;
+    const auto  s     = run_scene(source_dir + "/tests/scenes/horn_torus.prm",
+                             {"Output directory=self_checks_torus"},
+                             {});
+    const auto &point = s->summary().at("points")[0];
+    check(point.at("u")[0].get<double>() == 0. &&
+            point.at("u")[1].get<double>() != 0.,
+          "u_r = 0 at the axis point (u_z = " + point.at("u")[1].dump() + ")");
+  }
 } // namespace
 
 int
@@ -350,8 +442,10 @@ main(int argc, char **argv)
   check_nodal_law();
   check_clamped_blocks(source_dir);
   check_held_push_out(source_dir);
+  check_singular_step(source_dir);
   check_floating_pin(source_dir);
   check_interference(source_dir);
   check_multiplier_side(source_dir);
+  check_axis_point(source_dir);
   return report();
 }

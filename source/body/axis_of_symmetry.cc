@@ -4,6 +4,7 @@
 #include <ddcontact/parameter_tools.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace ddcontact
@@ -50,17 +51,28 @@ namespace ddcontact
     const double tol = tolerance(dof_handler.get_triangulation());
     const auto  &fe  = dof_handler.get_fe();
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_face());
+    // The face's vertex dofs come first, n_dofs_per_vertex() per vertex.
+    const unsigned int per_vertex = fe.n_dofs_per_vertex();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
         for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && on_axis(face, tol))
+          if (face->at_boundary())
           {
+            // A whole face on the axis, or one vertex of a face that only
+            // touches it (a body meeting the axis at a point: issue 59,
+            // u_r there was 3 % of the largest displacement).
+            const bool whole = on_axis(face, tol);
             face->get_dof_indices(dofs);
             for (unsigned int k = 0; k < dofs.size(); ++k)
-              if (fe.face_system_to_component_index(k).first == 0 &&
+            {
+              const bool on =
+                whole || (k < 2 * per_vertex &&
+                          std::abs(face->vertex(k / per_vertex)[0]) <= tol);
+              if (on && fe.face_system_to_component_index(k).first == 0 &&
                   constraints.can_store_line(dofs[k]) &&
                   !constraints.is_constrained(dofs[k]))
                 constraints.add_line(dofs[k]);
+            }
           }
   }
 } // namespace ddcontact

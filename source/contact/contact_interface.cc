@@ -1,9 +1,14 @@
+#include <deal.II/base/mpi.h>
+
+#include <ddcontact/body/axis_of_symmetry.h>
 #include <ddcontact/contact/contact_interface.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <utility>
 
 namespace ddcontact
 {
@@ -63,6 +68,77 @@ namespace ddcontact
         }
       return basis;
     }
+
+    /** A boundary vertex of a body with the displacement components that
+     * its Dirichlet conditions (or, in axisymmetry, the axis: u_r) hold. */
+    struct HeldVertex
+    {
+      Point<2>            x;
+      std::array<bool, 2> held;
+    };
+
+    /** The held vertices of the boundary faces of @p body's cells on this
+     * process. */
+    std::vector<HeldVertex>
+    held_vertices(const ElasticBody<2> &body)
+    {
+      std::vector<HeldVertex> held;
+      const auto  &dirichlet    = body.get_boundary_conditions().dirichlet;
+      const bool   axisymmetric = body.get_geometry() == Geometry::axisymmetric;
+      const double on_axis =
+        AxisOfSymmetry::tolerance(body.get_dof_handler().get_triangulation());
+      for (const auto &cell : body.get_dof_handler().active_cell_iterators())
+        if (!cell->is_artificial())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+            {
+              const auto it = dirichlet.find(face->boundary_id());
+              for (unsigned int v = 0; v < face->n_vertices(); ++v)
+              {
+                HeldVertex h{face->vertex(v), {{false, false}}};
+                for (unsigned int c = 0; c < 2; ++c)
+                  h.held[c] = it != dirichlet.end() && it->second.mask[c];
+                if (axisymmetric && std::abs(h.x[0]) <= on_axis)
+                  h.held[0] = true;
+                if (h.held[0] || h.held[1])
+                  held.push_back(h);
+              }
+            }
+      return held;
+    }
+
+    /** Whether the components that @p held holds fix the displacement
+     * along @p direction. */
+    bool
+    holds(const std::array<bool, 2> &held, const Tensor<1, 2> &direction)
+    {
+      for (unsigned int c = 0; c < 2; ++c)
+        if (std::abs(direction[c]) > 1e-8 && !held[c])
+          return false;
+      return true;
+    }
+
+    /** Whether some held vertex of @p vertices lies on the line through
+     * @p x along @p normal, within @p distance of @p x along it, and holds
+     * @p direction; @p tolerance is the round-off of a position. */
+    bool
+    held_on_normal(const std::vector<HeldVertex> &vertices,
+                   const Point<2>                &x,
+                   const Tensor<1, 2>            &normal,
+                   const Tensor<1, 2>            &direction,
+                   const double                   distance,
+                   const double                   tolerance)
+    {
+      for (const auto &v : vertices)
+      {
+        const Tensor<1, 2> d     = v.x - x;
+        const double       along = d * normal;
+        if ((d - along * normal).norm() <= tolerance &&
+            std::abs(along) <= distance + tolerance && holds(v.held, direction))
+          return true;
+      }
+      return false;
+    }
   } // namespace
 
   ContactInterface::ContactInterface(const ContactProblem &problem,
@@ -107,7 +183,9 @@ namespace ddcontact
       const double theta = exact ? 0. : pairs[k]->penalty();
       const double c     = surface_compliance(pairs[k]->get_body_1()) +
                        surface_compliance(pairs[k]->get_body_2());
-      const double reference = reference_of_pair(k);
+      const double            reference = reference_of_pair(k);
+      const std::vector<bool> prescribed =
+        prescribed_slips(k, first, point_shares.size());
       for (unsigned int i = first; i < point_shares.size(); ++i)
       {
         double m = 0;
@@ -125,9 +203,61 @@ namespace ddcontact
         thetas.push_back(theta);
         scales.push_back(m * c);
         references.push_back(reference);
-        nodal_law.add_node(pairs[k]->friction_law(), bound);
+        nodal_law.add_node(
+          pairs[k]->friction_law(), bound, prescribed[i - first]);
       }
     }
+  }
+
+  std::vector<bool>
+  ContactInterface::prescribed_slips(const unsigned int k,
+                                     const unsigned int first,
+                                     const unsigned int last) const
+  {
+    const auto         &pair = *problem.get_pairs()[k];
+    std::vector<double> held(last - first, 0.);
+    if (!(nodal && pair.has_friction()))
+      return std::vector<bool>(held.size(), false);
+    {
+      const auto   held_1 = held_vertices(pair.get_body_1());
+      const auto   held_2 = held_vertices(pair.get_body_2());
+      const double tol_1  = AxisOfSymmetry::tolerance(
+        pair.get_body_1().get_dof_handler().get_triangulation());
+      const double tol_2 = AxisOfSymmetry::tolerance(
+        pair.get_body_2().get_dof_handler().get_triangulation());
+      for (unsigned int i = first; i < last; ++i)
+      {
+        // The node's normal: its faces' normals weighed by psi_i.
+        Tensor<1, 2> normal;
+        for (const auto &share : point_shares[i])
+          normal += share.psi * pair.points()[share.point].normal;
+        if (normal.norm() == 0)
+          continue;
+        normal /= normal.norm();
+        const Tensor<1, 2> tau({-normal[1], normal[0]});
+        held[i - first] =
+          (held_on_normal(held_1, points[i], normal, tau, 0., tol_1) &&
+           held_on_normal(held_2,
+                          points[i],
+                          normal,
+                          tau,
+                          pair.search_report().search_distance,
+                          tol_2))
+            ? 1.
+            : 0.;
+      }
+    }
+    // A process holds the held vertices of its own cells only: the
+    // nodes' flags are the same on every process (each runs the law).
+    std::vector<double> on_any(held.size());
+    Utilities::MPI::max(make_array_view(std::as_const(held)),
+                        MPI_COMM_WORLD,
+                        make_array_view(on_any));
+    held = on_any;
+    std::vector<bool> prescribed(held.size());
+    for (unsigned int i = 0; i < held.size(); ++i)
+      prescribed[i] = held[i] > 0;
+    return prescribed;
   }
 
   double

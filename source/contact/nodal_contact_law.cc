@@ -10,13 +10,26 @@ namespace ddcontact
   {
     laws.clear();
     coefficients.clear();
+    prescribed.clear();
   }
 
   void
-  NodalContactLaw::add_node(const FrictionLaw law, const double coefficient)
+  NodalContactLaw::add_node(const FrictionLaw law,
+                            const double      coefficient,
+                            const bool        prescribed_slip)
   {
     laws.push_back(law);
     coefficients.push_back(coefficient);
+    prescribed.push_back(prescribed_slip);
+  }
+
+  NodeStatus
+  NodalContactLaw::prescribed_slip_status(const unsigned int i,
+                                          const Trial       &x) const
+  {
+    if (std::abs(x.r) <= 1e-10 * x.c_t * bound(i, x))
+      return {NodeState::slip, 0};
+    return {NodeState::slip, x.r > 0 ? 1 : -1};
   }
 
   double
@@ -50,6 +63,8 @@ namespace ddcontact
       return {NodeState::open, 0};
     if (!frictional(i))
       return {NodeState::slip, 0};
+    if (prescribed[i])
+      return prescribed_slip_status(i, x);
     const double trial = trial_traction(x);
     if (std::abs(trial) <= bound(i, x))
       return {NodeState::stick, 0};
@@ -65,6 +80,8 @@ namespace ddcontact
       return {NodeState::open, 0};
     if (!frictional(i))
       return {NodeState::slip, 0};
+    if (prescribed[i])
+      return prescribed_slip_status(i, x);
     if (direction == 0)
       return {NodeState::stick, 0};
     return {NodeState::slip, direction > 0 ? 1 : -1};

@@ -24,8 +24,10 @@ namespace ddcontact
    * (a point of the axis stays on it), and the hoop strain u_r / r stays
    * finite only so; the energy space of the weak form holds no other field.
    * constrain_axis() therefore sets u_r = 0 at every dof of a boundary face
-   * on the axis. The user writes no condition there; a Dirichlet condition
-   * on u_z of the axis (or anything on u_r) is an ordinary condition.
+   * on the axis, and at a vertex where a body only touches the axis. The
+   * user writes no condition there; a Dirichlet condition on u_z of the
+   * axis is an ordinary condition, and one that prescribes u_r != 0 there
+   * is refused (check_dirichlet_values()).
    */
   class AxisOfSymmetry
   {
@@ -36,7 +38,8 @@ namespace ddcontact
     check_meridian_section(const Triangulation<2> &triangulation,
                            const std::string      &body_name);
 
-    /** u_r = 0 at the dofs of the boundary faces on r = 0 that
+    /** u_r = 0 at the dofs of the boundary faces on r = 0, and at the
+     * boundary vertices on r = 0 of other faces, that
      * @p constraints does not constrain already and can store. Call before
      * constraints.close(). */
     static void

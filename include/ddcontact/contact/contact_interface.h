@@ -340,6 +340,16 @@ namespace ddcontact
     PointVector
     average(const std::vector<std::vector<double>> &values) const;
 
+    /** Per node [@p first, @p last) of pair @p k (with friction on the
+     * nodes): whether the Dirichlet conditions of both bodies fix its
+     * tangential motion, at the node on body 1 and at a held vertex of
+     * body 2 on its normal (NodalContactLaw::slip_prescribed()). The same
+     * on every process (collective). */
+    std::vector<bool>
+    prescribed_slips(unsigned int k,
+                     unsigned int first,
+                     unsigned int last) const;
+
     /** theta_ref of pair @p k. */
     double
     reference_of_pair(unsigned int k) const;

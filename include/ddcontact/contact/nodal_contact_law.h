@@ -90,9 +90,23 @@ namespace ddcontact
     clear();
 
     /** Appends a node of a pair with law @p law and bound coefficient
-     * @p coefficient (g_i or mu_i). */
+     * @p coefficient (g_i or mu_i); @p prescribed_slip where the Dirichlet
+     * conditions of both bodies fix the node's tangential motion. */
     void
-    add_node(FrictionLaw law, double coefficient);
+    add_node(FrictionLaw law, double coefficient, bool prescribed_slip = false);
+
+    /** Whether both bodies' Dirichlet conditions fix node @p i's slip
+     * (a contact zone ending at nodes held on both sides): its slip is
+     * data, r of its trial, and its traction follows from the law alone.
+     * A closed node slips at its bound along r (t = 0 where r = 0),
+     * never sticks: a stick condition there asks for the slip the
+     * conditions forbid, and its row of the Newton system is singular
+     * (issue 59: a push-out written "converged" with a force of 9.7e19). */
+    bool
+    slip_prescribed(const unsigned int i) const
+    {
+      return prescribed[i];
+    }
 
     /** Whether node @p i has a frictional law. */
     bool
@@ -158,8 +172,15 @@ namespace ddcontact
                   bool              linearise_coulomb) const;
 
   private:
+    /** The state of a closed frictional node whose slip is prescribed
+     * (slip_prescribed()): slip along r, or with t = 0 where r vanishes
+     * against the elastic slip c_t b of the bound. */
+    NodeStatus
+    prescribed_slip_status(unsigned int i, const Trial &x) const;
+
     std::vector<FrictionLaw> laws;         // per node
     std::vector<double>      coefficients; // g_i or mu_i per node
+    std::vector<bool>        prescribed;   // slip_prescribed() per node
   };
 
   /** The explanation appended to a message on an active set that cycles
