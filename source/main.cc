@@ -167,7 +167,11 @@ main(int argc, char **argv)
       return 0;
     }
 
-    const auto &scene = reader.scene();
+    // --output DIR as written: the parameter reader trims an entry's
+    // spaces, and 'RES ' went into RES, replacing the results there.
+    SceneParameters scene = reader.scene();
+    if (command_line.output_given)
+      scene.output_directory = command_line.output_directory;
     if (scene.n_threads > 0)
       MultithreadInfo::set_thread_limit(scene.n_threads);
     std::error_code error;

@@ -185,14 +185,6 @@ namespace
     return all;
   }
 
-  double
-  largest_imbalance(const Simulation &s)
-  {
-    double largest = 0;
-    for (const auto &b : s.summary().at("bodies"))
-      largest = std::max(largest, b.at("force_imbalance").get<double>());
-    return largest;
-  }
 } // namespace
 
 int

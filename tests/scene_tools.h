@@ -9,6 +9,7 @@
 
 #include "test_tools.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -97,6 +98,16 @@ namespace ddcontact
     {
       const double Delta = 1.366e-3, E = 2.1e5, nu = 0.3, H = 1;
       return Delta / ((1 - nu * nu) * (H / E + H / E) + c * H / E);
+    }
+
+    /** The largest force_imbalance of the bodies in @p s's summary. */
+    inline double
+    largest_imbalance(const Simulation &s)
+    {
+      double largest = 0;
+      for (const auto &b : s.summary().at("bodies"))
+        largest = std::max(largest, b.at("force_imbalance").get<double>());
+      return largest;
     }
 
     /** ||u_a - u_b|| / ||u_b|| over all bodies of two runs of one scene. */

@@ -137,15 +137,6 @@ namespace
     return SelfChecks(results, tolerance);
   }
 
-  double
-  largest_imbalance(const Simulation &s)
-  {
-    double largest = 0;
-    for (const auto &b : s.summary().at("bodies"))
-      largest = std::max(largest, b.at("force_imbalance").get<double>());
-    return largest;
-  }
-
   /** The clamped blocks under both bases; then the finite and equilibrium
    * checks fed the dual run with spoiled displacements. */
   void
