@@ -350,6 +350,19 @@ namespace
       told = told || message_names(w.get<std::string>(),
                                    {"no point is in contact", "clearance"});
     check(told, "a negative Interference: no contact, and why");
+    // A hub meshed 0.02 into the shaft under the expression gap 0 and the
+    // Interference: the meshes' overlap is said, not ignored.
+    const auto overlap = run_scene(scene,
+                                   {"Output directory=self_checks_overlap",
+                                    "Output/Points=",
+                                    "Body hub/Mesh/Corner 1=0.98, 0"},
+                                   {});
+    told               = false;
+    for (const auto &w : overlap->summary().at("warnings"))
+      told =
+        told || message_names(w.get<std::string>(),
+                              {"the meshes overlap by 0.02", "leaves out"});
+    check(told, "meshes overlapping under an expression gap: said");
   }
 
   /** The largest deviation of the pressure from its local mean (five

@@ -70,7 +70,10 @@ namespace ddcontact
     }
 
     /** A boundary vertex of a body with the displacement components that
-     * its Dirichlet conditions (or, in axisymmetry, the axis: u_r) hold. */
+     * its Dirichlet conditions hold. (Not the axis of an axisymmetric
+     * body: a node on it has u_r = 0 on both sides, its slip is 0 by
+     * symmetry, and its stick row, with a zero operator and zero data,
+     * keeps t = 0; prescribing it made Spence's sphere cycle.) */
     struct HeldVertex
     {
       Point<2>            x;
@@ -83,10 +86,7 @@ namespace ddcontact
     held_vertices(const ElasticBody<2> &body)
     {
       std::vector<HeldVertex> held;
-      const auto  &dirichlet    = body.get_boundary_conditions().dirichlet;
-      const bool   axisymmetric = body.get_geometry() == Geometry::axisymmetric;
-      const double on_axis =
-        AxisOfSymmetry::tolerance(body.get_dof_handler().get_triangulation());
+      const auto &dirichlet = body.get_boundary_conditions().dirichlet;
       for (const auto &cell : body.get_dof_handler().active_cell_iterators())
         if (!cell->is_artificial())
           for (const auto &face : cell->face_iterators())
@@ -98,8 +98,6 @@ namespace ddcontact
                 HeldVertex h{face->vertex(v), {{false, false}}};
                 for (unsigned int c = 0; c < 2; ++c)
                   h.held[c] = it != dirichlet.end() && it->second.mask[c];
-                if (axisymmetric && std::abs(h.x[0]) <= on_axis)
-                  h.held[0] = true;
                 if (h.held[0] || h.held[1])
                   held.push_back(h);
               }

@@ -110,6 +110,18 @@ namespace ddcontact
       warnings.push_back(s.str());
       s.str("");
     }
+    if (report.hidden_overlap > 0)
+    {
+      s << pair << "the meshes overlap by " << report.hidden_overlap
+        << " at x = " << point_coordinates(report.hidden_overlap_at)
+        << ", which the Gap expression '" << parameters.gap_expression << "' ("
+        << report.hidden_expression
+        << " there) leaves out: the bodies start inside each other by more "
+           "than the gap says; use Gap type = geometric, or place the meshes "
+           "where the Gap puts them";
+      warnings.push_back(s.str());
+      s.str("");
+    }
     // A law whose bound vanishes on the whole zone is frictionless: said,
     // not solved silently (a sweep over mu may mean it).
     if (has_friction() &&

@@ -40,6 +40,14 @@ namespace ddcontact
     // on flat meshes (the paper's scene) and no contradiction.
     const double excess    = geometric - gap;
     const double tolerance = 0.05 * std::abs(geometric) + 0.01 * length;
+    // The meshes overlap, and the expression does not say so.
+    if (geometric < -ContactSearchReport::overlap_per_face * length &&
+        -excess > tolerance && -geometric > hidden_overlap)
+    {
+      hidden_overlap    = -geometric;
+      hidden_expression = gap;
+      hidden_overlap_at = x;
+    }
     if (excess > tolerance && excess > worst_excess)
     {
       worst_excess        = excess;

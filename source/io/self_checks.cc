@@ -136,13 +136,20 @@ namespace ddcontact
     // A (A the zone's displacement), and the force by as much / theta
     // over the zone: relative to the force, sqrt(N) A / (theta p_mean)
     // times Tolerance (the relaxed DD on the flat punch at theta = 1e-7:
-    // 4.5e-7 at Tolerance 1e-10). The nodal solvers load the bodies with
-    // the pressure they report: no amplification.
+    // 4.5e-7 at Tolerance 1e-10). On the nodes the penalty amplifies the
+    // round-off of the solve the same way (the monolithic solver at
+    // theta = 1e-8 on the paper's scene: 1.1e-8); exact contact loads the
+    // bodies with the pressure it reports: no amplification.
     double amplification = 1;
     for (unsigned int p = 0; p < states.size(); ++p)
     {
-      const auto  &pair  = *results.contact_pairs[p];
-      const double theta = pair.penalty();
+      const auto &pair     = *results.contact_pairs[p];
+      const auto &solution = results.contact_solver->solution_of(p);
+      // The theta in use: the nodes' (0 for exact contact), or the pair's
+      // at the points.
+      double theta = solution.nodal_pressure.empty() ? pair.penalty() : 0.;
+      for (const double t : solution.nodal_penalty)
+        theta = std::max(theta, t);
       // The mean pressure over the closed part of the zone: the force is
       // its integral (a peak at a singular edge would understate the
       // amplification).
@@ -151,8 +158,7 @@ namespace ddcontact
         if (states[p].sigma_n[q] < 0)
           area += pair.points()[q].JxW;
       const double P = (area > 0) ? states[p].normal_force / area : 0.;
-      if (results.contact_solver->solution_of(p).nodal_pressure.empty() &&
-          theta > 0 && P > 0)
+      if (theta > 0 && P > 0)
         amplification = std::max(amplification,
                                  std::sqrt(double(states[p].sigma_n.size())) *
                                    zone_displacement(states[p]) / (theta * P));
@@ -169,9 +175,13 @@ namespace ddcontact
       if (gamma > 0 && gamma < 1)
         amplification /= gamma;
     }
+    // Not below 1e-6: the sums of many damped Newton and Krylov updates
+    // leave round-off in the balance that the Tolerance does not bound
+    // (a slender plate after 150 damped Newton steps: 1.1e-8 at
+    // Tolerance 1e-10). A broken answer is far above it (2e-2, 1e19).
     SelfCheck equilibrium{"equilibrium",
                           0.,
-                          limit * amplification,
+                          std::max(limit * amplification, 1e-6),
                           "",
                           "the bodies do not balance the forces they "
                           "exchange; " +
@@ -340,7 +350,7 @@ namespace ddcontact
     {
       Json j;
       j["name"]   = c.name;
-      j["value"]  = std::isfinite(c.value) ? Json(c.value) : Json("nan");
+      j["value"]  = std::isfinite(c.value) ? Json(c.value) : Json(); // null
       j["limit"]  = c.limit;
       j["passed"] = c.passed();
       // Where a passing check is worst is round-off's choice (it differs

@@ -396,15 +396,20 @@ namespace ddcontact
     // Inexact Newton: 0.1 of the residual while the active set moves, the
     // final tolerance (with a margin) once it has settled.
     const double final_tolerance = 0.5 * stopping_tolerance(p);
-    // Not below the round-off of the data: with every node open at p = 0
-    // the residual and its scale vanish, and a floating body's coarse
-    // correction leaves the CG a residual of round-off to reduce to 0 (a
-    // pin in a bore, issue 59).
+    // Not below the round-off of the step's data on its active set: with
+    // every node open at p = 0 the residual and its scale vanish, and a
+    // floating body's coarse correction leaves the CG a residual of
+    // round-off to reduce to 0 (a pin in a bore, issue 59). (The data of
+    // the open nodes, far gaps, would set a floor far above that.)
+    PointVector active_data(d_0.size(), 0.);
+    for (unsigned int q = 0; q < d_0.size(); ++q)
+      if (active[q])
+        active_data[q] = d_0[q];
     const double tolerance =
       std::max((n_changed == 0 && interface.get_continuation() == 0)
                  ? final_tolerance
                  : std::max(final_tolerance, 0.1 * psi),
-               1e-14 * interface.norm(d_0));
+               1e-14 * interface.norm(active_data));
     const unsigned int factorizations = preconditioner.factorizations();
     const unsigned int cg             = krylov.solve(
       {active, d_0, slip_coupling, continuation.penalty_dominates()},

@@ -45,6 +45,13 @@ namespace ddcontact
     double   worst_geometric  = 0;
     Point<2> worst_excess_at;
     double   worst_excess_length = 0; // face length there
+    /** With an expression gap: the deepest overlap of the meshes
+     * (geometric gap < 0 beyond the tolerance) that the expression leaves
+     * out (its gap above the geometric one), and where (issue 59: a hub
+     * meshed 0.02 into its shaft ran silently). */
+    double   hidden_overlap    = 0;
+    double   hidden_expression = 0;
+    Point<2> hidden_overlap_at;
     /** Length of the face of S_1 at the deepest overlap. */
     double min_gap_face_length = 0;
     /** Contact pair/Interference delta, taken off the gaps after they

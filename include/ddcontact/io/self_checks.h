@@ -43,7 +43,8 @@ namespace ddcontact
    *   sqrt(N) A / (theta p_mean) (N points, A the zone's displacement,
    *   p_mean the force over the closed area), and the relaxed DD's
    *   iterate trails its last body solves by 1 / gamma: the
-   *   limit is that much larger there;
+   *   limit is that much larger there, and never below 1e-6 (the
+   *   round-off that many damped Newton steps leave);
    * - on the nodal multipliers (PairSolution::nodal_pressure) the law (20)
    *   node by node, against the bodies' own weak gaps d_i:
    *   `contact_sign` max (-p_i)+ / max |p|, `contact_gap` max (d_i -
