@@ -216,34 +216,32 @@ namespace ddcontact
     std::vector<double> held(last - first, 0.);
     if (!(nodal && pair.has_friction()))
       return std::vector<bool>(held.size(), false);
+    const auto   held_1 = held_vertices(pair.get_body_1());
+    const auto   held_2 = held_vertices(pair.get_body_2());
+    const double tol_1  = AxisOfSymmetry::tolerance(
+      pair.get_body_1().get_dof_handler().get_triangulation());
+    const double tol_2 = AxisOfSymmetry::tolerance(
+      pair.get_body_2().get_dof_handler().get_triangulation());
+    for (unsigned int i = first; i < last; ++i)
     {
-      const auto   held_1 = held_vertices(pair.get_body_1());
-      const auto   held_2 = held_vertices(pair.get_body_2());
-      const double tol_1  = AxisOfSymmetry::tolerance(
-        pair.get_body_1().get_dof_handler().get_triangulation());
-      const double tol_2 = AxisOfSymmetry::tolerance(
-        pair.get_body_2().get_dof_handler().get_triangulation());
-      for (unsigned int i = first; i < last; ++i)
-      {
-        // The node's normal: its faces' normals weighed by psi_i.
-        Tensor<1, 2> normal;
-        for (const auto &share : point_shares[i])
-          normal += share.psi * pair.points()[share.point].normal;
-        if (normal.norm() == 0)
-          continue;
-        normal /= normal.norm();
-        const Tensor<1, 2> tau({-normal[1], normal[0]});
-        held[i - first] =
-          (held_on_normal(held_1, points[i], normal, tau, 0., tol_1) &&
-           held_on_normal(held_2,
-                          points[i],
-                          normal,
-                          tau,
-                          pair.search_report().search_distance,
-                          tol_2))
-            ? 1.
-            : 0.;
-      }
+      // The node's normal: its faces' normals weighed by psi_i.
+      Tensor<1, 2> normal;
+      for (const auto &share : point_shares[i])
+        normal += share.psi * pair.points()[share.point].normal;
+      if (normal.norm() == 0)
+        continue;
+      normal /= normal.norm();
+      const Tensor<1, 2> tau({-normal[1], normal[0]});
+      held[i - first] =
+        (held_on_normal(held_1, points[i], normal, tau, 0., tol_1) &&
+         held_on_normal(held_2,
+                        points[i],
+                        normal,
+                        tau,
+                        pair.search_report().search_distance,
+                        tol_2))
+          ? 1.
+          : 0.;
     }
     // A process holds the held vertices of its own cells only: the
     // nodes' flags are the same on every process (each runs the law).
