@@ -48,6 +48,19 @@ section per name listed in `Bodies` and `Contact pairs`.
 checks. The documentation often narrows it (E > 0, say), and the scene
 checks refuse a value outside that in one line. "any text" means the
 documentation gives the format.
+
+A mistake is refused in one line that names the file, the line and the
+entry with its section, and says what to write: a misspelled entry or
+subsection gets the closest declared one ("did you mean 'Young's
+modulus'?"), an entry written in the wrong subsection the subsections that
+declare it, a selection outside its list the list (selections are written
+as listed, in lower case), a number with units, a percentage or a decimal
+comma the number to write, a subsection without its `end` its line.
+Numbers are written without units. Every expression knows `x`, `y`, `pi`
+(unless the scene's `Constants` define their own) and the constants; the
+load parameter `t` only in the boundary conditions and the body force.
+Entries that the chosen law leaves unused (a `Friction coefficient` with
+`Friction = none`, a `Gap` with `Gap type = geometric`) are warned about.
 """
 
 

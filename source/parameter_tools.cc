@@ -1,5 +1,6 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/numbers.h>
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/lac/vector.h>
@@ -232,8 +233,11 @@ namespace ddcontact
     {
       // The load parameter t (Loading/Steps) is 1 unless a load step sets
       // it (Function::set_time()).
+      // pi in every expression, unless the scene defines its own.
+      Constants with_pi = constants;
+      with_pi.emplace("pi", numbers::PI);
       function->initialize(
-        time_dependent ? "x,y,t" : "x,y", parts, constants, time_dependent);
+        time_dependent ? "x,y,t" : "x,y", parts, with_pi, time_dependent);
       function->set_time(1);
       Vector<double> values(n_components);
       function->vector_value(Point<2>(0.123, 0.456), values);
@@ -247,6 +251,29 @@ namespace ddcontact
         (start == std::string::npos)
           ? ""
           : message.substr(start + 8, message.find('\n', start) - start - 8);
+      // A name muparser does not know: the load parameter t where the
+      // entry has none, or a constant nobody defined.
+      const std::string token = "Unexpected token \"";
+      const auto        at    = message.find(token);
+      if (at != std::string::npos)
+      {
+        const auto        close = message.find('"', at + token.size());
+        const std::string name =
+          message.substr(at + token.size(), close - at - token.size());
+        if (name == "t" && !time_dependent)
+          throw InputError(
+            what + ": '" + expression +
+            "' uses the load parameter t, which this entry does not have; t "
+            "is defined in the Dirichlet and Neumann conditions and the body "
+            "force (Body <name>/Boundary conditions) only");
+        if (!name.empty() &&
+            (std::isalpha(static_cast<unsigned char>(name[0])) ||
+             name[0] == '_'))
+          throw InputError(what + ": '" + expression + "' uses '" + name +
+                           "', which is not defined: x, y" +
+                           (time_dependent ? ", t" : "") +
+                           ", pi and the scene's Constants are");
+      }
       throw InputError(what + ": cannot parse '" + expression + "'" +
                        (message.empty() ? "" : ": " + one_line(message)));
     }

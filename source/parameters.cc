@@ -2,6 +2,7 @@
 
 #include <ddcontact/body/boundary_data_checks.h>
 #include <ddcontact/output_file.h>
+#include <ddcontact/parameter_messages.h>
 #include <ddcontact/parameters.h>
 
 #include <algorithm>
@@ -15,6 +16,10 @@
 
 namespace ddcontact
 {
+  using parameter_messages::follow_sections;
+  using parameter_messages::joined;
+  using parameter_messages::split_keyword;
+  using parameter_messages::unknown_subsection;
   using parsing::edit_distance;
   using parsing::message_of;
   using parsing::n_world_processes;
@@ -22,32 +27,6 @@ namespace ddcontact
 
   namespace
   {
-    /** The keyword of a parameter-file line (lower case: "subsection",
-     * "set", "end", ...) and the rest of the line, comments removed. */
-    std::pair<std::string, std::string>
-    split_keyword(const std::string &line)
-    {
-      const std::string text = Utilities::trim(line.substr(0, line.find('#')));
-      std::string       keyword = text.substr(0, text.find(' '));
-      std::transform(keyword.begin(),
-                     keyword.end(),
-                     keyword.begin(),
-                     [](const unsigned char c) { return std::tolower(c); });
-      return {keyword, Utilities::trim(text.substr(keyword.size()))};
-    }
-
-    /** Follow one line (split_keyword()) through the subsections: @p path
-     * gains the subsection the line opens and loses the one it ends. */
-    void
-    follow_sections(std::vector<std::string>                  &path,
-                    const std::pair<std::string, std::string> &line)
-    {
-      if (line.first == "subsection")
-        path.push_back(line.second);
-      else if (line.first == "end" && line.second.empty() && !path.empty())
-        path.pop_back();
-    }
-
     /**
      * A parameter file with its `include` lines replaced by the included
      * files, the one text that deal.II parses, and where each of its lines
@@ -125,75 +104,7 @@ namespace ddcontact
       std::vector<std::string> path;
       for (unsigned int i = 1; i < n && std::getline(lines, line); ++i)
         follow_sections(path, split_keyword(line));
-      std::string section;
-      for (const auto &p : path)
-        section += (section.empty() ? "" : "/") + p;
-      return section;
-    }
-
-    /** Every subsection that @p prm declares, as paths "Body a/Mesh". */
-    std::vector<std::string>
-    declared_subsections(const ParameterHandler &prm)
-    {
-      std::ostringstream out;
-      prm.print_parameters(out, ParameterHandler::ShortPRM);
-      std::istringstream       lines(out.str());
-      std::string              line;
-      std::vector<std::string> path, sections;
-      while (std::getline(lines, line))
-      {
-        const auto split = split_keyword(line);
-        follow_sections(path, split);
-        if (split.first == "subsection")
-        {
-          std::string section;
-          for (const auto &p : path)
-            section += (section.empty() ? "" : "/") + p;
-          sections.push_back(section);
-        }
-      }
-      return sections;
-    }
-
-    /**
-     * The one-line complaint about the subsection @p name, which @p prm
-     * does not declare in @p parent (a path, empty: the top level), with
-     * the declared sibling closest to it if one is close.
-     */
-    std::string
-    unknown_subsection(const std::string      &parent,
-                       const std::string      &name,
-                       const ParameterHandler &prm)
-    {
-      const std::string prefix = parent.empty() ? "" : parent + "/";
-      std::string       best;
-      unsigned int      best_distance =
-        std::max<unsigned int>(2, name.size() / 4) + 1;
-      for (const auto &section : declared_subsections(prm))
-        if (section.rfind(prefix, 0) == 0 &&
-            section.find('/', prefix.size()) == std::string::npos)
-        {
-          const unsigned int d =
-            edit_distance(name, section.substr(prefix.size()));
-          if (d < best_distance)
-          {
-            best          = section;
-            best_distance = d;
-          }
-        }
-      std::vector<std::string> hints;
-      if (!best.empty())
-        hints.push_back("did you mean '" + best + "'?");
-      if (parent.empty() &&
-          (name.rfind("Body ", 0) == 0 || name.rfind("Contact pair ", 0) == 0))
-        hints.push_back("a body or contact pair also needs its name in "
-                        "Bodies or Contact pairs");
-      if (hints.empty())
-        hints.push_back("misspelled?");
-      std::string hint;
-      for (const auto &h : hints)
-        hint += (hint.empty() ? "" : " ") + h;
-      return "there is no subsection '" + prefix + name + "' (" + hint + ")";
+      return joined(path);
     }
 
     /**
@@ -276,6 +187,13 @@ namespace ddcontact
     {
       const std::string input_string = " <input string>";
       const auto        l            = message.find("Line <");
+      if (message.find("unequal numbers of 'subsection' and 'end'") !=
+          std::string::npos)
+      {
+        const auto [n, what] =
+          parameter_messages::unbalanced_sections(input.text, prm);
+        return "parameter file " + input.location(n) + ": " + what;
+      }
       if (l == std::string::npos)
       {
         for (auto at = message.find(input_string); at != std::string::npos;
@@ -302,13 +220,24 @@ namespace ddcontact
       if (keyword == "subsection" &&
           rest.find("no such subsection") != std::string::npos)
         return where + ": " + unknown_subsection(section, arguments, prm);
+      if (keyword == "end" &&
+          rest.find("no subsection to leave") != std::string::npos)
+        return where + ": an 'end' without its 'subsection' (one too many)";
       if (keyword == "set" && rest.find("No entry with name") == 0)
       {
-        const std::string moved = moved_entry_in_contact_solver(
-          section, Utilities::trim(arguments.substr(0, arguments.find('='))));
-        if (!moved.empty())
-          return where + ": " + moved;
+        const std::string entry =
+          Utilities::trim(arguments.substr(0, arguments.find('=')));
+        const std::string moved = moved_entry_in_contact_solver(section, entry);
+        return where + ": " +
+               (moved.empty()
+                  ? parameter_messages::unknown_entry(section, entry, prm)
+                  : moved);
       }
+      std::string entry, value, pattern;
+      if (keyword == "set" &&
+          parameter_messages::split_value_message(rest, entry, value, pattern))
+        return where + ": " +
+               parameter_messages::bad_value(section, entry, value, pattern);
       return where +
              (section.empty() ? "" : ", in subsection '" + section + "'") +
              ": " + rest;
@@ -438,12 +367,23 @@ namespace ddcontact
       {
         for (unsigned int i = 0; i + 1 < path.size(); ++i)
           prm.leave_subsection();
+        const bool undeclared =
+          dynamic_cast<const ParameterHandler::ExcEntryUndeclared *>(&e) !=
+          nullptr;
         const std::string moved =
-          dynamic_cast<const ParameterHandler::ExcEntryUndeclared *>(&e)
-            ? moved_entry_in_contact_solver(section, path.back())
-            : "";
-        throw InputError("--set '" + assignment +
-                         "': " + (moved.empty() ? message_of(e) : moved));
+          undeclared ? moved_entry_in_contact_solver(section, path.back()) : "";
+        std::string       entry, bad, pattern;
+        const std::string message = message_of(e);
+        const std::string why =
+          !moved.empty() ? moved
+          : undeclared
+            ? parameter_messages::unknown_entry(section, path.back(), prm)
+          : parameter_messages::split_value_message(
+              message, entry, bad, pattern)
+            ? parameter_messages::bad_value(
+                section, path.back(), value, pattern)
+            : message;
+        throw InputError("--set '" + assignment + "': " + why);
       }
       for (unsigned int i = 0; i + 1 < path.size(); ++i)
         prm.leave_subsection();

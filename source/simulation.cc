@@ -386,8 +386,13 @@ namespace ddcontact
   void
   Simulation::check_answer()
   {
+    // The contact states and reactions, which the report writes too.
+    timer.enter_subsection("states and reactions");
+    const RunReport::Answer &answer = report.fix_answer(results());
+    timer.leave_subsection();
     TimerOutput::Scope t(timer, "self-checks");
-    const SelfChecks   checks(results(), parameters.contact_solver.tolerance);
+    const SelfChecks   checks(
+      results(), answer, parameters.contact_solver.tolerance);
     report.set_self_checks(checks.json());
     if (!checks.passed())
       throw NotConvergedError(checks.failure());
@@ -398,7 +403,10 @@ namespace ddcontact
   {
     try
     {
+      // The answer changes here; the report and the checks share the next.
+      report.forget_answer();
       strategy->solve();
+      report.forget_answer();
       check_answer();
     }
     catch (const DivergenceError &error)

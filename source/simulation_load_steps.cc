@@ -237,8 +237,12 @@ namespace ddcontact
              " (t = " + std::to_string(t_start) + " to " +
              std::to_string(t_end) + ")";
       const double error = solve_step_twice(t_start, t_end, start, one_step);
-      pcout << "load step [" << t_start << ", " << t_end
-            << "]: load-path error " << std::setprecision(3) << error
+      // t to the step's precision: a step of 2^-10 printed with two digits
+      // read "[0.98, 0.98]".
+      const int digits =
+        std::max(3, 2 + int(std::ceil(-std::log10(t_end - t_start))));
+      pcout << "load step [" << std::setprecision(digits) << t_start << ", "
+            << t_end << "]: load-path error " << std::setprecision(3) << error
             << " (allowed " << control.allowed_error() << ")";
       if (control.judge(error))
       {

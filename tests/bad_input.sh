@@ -120,7 +120,7 @@ case_ "misspelled inner subsection in --set" "there is no subsection 'Body omega
 # Line numbers are those of the file the user wrote, also inside an include.
 printf '# shared output settings\nsubsection Output\n  set Write vtu = false\n  set Verbosty = full\nend\n' >"$work/common.prm"
 printf 'include %s\ninclude common.prm\n' "$paper" >"$work/scene.prm"
-case_ "error in an included file" "common.prm, line 4 (included from $work/scene.prm, line 2), in subsection 'Output': No entry with name <Verbosty>" "$work/scene.prm"
+case_ "error in an included file" "common.prm, line 4 (included from $work/scene.prm, line 2): there is no entry 'Verbosty' in 'Output' (did you mean 'Verbosity'?)" "$work/scene.prm"
 printf 'Point(1) = {0, 0, 0, 0.5};\nPoint(2) = {1, 0, 0, 0.5};\nPoint(3) = {1, 1, 0, 0.5};\nPoint(4) = {0, 1, 0, 0.5};\nLine(1) = {1, 2};\nLine(2) = {2, 3};\nLine(3) = {3, 4};\nLine(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\nPhysical Curve(2) = {1};\nPhysical Curve(3) = {3};\n' >"$work/nosurface.geo"
 case_ ".geo without a Physical Surface" "nosurface.geo' gives no 2D cells: it needs a Plane Surface, and with Physical Curves a Physical Surface too" "$base" --set "Body lower/Mesh/Type=file" --set "Body lower/Mesh/File=$work/nosurface.geo"
 printf 'Point(1) = {-2, 0, 0, 0.5};\nPoint(2) = {2, 0, 0, 0.5};\nPoint(3) = {2, 1, 0, 0.5};\nPoint(4) = {-2, 1, 0, 0.5};\nLine(1) = {1, 2};\nLine(2) = {2, 3};\nLine(3) = {3, 4};\nLine(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\nPhysical Curve(2) = {1};\nPhysical Curve(3) = {3};\nPhysical Curve(7) = {3};\nPhysical Surface(1) = {1};\n' >"$work/twogroups.geo"
@@ -326,6 +326,28 @@ case_ "load parameter in the gap" "Contact pair S/Gap" "$friction" --set "Contac
 # Symmetry holds u_r = 0 on the axis: a radial displacement prescribed there
 # was replaced silently and its reaction printed (issue 59).
 case_ "u_r prescribed on the axis" "Body shaft/Boundary conditions/Dirichlet: boundary id 0 prescribes u_r = 0.001" "$src/prm/shrink_fit.prm" --set "Body shaft/Boundary conditions/Dirichlet=0: x: 0.001; 0 | 3: y: 0; 0"
+# A mistake in the user's words (issue 60): deal.II's raw text ("No entry
+# with name <X> was declared", "does not match the given pattern: [Double
+# ...]", "unequal numbers of 'subsection' and 'end'") named what to write.
+case_ "entry typo, apostrophe" "there is no entry 'Youngs modulus' in 'Body lower/Material' (did you mean 'Young's modulus'?)" "$base" --set "Body lower/Material/Youngs modulus=1000"
+sed "s/Poisson's ratio/Poisson ratio/" "$base" >"$work/poisson.prm"
+case_ "entry typo in a file" "poisson.prm, line 30: there is no entry 'Poisson ratio'" "$work/poisson.prm"
+case_ "entry typo in a file: did you mean" "did you mean 'Poisson's ratio'?" "$work/poisson.prm"
+case_ "selection written in capitals" "Contact solver/Solver = 'DD-Newton': not one of dd-newton, monolithic, dd (did you mean 'dd-newton'?)" "$base" --set "Contact solver/Solver=DD-Newton"
+case_ "selection misspelled" "did you mean 'axisymmetric'?" "$base" --set "Geometry=axisymetric"
+case_ "number with units" "numbers are written without units (write 1000;" "$base" --set "Body lower/Material/Young's modulus=1000 MPa"
+case_ "percentage" "a percentage is not read; write the fraction (0.001)" "$base" --set "Contact solver/Tolerance=0.1%"
+case_ "decimal comma" "write a decimal point (1.5e3)" "$base" --set "Body lower/Material/Young's modulus=1,5e3"
+case_ "number out of range" "Contact solver/Tolerance = '-1': out of range: a number >= 0" "$base" --set "Contact solver/Tolerance=-1"
+case_ "constants separated by semicolons" "constants are separated by commas (p=10, rho_g=0.08)" "$base" --set "Constants=p=10; rho_g=0.08"
+case_ "constant given as an expression" "'rho_g=p/100': the value of a constant is a number, not an expression" "$base" --set "Constants=p=10, rho_g=p/100"
+case_ "undefined name in an expression" "uses 'rho', which is not defined: x, y, t, pi and the scene's Constants are" "$base" --set "Body upper/Boundary conditions/Body force=0; -rho"
+case_ "entry in the wrong subsection" "there is no entry 'Friction' in 'Contact solver'; it is an entry of 'Contact pair S': move it there" "$paper" --set "Contact solver/Friction=coulomb"
+case_ "solver entry in a contact pair" "it is an entry of 'Contact solver'" "$paper" --set "Contact pair S/Multiplier basis=dual"
+sed '0,/^end/s/^end//' "$base" >"$work/no_end.prm"
+case_ "subsection without its end" "has no 'end' before line" "$work/no_end.prm"
+sed '0,/^end/s/^end/end\nend/' "$base" >"$work/two_ends.prm"
+case_ "end without its subsection" "an 'end' without its 'subsection'" "$work/two_ends.prm"
 
 total=$(( $(grep -c -E '^(expect_code=[0-9]+ )?(mpi_|file_)?case_ ' "$0") + 4 ))  # and four checks of outputs
 total=$((total - skipped))

@@ -1,20 +1,31 @@
 """DESCRIPTION: scripts/plot_run.py draws the output directory of a run: a
 Hertz run (VTU written) gives contact_S.png with the Hertz curve of a whole
-model, convergence.png and mesh.png (read from the VTU); a Cattaneo-Mindlin
-run adds the tangential traction with its partial-slip curve; sheared and
-then partly unloaded, the curve is Mindlin-Deresiewicz's from the turning
-force (its stick zone meets the computed one within a cell); pressed and
-sheared together (the normal force changing under the shear) it draws no
-closed form and says why; a pin in a plate hole (tests/pin_in_hole.prm, a
-closed contact curve) is drawn against the arc length, which follows the
-circle; the Hertz half model prm/hertz_force.prm is found to be a half
-model and its curve takes
-the whole force 2P (a and p0 of hertz_S.json within 1 % of the closed form
-at P = 2 q R, a = 0.149, p0 = 8.18), and --symmetry full gives the curve
-of P itself (a smaller by sqrt(2)); a coarse adaptive run of
-the paper's scene gives adaptation.png and no Hertz curve (its contact is
-a quarter of the zone, no half-plane); a directory that is not a run is
-refused in one line with exit code 1. Skipped (exit 77) without matplotlib.
+model (the cylinder's, forces per unit thickness), convergence.png titled
+dd-newton and mesh.png (read from the VTU); a Cattaneo-Mindlin run adds the
+tangential traction with its partial-slip curve, force_displacement.png and
+a convergence plot titled monolithic; sheared and then partly unloaded, the
+curve is Mindlin-Deresiewicz's from the turning force (its stick zone meets
+the computed one within a cell); pressed and sheared together with
+Steps = auto (the normal force changing under the shear) it draws no
+closed form and says why, and load_path.png with the run's accepted steps
+and splits; a synthetic press-then-shear directory whose press step carries
+a tangential force of 0.1 % of mu P (0.03 % of P) and whose shear comes in
+80 steps of 0.6 % of mu P keeps the Cattaneo-Mindlin curve, one whose
+normal force grows by 5 % under the shear is refused; the axisymmetric
+sphere prm/hertz_sphere.prm gets Hertz's sphere at its ring force (a and
+p0 of hertz_S.json = the closed form at the CSV's force and R = 50, a
+within a cell of the computed contact radius, p0 within 2 % of the peak),
+also under --symmetry half and full, and its forces labelled as totals over
+the ring; a pin in a plate hole (tests/pin_in_hole.prm, a closed contact
+curve) is drawn against the arc length, which follows the circle; the Hertz
+half model prm/hertz_force.prm is found to be a half model and its curve
+takes the whole force 2P (a and p0 of hertz_S.json within 1 % of the closed
+form at P = 2 q R, a = 0.149, p0 = 8.18), and --symmetry full gives the
+curve of P itself (a smaller by sqrt(2)); a coarse adaptive run of the
+paper's scene gives adaptation.png, a convergence plot titled Neumann
+domain decomposition and no Hertz curve (its contact is a quarter of the
+zone, no half-plane); a directory that is not a run is refused in one line
+with exit code 1. Skipped (exit 77) without matplotlib.
 
 usage: plot_run.py DDCONTACT_EXECUTABLE SOURCE_DIR WORK_DIR
 """
@@ -91,6 +102,113 @@ print(json.dumps({"label": label,
 """
 
 
+# Runs scripts/plot_run.py's main() as the command line does (arguments
+# from sys.argv[3:], its stdout and exit code) and writes the texts of
+# every figure it saves (suptitle, and each panel's title, axis labels and
+# legend) to the JSON file sys.argv[2], {png name: [text, ...]}.
+LABELS = """
+import json, sys
+sys.path.insert(0, sys.argv[1])
+import plot_run
+texts, save = {}, plot_run.Plotter.save
+def recording_save(self, fig, name):
+    found = [getattr(fig, "_suptitle", None)]
+    for ax in fig.axes:
+        found += [ax.title, ax.xaxis.label, ax.yaxis.label]
+        legend = ax.get_legend()
+        found += legend.get_texts() if legend else []
+    texts[name] = [t.get_text() for t in found if t is not None and t.get_text()]
+    save(self, fig, name)
+plot_run.Plotter.save = recording_save
+code = plot_run.main(sys.argv[3:])
+with open(sys.argv[2], "w") as f:
+    json.dump(texts, f)
+sys.exit(code)
+"""
+
+
+def plot_with_labels(python, source, work, args):
+    """scripts/plot_run.py ARGS through LABELS: (the completed process,
+    {png name: [the figure's texts]})."""
+    path = os.path.join(work, "labels.json")
+    if os.path.exists(path):
+        os.remove(path)
+    result = subprocess.run([python, "-c", LABELS, os.path.join(source, "scripts"),
+                             path] + args, capture_output=True, text=True)
+    print(result.stdout + result.stderr)
+    return result, read_json(path)
+
+
+def mentions(texts, name, words):
+    """Whether the texts of figure @p name hold every one of @p words."""
+    joined = "\n".join(texts.get(name, []))
+    return all(w in joined for w in words)
+
+
+def write_synthetic_mindlin(directory, press_q, drift, n_shear=80):
+    """An output directory that scripts/plot_run.py takes for a
+    Cattaneo-Mindlin run, made here from the closed forms: two similar
+    blocks (E = 1000, nu = 0.3, mu = 0.3), the gap x^2/(2R) (R = 50) on 400
+    points of weight 0.01 over [-2, 2], Hertz's pressure of a = 0.3 in
+    every step; step 1 presses with a tangential force press_q mu P
+    (traction proportional to p), steps 2 to n_shear + 1 shear to Q = mu
+    P/2 in equal parts (Cattaneo-Mindlin's traction at each Q) while the
+    normal force grows from (1 - drift) P to P. Returns (P, Q) of the last
+    step as the CSV integrates them."""
+    os.makedirs(directory)
+    mu, radius, e, nu, a = 0.3, 50.0, 1000.0, 0.3, 0.3
+    e_star = e / (2 * (1 - nu * nu))
+    force = math.pi * a * a * e_star / (4 * radius)
+    p0 = 2 * force / (math.pi * a)
+    xs = [-2 + 0.01 * (i + 0.5) for i in range(400)]
+
+    def rows(scale, q):
+        c = a * math.sqrt(1 - abs(q) / (mu * force))
+        out = []
+        for x in xs:
+            p = scale * p0 * math.sqrt(max(0., 1 - x * x / (a * a)))
+            t = (mu * scale * p0 / a * (math.sqrt(max(0., a * a - x * x)) -
+                                        math.sqrt(max(0., c * c - x * x))))
+            gap = x * x / (2 * radius)
+            closure = min(gap, a * a / (2 * radius)) / 2
+            out.append([x, 0, p, closure, closure, gap, 0.01, t, 0, 0,
+                        1 if abs(x) < c else 2 if p > 0 else 0])
+        return out
+
+    def write(name, data):
+        with open(os.path.join(directory, name), "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["x1", "x2", "pressure", "u_1n", "u_2n", "gap", "weight",
+                        "tangential_traction", "slip_increment", "slip",
+                        "state"])
+            w.writerows(data)
+
+    press = rows(1 - drift, 0.)
+    press_p = sum(r[2] * r[6] for r in press)
+    for r in press:  # a small tangential force along the pressure
+        r[7] = press_q * mu * r[2] * force / press_p
+    write("contact_S_step0001.csv", press)
+    for k in range(1, n_shear + 1):
+        data = rows(1 - drift * (1 - k / n_shear), 0.5 * mu * force * k / n_shear)
+        write(f"contact_S_step{k + 1:04d}.csv", data)
+    write("contact_S.csv", data)
+    with open(os.path.join(directory, "summary.json"), "w") as f:
+        json.dump({"status": "converged", "contact": [{"pair": "S"}]}, f)
+    prm = ["set Geometry = plane strain", "set Bodies = upper, lower",
+           "subsection Contact pair S", "  set Body 1 = upper",
+           "  set Body 2 = lower", "  set Friction = coulomb",
+           f"  set Friction coefficient = {mu}", "end"]
+    for body, corners in (("upper", ("-10, 0", "10, 10")),
+                          ("lower", ("-10, -10", "10, 0"))):
+        prm += [f"subsection Body {body}", "  subsection Mesh",
+                f"    set Corner 1 = {corners[0]}", f"    set Corner 2 = {corners[1]}",
+                "  end", "  subsection Material", f"    set Young's modulus = {e}",
+                f"    set Poisson's ratio = {nu}", "  end", "end"]
+    with open(os.path.join(directory, "parameters.prm"), "w") as f:
+        f.write("\n".join(prm) + "\n")
+    return (sum(r[2] * r[6] for r in data), sum(r[7] * r[6] for r in data))
+
+
 def run_scene(exe, scene, out, overrides):
     command = [exe, scene, "--output", out]
     for o in overrides:
@@ -120,9 +238,8 @@ def main():
               ["Body upper/Mesh/Box refinement=5",
                "Body lower/Mesh/Box refinement=5"])
     pictures = os.path.join(work, "hertz_png")
-    result = subprocess.run(plot + [hertz, "--out", pictures], capture_output=True,
-                            text=True)
-    print(result.stdout + result.stderr)
+    result, texts = plot_with_labels(python, source, work,
+                                     [hertz, "--out", pictures])
     check(result.returncode == 0, "plot_run.py on the Hertz run: exit 0")
     for name in ("contact_S.png", "convergence.png", "mesh.png"):
         check(is_png(os.path.join(pictures, name)), f"Hertz run: {name} written")
@@ -134,6 +251,18 @@ def main():
     check(used.get("model") == "full",
           f"Hertz run: taken as a whole model ({used.get('model')}: "
           f"{used.get('model_reason')})")
+    check(used.get("geometry") == "plane strain" and
+          used.get("closed_form") == "cylinder",
+          f"Hertz run: the cylinder's closed form ({used.get('formula')})")
+    check(mentions(texts, "contact_S.png", ["force per unit thickness",
+                                            "[stress x length]"]) and
+          not mentions(texts, "contact_S.png", ["length^2"]) and
+          not mentions(texts, "contact_S.png", ["ring"]),
+          "Hertz run (plane strain): the force per unit thickness, "
+          "[stress x length]")
+    check(mentions(texts, "convergence.png", ["dd-newton", "Newton step"]),
+          f"Hertz run: convergence.png names dd-newton "
+          f"({texts.get('convergence.png', ['?'])[0]})")
 
     check(not os.path.exists(os.path.join(pictures, "mindlin_S.json")),
           "Hertz run (frictionless): no Cattaneo-Mindlin curve")
@@ -145,10 +274,20 @@ def main():
     run_scene(exe, os.path.join(source, "prm", "cattaneo_mindlin.prm"), mindlin,
               ["Body upper/Mesh/Box refinement=5",
                "Body lower/Mesh/Box refinement=5", "Output/Write vtu=false"])
-    result = subprocess.run(plot + [mindlin], capture_output=True, text=True)
-    print(result.stdout + result.stderr)
+    result, texts = plot_with_labels(python, source, work, [mindlin])
     check(result.returncode == 0 and is_png(os.path.join(mindlin, "contact_S.png")),
           "plot_run.py on the Cattaneo-Mindlin run: contact_S.png written")
+    check(mentions(texts, "convergence.png", ["monolithic"]),
+          f"Cattaneo-Mindlin run: convergence.png names the monolithic solver "
+          f"({texts.get('convergence.png', ['?'])[0]})")
+    check(is_png(os.path.join(mindlin, "force_displacement.png")) and
+          mentions(texts, "force_displacement.png",
+                   ["per unit thickness", "[stress x length]"]),
+          "Cattaneo-Mindlin run: force_displacement.png, forces per unit "
+          "thickness")
+    check(not os.path.exists(os.path.join(mindlin, "load_path.png")),
+          "Cattaneo-Mindlin run (two fixed steps, no Check path): no "
+          "load_path.png")
     used = read_json(os.path.join(mindlin, "mindlin_S.json"))
     ratio = used.get("c_over_a", float("nan"))
     expected = math.sqrt(1 - abs(used.get("Q", 0)) / (0.3 * used.get("P", 1)))
@@ -195,23 +334,132 @@ def main():
           f"unloading: the stick points reach {extent:.4g}, c' = "
           f"{used.get('c', float('nan')):.4g} (within a cell, {h:.3g})")
 
-    # 1d. Pressed and sheared together in ten steps: the normal force
-    #     changes under the shear, so no closed form here; the script says
-    #     why and removes a stale record.
+    # 1d. Pressed and sheared together, Steps = auto (21 accepted steps and
+    #     12 splits at this refinement): the normal force changes under the
+    #     shear, so no closed form here; the script says why and removes a
+    #     stale record. load_path.png counts the accepted steps of
+    #     summary.json's load_steps and the splits of its load_path.
     together = os.path.join(work, "proportional")
     run_scene(exe, os.path.join(source, "prm", "cattaneo_mindlin.prm"), together,
               ["Body upper/Mesh/Box refinement=5",
                "Body lower/Mesh/Box refinement=5", "Output/Write vtu=false",
-               "Loading/Steps=10",
+               "Loading/Steps=auto",
                "Body upper/Boundary conditions/Dirichlet=3: xy: U*t; -Delta*t"])
     with open(os.path.join(together, "mindlin_S.json"), "w") as f:
         f.write("{}\n")
-    result = subprocess.run(plot + [together], capture_output=True, text=True)
-    print(result.stdout + result.stderr)
+    result, texts = plot_with_labels(python, source, work, [together])
     check(result.returncode == 0 and
           "no Cattaneo-Mindlin curve (the normal force changes" in result.stdout
           and not os.path.exists(os.path.join(together, "mindlin_S.json")),
           "pressed and sheared together: no closed form, and why")
+    summary = read_json(os.path.join(together, "summary.json"))
+    path = summary.get("load_path", {})
+    steps = summary.get("load_steps", [])
+    check(path.get("steps") == "auto" and len(steps) > 1 and
+          path.get("rejected_steps", 0) > 0,
+          f"Steps = auto: {len(steps)} accepted steps, "
+          f"{path.get('rejected_steps')} splits")
+    check(is_png(os.path.join(together, "load_path.png")) and
+          mentions(texts, "load_path.png",
+                   [f"{len(steps)} accepted steps",
+                    f"{path.get('rejected_steps')} splits",
+                    f"{path.get('solves')} solves",
+                    f"Path tolerance = {path.get('path_tolerance'):g}"]),
+          "Steps = auto: load_path.png with the accepted steps, splits, "
+          "solves and the tolerance")
+
+    # 1f. Synthetic press-then-shear runs (written here from the closed
+    #     forms, no ddcontact): the press step carries a tangential force
+    #     of 0.1 % of mu P (0.03 % of P), the normal force grows by 0.01 %
+    #     under the shear, and the shear comes in 80 steps of 0.6 % of
+    #     mu P: press-then-shear within the 1 % tolerance, so the
+    #     Cattaneo-Mindlin curve at the last Q and P, c/a = sqrt(1 -
+    #     Q/(mu P)) (1/sqrt(2) up to the integration over the points).
+    #     The same with the normal force growing by 5 % under the shear is
+    #     not press-then-shear: no curve.
+    synthetic = os.path.join(work, "synthetic_mindlin")
+    P, Q = write_synthetic_mindlin(synthetic, 1e-3, 1e-4)
+    result = subprocess.run(plot + [synthetic], capture_output=True, text=True)
+    print(result.stdout + result.stderr)
+    used = read_json(os.path.join(synthetic, "mindlin_S.json"))
+    expected = math.sqrt(1 - Q / (0.3 * P))
+    check(result.returncode == 0 and used.get("path") == "monotone" and
+          abs(used.get("c_over_a", 0) - expected) < 1e-9 and
+          abs(expected - math.sqrt(0.5)) < 1e-3,
+          f"press step with 0.1 % of mu P: the Cattaneo-Mindlin curve kept, "
+          f"c/a = {used.get('c_over_a', float('nan')):.5g} = sqrt(1 - Q/(mu P)) "
+          f"= {expected:.5g}")
+    drifting = os.path.join(work, "synthetic_drift")
+    write_synthetic_mindlin(drifting, 1e-3, 0.05)
+    result = subprocess.run(plot + [drifting], capture_output=True, text=True)
+    print(result.stdout + result.stderr)
+    check(result.returncode == 0 and
+          "no Cattaneo-Mindlin curve (the normal force changes" in result.stdout
+          and not os.path.exists(os.path.join(drifting, "mindlin_S.json")),
+          "normal force growing by 5 % under the shear: no closed form")
+
+    # 1g. Hertz's sphere, axisymmetric (prm/hertz_sphere.prm at box
+    #     refinement 6, cells of h = 10/4/2^6 at the contact, pressed in two
+    #     steps): the sphere's closed form at the ring force of
+    #     contact_S.csv, a = (3 P R/(4 E*))^(1/3), p0 = 3 P/(2 pi a^2),
+    #     R = 50, 1/E* = 2 (1 - 0.3^2)/1000; that a is within a cell of the
+    #     computed contact radius and p0 within 2 % of the peak pressure
+    #     (the cylinder's formula at this force, a = sqrt(4 P R/(pi E*)), is
+    #     two cells off, its p0 12 %). --symmetry half or full changes
+    #     nothing; the forces say "total over the ring", [stress x
+    #     length^2], and never "per unit thickness".
+    sphere = os.path.join(work, "hertz_sphere")
+    run_scene(exe, os.path.join(source, "prm", "hertz_sphere.prm"), sphere,
+              ["Body upper/Mesh/Box refinement=6",
+               "Body lower/Mesh/Box refinement=6", "Output/Write vtu=false",
+               "Loading/Steps=2",
+               "Body upper/Boundary conditions/Dirichlet=3: xy: 0; -Delta*t"])
+    result, texts = plot_with_labels(python, source, work, [sphere])
+    check(result.returncode == 0 and "pair S: Hertz curve drawn" in result.stdout,
+          "sphere: the Hertz curve is drawn")
+    used = read_json(os.path.join(sphere, "hertz_S.json"))
+    P = sum(r["pressure"] * r["weight"]
+            for r in read_csv_rows(os.path.join(sphere, "contact_S.csv")))
+    e_star = 1000 / (2 * (1 - 0.3 ** 2))
+    a_exact = (3 * P * 50 / (4 * e_star)) ** (1 / 3)
+    p0_exact = 3 * P / (2 * math.pi * a_exact ** 2)
+    check(used.get("geometry") == "axisymmetric" and
+          used.get("closed_form") == "sphere",
+          f"sphere: the sphere's closed form ({used.get('formula')})")
+    for key, exact in (("a", a_exact), ("p0", p0_exact), ("whole_force", P)):
+        value = used.get(key, float("nan"))
+        check(abs(value - exact) <= 1e-6 * exact,
+              f"sphere: {key} = {value:.6g}, the closed form at the ring force "
+              f"{P:.6g} and R = 50: {exact:.6g}")
+    contact = read_json(os.path.join(sphere, "summary.json")).get("contact", [{}])[0]
+    h = 10 / 4 / 2 ** 6
+    check(abs(used.get("a", 0) - contact.get("contact_radius", 0)) <= h,
+          f"sphere: a = {used.get('a', float('nan')):.4g} against the computed "
+          f"contact radius {contact.get('contact_radius', float('nan')):.4g} "
+          f"(a cell, {h:.3g})")
+    check(abs(used.get("p0", 0) - contact.get("max_pressure", 0)) <=
+          0.02 * contact.get("max_pressure", 0),
+          f"sphere: p0 = {used.get('p0', float('nan')):.4g} against the peak "
+          f"pressure {contact.get('max_pressure', float('nan')):.4g} (2 %)")
+    check(mentions(texts, "contact_S.png", ["ring force", "[stress x length^2]"])
+          and not any("per unit thickness" in t for name in texts
+                      for t in texts[name]),
+          "sphere: the ring force in [stress x length^2], nothing per unit "
+          "thickness")
+    check(mentions(texts, "force_displacement.png",
+                   ["total over the ring", "[stress x length^2]", "axial (z)"]),
+          "sphere: force_displacement.png, ring forces against the axial "
+          "displacement")
+    for option in ("half", "full"):
+        out = os.path.join(work, f"hertz_sphere_{option}")
+        result = subprocess.run(plot + [sphere, "--symmetry", option, "--out", out],
+                                capture_output=True, text=True)
+        print(result.stdout + result.stderr)
+        other = read_json(os.path.join(out, "hertz_S.json"))
+        check(result.returncode == 0 and other.get("closed_form") == "sphere" and
+              abs(other.get("a", 0) - used.get("a", 0)) <= 1e-12 * a_exact,
+              f"sphere with --symmetry {option}: still the sphere, a = "
+              f"{other.get('a', float('nan')):.6g}")
 
     # 1e. A pin in a plate hole (tests/pin_in_hole.prm): S_1 is the pin's
     #     whole circle, so x1 runs back and forth along it; the profiles are
@@ -294,10 +542,15 @@ def main():
     run_scene(exe, os.path.join(source, "prm", "paper_two_bodies.prm"), paper,
               ["Adaptation/Max cycles=2", "Output/Write vtu=false",
                "Contact solver/Domain decomposition/Relaxation=anderson"])
-    result = subprocess.run(plot + [paper, "--units", "cm,MPa"],
-                            capture_output=True, text=True)
-    print(result.stdout + result.stderr)
+    result, texts = plot_with_labels(python, source, work,
+                                     [paper, "--units", "cm,MPa"])
     check(result.returncode == 0, "plot_run.py on the paper run: exit 0")
+    check(mentions(texts, "convergence.png",
+                   ["Neumann domain decomposition", "DD iteration"]),
+          f"paper run (dd): convergence.png names the Neumann domain "
+          f"decomposition ({texts.get('convergence.png', ['?'])[0]})")
+    check(mentions(texts, "contact_S.png", ["per unit thickness", "[MPa cm]"]),
+          "paper run: forces per unit thickness in [MPa cm]")
     for name in ("contact_S.png", "convergence.png", "adaptation.png", "mesh.png"):
         check(is_png(os.path.join(paper, name)), f"paper run: {name} written")
     check("pair S: Hertz curve not drawn" in result.stdout,

@@ -131,8 +131,8 @@ main(int argc, char **argv)
 
   // The first increment is loaded at once (c/a = 0.55 after it, the
   // proportional solution's), a memory that fades as the contact grows
-  // 20-fold; the record of the last quarter of the steps (the last
-  // sticking point + h/2 over a).
+  // 20-fold; the record of the last quarter of the steps (the stick
+  // radius, halfway from the last sticking point to the next, over a).
   const auto &load_steps = simulation->summary().at("load_steps");
   check(load_steps.size() == steps, "one record per load step");
   for (unsigned int k = 3 * steps / 4; k < steps; ++k)
@@ -140,8 +140,7 @@ main(int argc, char **argv)
     const auto  &pair = load_steps[k].at("pairs").at(0);
     const double a    = radius(pair.at("normal_force").get<double>());
     std::cout << std::setprecision(4) << "  step " << k + 1 << ": a " << a
-              << ", c/a "
-              << (pair.at("stick_radius").get<double>() + 0.5 * h) / a
+              << ", c/a " << pair.at("stick_radius").get<double>() / a
               << std::endl;
   }
 

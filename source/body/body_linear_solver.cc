@@ -54,6 +54,22 @@ namespace ddcontact
       }
 
       void
+      zero_load() override
+      {
+        system.load = 0;
+      }
+
+      void
+      add_load(const AffineConstraints<double>            &constraints,
+               const FullMatrix<double>                   &cell_matrix,
+               const Vector<double>                       &cell_load,
+               const std::vector<types::global_dof_index> &dof_indices) override
+      {
+        constraints.distribute_local_to_global(
+          cell_load, dof_indices, system.load, cell_matrix);
+      }
+
+      void
       add(const AffineConstraints<double>            &constraints,
           const FullMatrix<double>                   &cell_matrix,
           const Vector<double>                       &cell_load,

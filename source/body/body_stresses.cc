@@ -326,13 +326,15 @@ namespace ddcontact
   template <int dim>
   PointValues<dim>
   BodyStresses<dim>::at_point_distributed(const Point<dim> &x,
-                                          const InputError &outside) const
+                                          const InputError &outside,
+                                          const bool        averaged) const
   {
     using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
     const Triangulation<dim> &tria = body.get_triangulation();
     static_assert(dim == 2, "six values: u and the stress");
     using Values = std::array<double, 6>;
-    Utilities::MPI::RemotePointEvaluation<dim> remote(1e-6, true);
+    // Averaged: every cell around x answers (get_point_ptrs()).
+    Utilities::MPI::RemotePointEvaluation<dim> remote(1e-6, !averaged);
     remote.reinit({x}, tria, body.get_mapping());
     if (!remote.all_points_found())
       throw outside;
@@ -363,7 +365,15 @@ namespace ddcontact
           }
         }
       });
-    const Values    &v = found.at(0);
+    Values             v = found.at(0);
+    const unsigned int n = remote.get_point_ptrs().at(1);
+    if (averaged && n > 1)
+    {
+      v.fill(0.);
+      for (unsigned int k = 0; k < n; ++k)
+        for (unsigned int c = 0; c < v.size(); ++c)
+          v[c] += found[k][c] / n;
+    }
     PointValues<dim> result;
     result.x            = x;
     result.displacement = Tensor<1, dim>({v[0], v[1]});
@@ -378,6 +388,20 @@ namespace ddcontact
   PointValues<dim>
   BodyStresses<dim>::at_point(const Point<dim> &x) const
   {
+    return at_point(x, false);
+  }
+
+  template <int dim>
+  PointValues<dim>
+  BodyStresses<dim>::averaged_at_point(const Point<dim> &x) const
+  {
+    return at_point(x, true);
+  }
+
+  template <int dim>
+  PointValues<dim>
+  BodyStresses<dim>::at_point(const Point<dim> &x, const bool averaged) const
+  {
     std::ostringstream message;
     message << std::setprecision(std::numeric_limits<double>::max_digits10)
             << "Output/Points: the point (" << x << ") does not lie in body '"
@@ -386,7 +410,7 @@ namespace ddcontact
 
     PointValues<dim> result;
     if (body.is_mesh_distributed())
-      result = at_point_distributed(x, outside);
+      result = at_point_distributed(x, outside, averaged);
     else
     {
       // The cache version reports a point outside the mesh by an invalid
@@ -396,13 +420,28 @@ namespace ddcontact
       const auto found = GridTools::find_active_cell_around_point(cache, x);
       if (found.first.state() != IteratorState::valid)
         throw outside;
-      result = at_unit_point(
-        typename DoFHandler<dim>::active_cell_iterator(&tria,
-                                                       found.first->level(),
-                                                       found.first->index(),
-                                                       &body.get_dof_handler()),
-        found.second,
-        x);
+      const auto with_dofs = [&](const auto &cell)
+      {
+        return typename DoFHandler<dim>::active_cell_iterator(
+          &tria, cell->level(), cell->index(), &body.get_dof_handler());
+      };
+      result = at_unit_point(with_dofs(found.first), found.second, x);
+      if (averaged)
+      {
+        const auto around = GridTools::find_all_active_cells_around_point(
+          body.get_mapping(), tria, x, 1e-10, found);
+        if (around.size() > 1)
+        {
+          result.stress       = 0;
+          result.out_of_plane = 0;
+          for (const auto &[cell, xi] : around)
+          {
+            const auto v = at_unit_point(with_dofs(cell), xi, x);
+            result.stress += v.stress / double(around.size());
+            result.out_of_plane += v.out_of_plane / around.size();
+          }
+        }
+      }
     }
     result.von_mises =
       body.get_material().von_mises(result.stress, result.out_of_plane);

@@ -237,12 +237,17 @@ namespace ddcontact
     // contact points' coefficients stay valid.
     make_constraints();
     // The matrix does not change with t (the same constraint lines; only
-    // their inhomogeneities and the loads do): the factorization stays.
+    // their inhomogeneities and the loads do): the factorization stays,
+    // and only the load is assembled again.
     if (solved_here)
     {
-      assemble_system();
-      if (!is_factorized)
+      if (is_factorized)
+        assemble_load();
+      else
+      {
+        assemble_system();
         factorize();
+      }
     }
   }
 

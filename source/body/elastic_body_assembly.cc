@@ -88,7 +88,52 @@ namespace ddcontact
                          copy.local_dof_indices[0]);
     };
     assemble_cells(copier);
+    finish_assembly(data_load, non_finite_load);
+  }
 
+  template <int dim>
+  void
+  ElasticBody<dim>::assemble_load()
+  {
+    // The matrix stays (the same constraint lines): only the cells with a
+    // load or an inhomogeneous dof are visited (issue 60: Steps = auto spent
+    // a quarter of its time assembling the same matrix again).
+    linear_solver->zero_load();
+    BodyVector data_load;
+    if (is_floating())
+    {
+      if (distributed_vectors && group_layout)
+        data_load.reinit(group_layout);
+      else
+        reinit_vector(data_load);
+    }
+    bool       non_finite_load = false;
+    const auto copier          = [&](const MeshWorker::CopyData<1, 1, 1> &copy)
+    {
+      // (A cell without load arrives without dofs.)
+      if (copy.local_dof_indices[0].empty())
+        return;
+      for (const double v : copy.vectors[0])
+        non_finite_load = non_finite_load || !std::isfinite(v);
+      if (non_finite_load)
+        return;
+      if (is_floating())
+        for (unsigned int i = 0; i < copy.local_dof_indices[0].size(); ++i)
+          data_load(copy.local_dof_indices[0][i]) += copy.vectors[0](i);
+      linear_solver->add_load(constraints,
+                              copy.matrices[0],
+                              copy.vectors[0],
+                              copy.local_dof_indices[0]);
+    };
+    assemble_cells(copier, true);
+    finish_assembly(data_load, non_finite_load);
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::finish_assembly(BodyVector &data_load,
+                                    const bool  non_finite_load)
+  {
     if (non_finite_load)
       throw_non_finite_load(*this);
     mode_loads.clear();
@@ -106,6 +151,27 @@ namespace ddcontact
                           mesh.group_communicator(),
                           ArrayView<double>(mode_loads));
     linear_solver->compress();
+  }
+
+  template <int dim>
+  bool
+  ElasticBody<dim>::loaded_cell(
+    const typename DoFHandler<dim>::active_cell_iterator &cell) const
+  {
+    if (boundary_conditions.body_force)
+      return true;
+    if (cell->at_boundary())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() &&
+            boundary_conditions.neumann.count(face->boundary_id()) > 0)
+          return true;
+    std::vector<types::global_dof_index> dofs(fe->n_dofs_per_cell());
+    cell->get_dof_indices(dofs);
+    return std::any_of(dofs.begin(),
+                       dofs.end(),
+                       [&](const types::global_dof_index i) {
+                         return constraints.is_inhomogeneously_constrained(i);
+                       });
   }
 
   template <int dim>
@@ -148,8 +214,8 @@ namespace ddcontact
   template <int dim>
   void
   ElasticBody<dim>::assemble_cells(
-    const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier)
-    const
+    const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier,
+    const bool load_only) const
   {
     using Iterator = typename DoFHandler<dim>::active_cell_iterator;
     const FEValuesExtractors::Vector displacement(0);
@@ -168,6 +234,11 @@ namespace ddcontact
                                  MeshWorker::ScratchData<dim>  &scratch,
                                  MeshWorker::CopyData<1, 1, 1> &copy)
     {
+      if (load_only && !loaded_cell(cell))
+      {
+        copy.local_dof_indices[0].clear();
+        return;
+      }
       std::unique_ptr<FEValues<dim>> fresh;
       const auto                    &fe_values = reinit_without_similarity(
         scratch, cell, get_mapping(), *fe, *cell_quadrature, cell_flags, fresh);
@@ -223,7 +294,8 @@ namespace ddcontact
     {
       const auto it =
         boundary_conditions.neumann.find(cell->face(face_no)->boundary_id());
-      if (it == boundary_conditions.neumann.end())
+      if (it == boundary_conditions.neumann.end() ||
+          copy.local_dof_indices[0].empty())
         return;
       const auto                 &fe_face = scratch.reinit(cell, face_no);
       std::vector<Vector<double>> traction(fe_face.n_quadrature_points,
@@ -266,14 +338,14 @@ namespace ddcontact
                             MeshWorker::assemble_boundary_faces,
                           boundary_worker);
     if ((volumetric_quadrature != nullptr))
-      assemble_reduced_volumetric_term(copier);
+      assemble_reduced_volumetric_term(copier, load_only);
   }
 
   template <int dim>
   void
   ElasticBody<dim>::assemble_reduced_volumetric_term(
-    const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier)
-    const
+    const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier,
+    const bool load_only) const
   {
     using Iterator = typename DoFHandler<dim>::active_cell_iterator;
     const FEValuesExtractors::Vector displacement(0);
@@ -293,6 +365,11 @@ namespace ddcontact
                                        MeshWorker::ScratchData<dim>  &scratch,
                                        MeshWorker::CopyData<1, 1, 1> &copy)
     {
+      if (load_only && !loaded_cell(cell))
+      {
+        copy.local_dof_indices[0].clear();
+        return;
+      }
       std::unique_ptr<FEValues<dim>> fresh;
       const auto        &fe_values     = reinit_without_similarity(scratch,
                                                         cell,
@@ -341,9 +418,18 @@ namespace ddcontact
                                          BodyVector &,
                                          BodyVector &) const;
   template void
+  ElasticBody<2>::assemble_load();
+  template void
+  ElasticBody<2>::finish_assembly(BodyVector &, bool);
+  template bool
+  ElasticBody<2>::loaded_cell(
+    const typename DoFHandler<2>::active_cell_iterator &) const;
+  template void
   ElasticBody<2>::assemble_cells(
-    const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &) const;
+    const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &,
+    bool) const;
   template void
   ElasticBody<2>::assemble_reduced_volumetric_term(
-    const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &) const;
+    const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &,
+    bool) const;
 } // namespace ddcontact

@@ -68,6 +68,32 @@ namespace ddcontact
     const std::string        pair = "contact pair " + parameters.name + ": ";
     std::ostringstream       s;
     s << std::setprecision(3);
+    // Entries the chosen law or gap leaves unused: said, so that a run
+    // meant with friction or with a gap expression is not taken silently
+    // for one without (issue 60).
+    const auto unused = [&](const std::string &entry,
+                            const std::string &value,
+                            const std::string &because)
+    {
+      if (Utilities::trim(value) != "0")
+        warnings.push_back(pair + entry + " = " + value +
+                           " is not used: " + because);
+    };
+    if (parameters.friction != FrictionLaw::tresca)
+      unused("Friction bound",
+             parameters.friction_bound,
+             "Friction = " + selection_name(parameters.friction) +
+               " (tresca uses it)");
+    if (parameters.friction != FrictionLaw::coulomb)
+      unused("Friction coefficient",
+             parameters.friction_coefficient,
+             "Friction = " + selection_name(parameters.friction) +
+               " (coulomb uses it)");
+    if (parameters.gap_type == GapType::geometric)
+      unused("Gap",
+             parameters.gap_expression,
+             "Gap type = geometric measures the gap between the meshes "
+             "(Gap type = expression uses it)");
     if (report.n_points == 0)
     {
       s << pair << "no point of the zone of '" << body_1.name()

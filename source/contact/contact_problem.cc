@@ -1,4 +1,5 @@
 #include <ddcontact/contact/contact_problem.h>
+#include <ddcontact/contact/zone_extent.h>
 #include <ddcontact/parameter_tools.h>
 
 #include <algorithm>
@@ -208,22 +209,115 @@ namespace ddcontact
 
   namespace
   {
-    /** Half the arc length along S_1 of the points @p q of @p pair for
-     * which @p selected(q) holds (0 for none; ZoneArcLength): the
-     * half-width of the active set or of the stick zone. */
-    template <typename Selected>
-    double
-    half_extent(const ContactPair &pair, const Selected &selected)
+    /** @p value at the points of @p pair as samples along S_1. */
+    std::vector<ZoneExtent::Sample>
+    point_samples(const ContactPair &pair, const std::vector<double> &value)
     {
-      std::vector<unsigned int> faces;
-      std::vector<Point<2>>     x;
-      for (unsigned int q = 0; q < pair.points().size(); ++q)
-        if (selected(q))
+      std::vector<ZoneExtent::Sample> samples;
+      for (unsigned int q = 0; q < value.size(); ++q)
+      {
+        const auto [c, s] = pair.zone_arc_length().position(
+          pair.points()[q].face, pair.points()[q].x);
+        samples.push_back({c, s, value[q]});
+      }
+      return samples;
+    }
+
+    /** The nodal values p_i of a field sum_i p_i phi_i given at the points
+     * of @p pair (@p value): on each face of S_1 the line through its
+     * points, at the face's ends (one sample per node of S_1). */
+    std::vector<ZoneExtent::Sample>
+    nodal_samples(const ContactPair &pair, const std::vector<double> &value)
+    {
+      const auto &arcs  = pair.zone_arc_length();
+      const auto &faces = pair.zone_faces_1();
+      std::vector<std::vector<std::pair<double, double>>> on_face(faces.size());
+      for (unsigned int q = 0; q < value.size(); ++q)
+      {
+        const auto &pt = pair.points()[q];
+        on_face[pt.face].emplace_back(arcs.position(pt.face, pt.x).second,
+                                      value[q]);
+      }
+      std::vector<ZoneExtent::Sample> nodes;
+      double                          shortest = 0;
+      for (unsigned int f = 0; f < faces.size(); ++f)
+      {
+        const auto &points = on_face[f];
+        if (points.empty())
+          continue;
+        // Least squares: exact for the linear field on the face.
+        double s_mean = 0, v_mean = 0;
+        for (const auto &[s, v] : points)
         {
-          faces.push_back(pair.points()[q].face);
-          x.push_back(pair.points()[q].x);
+          s_mean += s / points.size();
+          v_mean += v / points.size();
         }
-      return pair.zone_arc_length().half_extent(faces, x);
+        double ss = 0, sv = 0;
+        for (const auto &[s, v] : points)
+        {
+          ss += (s - s_mean) * (s - s_mean);
+          sv += (s - s_mean) * (v - v_mean);
+        }
+        const double slope = (ss > 0) ? sv / ss : 0.;
+        for (const auto &end : faces[f])
+        {
+          const auto [c, s] = arcs.position(f, end);
+          nodes.push_back({c, s, v_mean + slope * (s - s_mean)});
+        }
+        const double length = faces[f][0].distance(faces[f][1]);
+        shortest = (shortest == 0) ? length : std::min(shortest, length);
+      }
+      // A node shared by two faces once, with the mean of its two values
+      // (equal up to round-off); on a closed curve s = L is s = 0.
+      std::sort(nodes.begin(),
+                nodes.end(),
+                [](const auto &a, const auto &b)
+                { return std::tie(a.curve, a.s) < std::tie(b.curve, b.s); });
+      const double same = 1e-8 * shortest;
+      for (auto &x : nodes)
+        if (arcs.is_closed(x.curve) && arcs.length(x.curve) - x.s < same)
+          x.s = 0;
+      std::sort(nodes.begin(),
+                nodes.end(),
+                [](const auto &a, const auto &b)
+                { return std::tie(a.curve, a.s) < std::tie(b.curve, b.s); });
+      std::vector<ZoneExtent::Sample> merged;
+      unsigned int                    count = 0;
+      for (const auto &x : nodes)
+        if (!merged.empty() && merged.back().curve == x.curve &&
+            x.s - merged.back().s < same)
+        {
+          ++count;
+          merged.back().value += (x.value - merged.back().value) / count;
+        }
+        else
+        {
+          merged.push_back(x);
+          count = 1;
+        }
+      return merged;
+    }
+
+    /** The extents of the zone @p zone into @p half_width (half the
+     * extent; a zone that reaches the axis of an axisymmetric body counts
+     * its mirror image: a sphere's half-width is its contact radius), and,
+     * in axisymmetry, the largest r of its edges into @p radius. */
+    void
+    measure(const ContactPair &pair,
+            const ZoneExtent  &zone,
+            double            &half_width,
+            double            *radius)
+    {
+      const auto &arcs    = pair.zone_arc_length();
+      const auto  on_axis = [&](const unsigned int c, const double s)
+      { return std::abs(arcs.point(c, s)[0]) <= 1e-10 * arcs.length(c); };
+      half_width = 0.5 * zone.extent();
+      if (radius == nullptr)
+        return;
+      half_width += 0.5 * zone.extent_at(on_axis);
+      *radius = 0;
+      for (const auto &e : zone.edges())
+        *radius = std::max(*radius, arcs.point(e.curve, e.s)[0]);
     }
   } // namespace
 
@@ -262,38 +356,57 @@ namespace ddcontact
       state.tangential_force = 0;
       for (unsigned int q = 0; q < friction.t.size(); ++q)
         state.tangential_force -= friction.t[q] * pair.points()[q].JxW;
-      state.stick_half_width =
-        half_extent(pair,
-                    [&](const unsigned int q)
-                    { return friction.state[q] == NodeState::stick; });
     }
     for (unsigned int q = 0; q < state.sigma_n.size(); ++q)
     {
       const auto &pt     = pair.points()[q];
       state.max_pressure = std::max(state.max_pressure, -state.sigma_n[q]);
       state.normal_force -= state.sigma_n[q] * pt.JxW;
-      if (state.sigma_n[q] < 0)
-        state.contact_length += pt.ds;
       state.max_penetration =
         std::max(state.max_penetration, state.u_1n[q] + state.u_2n[q] - pt.gap);
     }
-    state.half_width = half_extent(
-      pair, [&](const unsigned int q) { return state.sigma_n[q] < 0; });
-    if (pair.get_body_1().get_geometry() == Geometry::axisymmetric)
+    // The zone's extents to a fraction of a cell (ZoneExtent): from the
+    // nodal multipliers where the solver has them (the nodal values of the
+    // reported field sum_i p_i psi_i, the points' values between), else
+    // from the pressure at the points.
+    const bool axisymmetric =
+      pair.get_body_1().get_geometry() == Geometry::axisymmetric;
+    const bool nodal = published && !pair.points().empty() &&
+                       published->load_sigma_n.size() == pair.points().size();
+    std::vector<double> p_zone(state.sigma_n.size());
+    for (unsigned int q = 0; q < p_zone.size(); ++q)
+      p_zone[q] = -state.sigma_n[q];
+    const ZoneExtent zone(pair.zone_arc_length(),
+                          nodal ? nodal_samples(pair, p_zone)
+                                : point_samples(pair, p_zone),
+                          ZoneExtent::EdgeModel::square_root);
+    state.contact_length    = zone.length();
+    state.extent_resolution = zone.resolution();
+    measure(pair,
+            zone,
+            state.half_width,
+            axisymmetric ? &state.contact_radius : nullptr);
+    if (!state.slip_state.empty())
     {
-      state.contact_radius = 0;
-      for (unsigned int q = 0; q < state.sigma_n.size(); ++q)
-        if (state.sigma_n[q] < 0)
-          state.contact_radius =
-            std::max(state.contact_radius, pair.points()[q].x[0]);
-      if (!state.slip_state.empty())
-      {
-        state.stick_radius = 0;
-        for (unsigned int q = 0; q < state.slip_state.size(); ++q)
-          if (state.slip_state[q] == NodeState::stick)
-            state.stick_radius =
-              std::max(state.stick_radius, pair.points()[q].x[0]);
-      }
+      // The stick zone ends where the margin |t| < bound closes, between
+      // a sticking point and the next one that does not stick.
+      std::vector<double> stick(state.slip_state.size());
+      for (unsigned int q = 0; q < stick.size(); ++q)
+        stick[q] = (state.slip_state[q] == NodeState::stick) ? 1. : -1.;
+      const ZoneExtent stick_zone(pair.zone_arc_length(),
+                                  point_samples(pair, stick),
+                                  ZoneExtent::EdgeModel::midpoint);
+      state.stick_resolution = stick_zone.resolution();
+      measure(pair,
+              stick_zone,
+              state.stick_half_width,
+              axisymmetric ? &state.stick_radius : nullptr);
+      // A stick zone that reaches the zone's edge (a point that does not
+      // stick beyond it is open, not slipping) ends with it.
+      state.stick_half_width =
+        std::min(state.stick_half_width, state.half_width);
+      if (axisymmetric)
+        state.stick_radius = std::min(state.stick_radius, state.contact_radius);
     }
     // The peak is that of the field written to the CSV and the VTU, at the
     // contact points; the largest nodal multiplier (exact contact, Contact

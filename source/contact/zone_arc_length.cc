@@ -1,6 +1,9 @@
 #include <ddcontact/contact/zone_arc_length.h>
 
+#include <deal.II/base/exceptions.h>
+
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace ddcontact
@@ -86,6 +89,35 @@ namespace ddcontact
   {
     const auto &ends = faces[face];
     return {curve[face], start[face] + x.distance(ends[forward[face] ? 0 : 1])};
+  }
+
+  Point<2>
+  ZoneArcLength::point(const unsigned int c, double s) const
+  {
+    if (closed[c] && curve_length[c] > 0)
+      s -= curve_length[c] * std::floor(s / curve_length[c]);
+    // The face of the curve that holds s (the nearest one past an end).
+    int    best     = -1;
+    double distance = 0;
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      if (curve[f] == c)
+      {
+        const double length = faces[f][0].distance(faces[f][1]);
+        const double d = std::max({start[f] - s, s - start[f] - length, 0.});
+        if (best < 0 || d < distance)
+        {
+          best     = f;
+          distance = d;
+        }
+      }
+    Assert(best >= 0, ExcMessage("A curve without faces"));
+    const auto  &ends   = faces[best];
+    const double length = ends[0].distance(ends[1]);
+    const double along =
+      std::clamp((s - start[best]) / std::max(length, 1e-300), 0., 1.);
+    const Point<2> &from = ends[forward[best] ? 0 : 1];
+    const Point<2> &to   = ends[forward[best] ? 1 : 0];
+    return from + along * (to - from);
   }
 
   double

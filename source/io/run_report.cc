@@ -129,7 +129,7 @@ namespace ddcontact
                                     const std::string &suffix) const
   {
     if (writes_files)
-      write_contact_profiles(results, contact_states(results), suffix);
+      write_contact_profiles(results, current_states(results), suffix);
   }
 
   void
@@ -180,6 +180,7 @@ namespace ddcontact
     // tau = n_1 turned by +90 degrees.
     json["tangential_force"]  = state.tangential_force;
     json["stick_half_width"]  = state.stick_half_width;
+    json["stick_resolution"]  = state.stick_resolution;
     json["dissipated_energy"] = state.dissipation;
   }
 
@@ -215,7 +216,7 @@ namespace ddcontact
   {
     std::ostringstream suffix;
     suffix << "_step" << std::setw(4) << std::setfill('0') << step;
-    const auto states = contact_states(results);
+    const auto states = current_states(results);
     write_contact_profiles(results, states, suffix.str());
     Json row, pairs = Json::array();
     row["step"] = step;
@@ -251,7 +252,7 @@ namespace ddcontact
     Json supports = Json::array();
     for (const auto &body : results.bodies)
     {
-      const auto reactions = reactions_of(results, states, *body);
+      const auto reactions = current_reactions(results, states, *body);
       for (const auto &s : reactions.supports())
       {
         Json support;
@@ -302,13 +303,25 @@ namespace ddcontact
             << " (at the contact points, as written)";
       if (state.max_nodal_pressure > 0)
         pcout << ", largest nodal multiplier " << state.max_nodal_pressure;
+      // The extents with the cells their edges lie in (ZoneExtent); a zone
+      // about the axis has its contact radius as its half-width.
       if (state.contact_radius >= 0)
         pcout << ", contact radius " << state.contact_radius;
-      pcout << ", half-width " << state.half_width << ", max penetration "
-            << state.max_penetration;
+      if (state.contact_radius != state.half_width)
+        pcout << ", half-width " << state.half_width;
+      if (state.extent_resolution > 0)
+        pcout << " (edges inside cells of " << state.extent_resolution << ")";
+      pcout << ", max penetration " << state.max_penetration;
       if (!state.t.empty())
-        pcout << "; stick half-width " << state.stick_half_width
-              << ", dissipated " << state.dissipation;
+      {
+        if (state.stick_radius >= 0)
+          pcout << "; stick radius " << state.stick_radius;
+        if (state.stick_radius != state.stick_half_width)
+          pcout << "; stick half-width " << state.stick_half_width;
+        if (state.stick_resolution > 0)
+          pcout << " (edges inside cells of " << state.stick_resolution << ")";
+        pcout << ", dissipated " << state.dissipation;
+      }
       pcout << std::endl;
     }
   }
@@ -371,7 +384,7 @@ namespace ddcontact
   void
   RunReport::write_final(const Results &results, const RunOutcome outcome)
   {
-    const auto states = contact_states(results);
+    const auto states = current_states(results);
     if (const auto *solver = results.contact_solver)
     {
       write_history(solver->history());

@@ -95,10 +95,17 @@ namespace ddcontact
 
   SelfChecks::SelfChecks(const RunReport::Results &results,
                          const double              tolerance)
+    : SelfChecks(results, RunReport::answer_of(results), tolerance)
+  {
+  }
+
+  SelfChecks::SelfChecks(const RunReport::Results &results,
+                         const RunReport::Answer  &answer,
+                         const double              tolerance)
   {
     // The solvers' relative residuals reach round-off, not below it.
     const double limit = std::max(limit_factor * tolerance, 1e-12);
-    const std::vector<ContactState> states = RunReport::contact_states(results);
+    const std::vector<ContactState> &states = answer.states;
 
     // Finite numbers: the displacements of every body, the forces of
     // every pair.
@@ -186,13 +193,12 @@ namespace ddcontact
                           "the bodies do not balance the forces they "
                           "exchange; " +
                             law_advice(results)};
-    for (const auto &body : results.bodies)
+    for (unsigned int b = 0; b < results.bodies.size(); ++b)
     {
-      const double imbalance =
-        RunReport::reactions_of(results, states, *body)
-          .relative_imbalance(
-            body->get_geometry() == Geometry::axisymmetric,
-            1e-6 * ReactionForces<2>::force_scale(*body, body->get_solution()));
+      const auto  &body      = results.bodies[b];
+      const double imbalance = answer.reactions[b].relative_imbalance(
+        body->get_geometry() == Geometry::axisymmetric,
+        1e-6 * ReactionForces<2>::force_scale(*body, body->get_solution()));
       if (!(imbalance <= equilibrium.value))
       {
         equilibrium.value = imbalance;

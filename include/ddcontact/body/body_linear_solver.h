@@ -85,6 +85,19 @@ namespace ddcontact
     virtual void
     zero() = 0;
 
+    /** Set the load alone to zero before assemble_load(): the matrix is
+     * kept. */
+    virtual void
+    zero_load() = 0;
+
+    /** Add one cell's load, condensed by @p constraints; @p cell_matrix
+     * moves the Dirichlet inhomogeneities into it, as add() does. */
+    virtual void
+    add_load(const AffineConstraints<double>            &constraints,
+             const FullMatrix<double>                   &cell_matrix,
+             const Vector<double>                       &cell_load,
+             const std::vector<types::global_dof_index> &dof_indices) = 0;
+
     /** Add one cell's matrix and load, condensed by @p constraints. */
     virtual void
     add(const AffineConstraints<double>            &constraints,

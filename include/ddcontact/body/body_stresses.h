@@ -101,6 +101,13 @@ namespace ddcontact
     PointValues<dim>
     at_point(const Point<dim> &x) const;
 
+    /** The same, the stress the mean over every cell that holds @p x: at a
+     * vertex or an edge, where the stress jumps between the cells, a
+     * continuous value (O(h^2) at an interior vertex of a smooth field,
+     * where one cell's is O(h) off); inside a cell its own. */
+    PointValues<dim>
+    averaged_at_point(const Point<dim> &x) const;
+
     /** The largest strain and the largest rotation of the body, each the
      * largest over the cell centres (of this process's cells): the
      * largest principal strain magnitude of eps(u) (1), and |omega| of the
@@ -129,7 +136,13 @@ namespace ddcontact
      * processes, which all ask for @p x. Throws @p outside if no process
      * holds it. */
     PointValues<dim>
-    at_point_distributed(const Point<dim> &x, const InputError &outside) const;
+    at_point_distributed(const Point<dim> &x,
+                         const InputError &outside,
+                         bool              averaged = false) const;
+
+    /** at_point() or averaged_at_point(). */
+    PointValues<dim>
+    at_point(const Point<dim> &x, bool averaged) const;
 
     /** The one-point rule at the centre of the body's cells. */
     Quadrature<dim>

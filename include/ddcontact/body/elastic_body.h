@@ -450,18 +450,39 @@ namespace ddcontact
 
   private:
     /** The cell matrices of a_a (11) and the loads of l_a (12) of this
-     * process's cells, each passed to @p copier (one thread at a time). */
+     * process's cells, each passed to @p copier (one thread at a time);
+     * with @p load_only only the cells that carry a load or a Dirichlet
+     * inhomogeneity (loaded_cell()), the others handed over without dofs. */
     void
     assemble_cells(
-      const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier)
-      const;
+      const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier,
+      bool load_only = false) const;
 
     /** The lambda div u div v term of a_a (11) on one Gauss point per cell
-     * (see get_volumetric_quadrature()), through @p copier. */
+     * (see get_volumetric_quadrature()), through @p copier; @p load_only
+     * as in assemble_cells(). */
     void
     assemble_reduced_volumetric_term(
-      const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier)
-      const;
+      const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier,
+      bool load_only = false) const;
+
+    /** Whether @p cell adds to the load vector: a body force, a Neumann
+     * face, or a dof whose constraint is inhomogeneous (its matrix column
+     * moves the Dirichlet values into the load). */
+    bool
+    loaded_cell(
+      const typename DoFHandler<dim>::active_cell_iterator &cell) const;
+
+    /** The load vector alone, for a new load time on the same matrix
+     * (set_load_time()): the cells of loaded_cell() only. */
+    void
+    assemble_load();
+
+    /** After an assembly: the loads' work on the rigid modes of a floating
+     * body (@p data_load, the loads as assembled), the non-finite load
+     * named, the solver's entries exchanged. */
+    void
+    finish_assembly(BodyVector &data_load, bool non_finite_load);
 
     /** A new linear solver with its sparsity pattern, where the body is
      * solved. */

@@ -75,12 +75,21 @@ namespace ddcontact
     Tensor<1, 2>        force_1, force_2;
     double              max_pressure = 0; // over the contact points
     double max_nodal_pressure        = 0; // over the nodal multipliers, 0: none
-    double contact_length            = 0;
+    // The length of the zone along S_1, its gaps left out (ZoneExtent).
+    double contact_length = 0;
     // The integral of the pressure along S_1 (each point's own normal).
     double normal_force = 0;
-    double half_width   = 0; // half the arc length of the active set
-    // Axisymmetric zones (Geometry): the largest r of the active set and
-    // of the stick zone, the contact and stick radii of a zone about the
+    // Half the extent of the zone along S_1, its edges placed inside their
+    // cells (ZoneExtent); a zone that reaches the axis counts its mirror
+    // image (then the contact radius).
+    double half_width = 0;
+    // The largest cell at an edge of the zone, and of the stick zone, not
+    // at an end of S_1 (ZoneExtent::resolution()): how far an edge may be
+    // off when the profile is not the assumed one.
+    double extent_resolution = 0;
+    double stick_resolution  = 0;
+    // Axisymmetric zones (Geometry): the largest r of the zone's edges and
+    // of the stick zone's, the contact and stick radii of a zone about the
     // axis (Hertz's a); -1 in plane strain.
     double contact_radius  = -1;
     double stick_radius    = -1;

@@ -37,6 +37,11 @@ namespace ddcontact
     std::pair<unsigned int, double>
     position(unsigned int face, const Point<2> &x) const;
 
+    /** The point at arc length @p s of curve @p curve (modulo its length
+     * on a closed curve); the inverse of position(). */
+    Point<2>
+    point(unsigned int curve, double s) const;
+
     /** Half the sum over the curves of the extent of the points @p x
      * (on faces @p faces): the half-width of a contact or stick set. */
     double

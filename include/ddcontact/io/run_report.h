@@ -16,6 +16,7 @@
 
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -140,6 +141,33 @@ namespace ddcontact
                  const std::vector<ContactState> &states,
                  const ElasticBody<2>            &body);
 
+    /** The contact states and every body's reactions of one answer: the
+     * post-processing that SelfChecks and the summary share. */
+    struct Answer
+    {
+      std::vector<ContactState> states;
+      /** In the order of Results::bodies. */
+      std::vector<ReactionForces<2>> reactions;
+    };
+
+    /** The Answer of the current solution. Collective. */
+    static Answer
+    answer_of(const Results &results);
+
+    /** The Answer of the current solution, computed now and used by every
+     * report until forget_answer(): the driver fixes it once a solve has
+     * returned, so that its checks and its files cost one evaluation.
+     * Collective. */
+    const Answer &
+    fix_answer(const Results &results);
+
+    /** The solution is about to change: the reports compute again. */
+    void
+    forget_answer()
+    {
+      fixed_answer.reset();
+    }
+
     /** summary.json's `self_checks` (SelfChecks::json()) of the last
      * solve, in every summary from now on. */
     void
@@ -217,6 +245,16 @@ namespace ddcontact
     }
 
   private:
+    /** The fixed answer's states (fix_answer()), or those of now. */
+    std::vector<ContactState>
+    current_states(const Results &results) const;
+
+    /** The fixed answer's reactions of @p body, or reactions_of() now. */
+    ReactionForces<2>
+    current_reactions(const Results                   &results,
+                      const std::vector<ContactState> &states,
+                      const ElasticBody<2>            &body) const;
+
     /** write_summary() in the pairs' contact @p states
      * (contact_states()). */
     void
@@ -296,6 +334,7 @@ namespace ddcontact
     Json                     load_path;    // record_load_path()
     std::vector<std::string> run_warnings; // record_load_path(), add_warning()
     std::string              last_completed_step;
+    std::optional<Answer>    fixed_answer; // fix_answer()
   };
 } // namespace ddcontact
 

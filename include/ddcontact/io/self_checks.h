@@ -74,6 +74,13 @@ namespace ddcontact
      * solver/Tolerance @p tolerance. Collective (the reactions). */
     SelfChecks(const RunReport::Results &results, double tolerance);
 
+    /** The same on the states and reactions @p answer of @p results
+     * (RunReport::fix_answer()), computed once for the checks and the
+     * report. Collective. */
+    SelfChecks(const RunReport::Results &results,
+               const RunReport::Answer  &answer,
+               double                    tolerance);
+
     /** Checks built one by one (tests). */
     explicit SelfChecks(std::vector<SelfCheck> checks);
 
