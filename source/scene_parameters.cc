@@ -249,6 +249,24 @@ namespace ddcontact
           " needs Adaptation/Mode = none: a load step solved again from its "
           "start needs the start's meshes, which the adaptive loop refines; "
           "with adaptation give a fixed number of Steps");
+      // A step's estimated path error holds the solves' own error, of the
+      // order of their Tolerance: a Path tolerance below it splits every
+      // step to the floor of Max splits (2^30 steps: a run that never
+      // ends) and says nothing about the path.
+      const double floor = 10 * scene.contact_solver.tolerance;
+      if ((scene.loading.automatic || scene.loading.check_path) &&
+          frictional != scene.contact_pairs.end() &&
+          scene.loading.path_tolerance < floor)
+      {
+        std::ostringstream s;
+        s << "Loading/Path tolerance = " << scene.loading.path_tolerance
+          << " is below what the solves resolve (10 x Contact "
+             "solver/Tolerance = "
+          << floor
+          << "): every step would be split down to 2^-(Loading/Max splits); "
+             "raise the Path tolerance or lower the Tolerance";
+        throw InputError(s.str());
+      }
     }
 
     /** The subsection Output. */

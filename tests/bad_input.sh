@@ -348,6 +348,11 @@ sed '0,/^end/s/^end//' "$base" >"$work/no_end.prm"
 case_ "subsection without its end" "has no 'end' before line" "$work/no_end.prm"
 sed '0,/^end/s/^end/end\nend/' "$base" >"$work/two_ends.prm"
 case_ "end without its subsection" "an 'end' without its 'subsection'" "$work/two_ends.prm"
+# A Path tolerance below the solves' own error split every step to the
+# floor, and Max splits = 30 made that floor 2^30 steps: a run that never
+# ended (issue 59).
+case_ "Path tolerance below the solver's" "Loading/Path tolerance = 1e-300 is below what the solves resolve" "$friction" --set "Loading/Steps=auto" --set "Loading/Path tolerance=1e-300"
+case_ "Max splits = 30" "Loading/Max splits = '30': out of range: a whole number from 1 to 20" "$friction" --set "Loading/Max splits=30"
 
 total=$(( $(grep -c -E '^(expect_code=[0-9]+ )?(mpi_|file_)?case_ ' "$0") + 4 ))  # and four checks of outputs
 total=$((total - skipped))

@@ -48,10 +48,11 @@ namespace ddcontact
       "solution is kept) and warn where it exceeds Path tolerance.");
     prm.declare_entry("Max splits",
                       "10",
-                      Patterns::Integer(1, 30),
+                      Patterns::Integer(1, 20),
                       "Steps = auto: the smallest step is 2^-(Max splits); "
                       "a step that still exceeds the tolerance there is "
-                      "accepted with a warning.");
+                      "accepted with a warning. At most 20 (a million "
+                      "steps of the smallest length; Steps takes 100000).");
   }
 
   void

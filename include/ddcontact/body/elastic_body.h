@@ -478,11 +478,11 @@ namespace ddcontact
     void
     assemble_load();
 
-    /** After an assembly: the loads' work on the rigid modes of a floating
-     * body (@p data_load, the loads as assembled), the non-finite load
+    /** assemble_system(), or with @p load_only assemble_load(); then the
+     * loads' work on the rigid modes of a floating body, a non-finite load
      * named, the solver's entries exchanged. */
     void
-    finish_assembly(BodyVector &data_load, bool non_finite_load);
+    assemble(bool load_only);
 
     /** A new linear solver with its sparsity pattern, where the body is
      * solved. */
