@@ -269,10 +269,6 @@ namespace ddcontact
       }
       // A node shared by two faces once, with the mean of its two values
       // (equal up to round-off); on a closed curve s = L is s = 0.
-      std::sort(nodes.begin(),
-                nodes.end(),
-                [](const auto &a, const auto &b)
-                { return std::tie(a.curve, a.s) < std::tie(b.curve, b.s); });
       const double same = 1e-8 * shortest;
       for (auto &x : nodes)
         if (arcs.is_closed(x.curve) && arcs.length(x.curve) - x.s < same)
