@@ -71,7 +71,7 @@ main(int argc, char **argv)
     body.solve();
     const double fem_solve = timer.wall_time();
 
-    BoundaryElementSolver bem(body.get_material(),
+    BoundaryElementSolver bem(body.get_elastic_constants(),
                               body.get_boundary_conditions());
     if (argc > 3 && std::string(argv[3]) != "auto")
       bem.set_solver_method(std::string(argv[3]) == "lu"

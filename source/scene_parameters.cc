@@ -2,6 +2,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <ddcontact/body/boundary_data_checks.h>
+#include <ddcontact/body/material_laws.h>
 #include <ddcontact/output_file.h>
 #include <ddcontact/parameters.h>
 #include <deal.II/base/utilities.h>
@@ -340,6 +341,64 @@ namespace ddcontact
     }
   }
 
+  namespace
+  {
+    /** The bodies' material laws and the scene's geometry against what
+     * the contact solver and the estimator can take (their tables). */
+    void
+    check_material_laws(const SceneParameters &scene)
+    {
+      const auto &solver     = capabilities_of(scene.contact_solver.solver);
+      const auto &adaptation = scene.adaptation;
+      const bool  estimates =
+        adaptation.enabled() && adaptation.mode != AdaptationMode::uniform;
+      const auto &estimator = capabilities_of(adaptation.estimator);
+      // The BEM's kernels (Kelvin's solution) are those of plane strain;
+      // an axisymmetric body would need ring-load kernels
+      // (doc/axisymmetric.md).
+      if (scene.geometry == Geometry::axisymmetric && estimates &&
+          !estimator.axisymmetric)
+        throw InputError(
+          "Adaptation/Estimator: " + to_string(adaptation.estimator) +
+          " is written for plane strain; with Geometry = axisymmetric use "
+          "Estimator = " +
+          estimators_with(&EstimatorCapabilities::axisymmetric) +
+          " (or Mode = uniform)");
+      for (const auto &body : scene.bodies)
+      {
+        const MaterialLawInfo &info = material_law_info(body.material_law);
+        const std::string      law =
+          body.section() + "/Material/Law = " + body.material_law;
+        if (info.path_dependent && adaptation.enabled() &&
+            n_world_processes() > 1)
+          throw InputError(law + ": the law's state does not follow the "
+                                 "refinement of meshes shared between "
+                                 "processes yet; set Adaptation/Mode = none, "
+                                 "or run on one process");
+        if (info.linear)
+          continue;
+        const std::string solvers =
+          solvers_with(&SolverCapabilities::nonlinear_laws);
+        if (!solver.nonlinear_laws)
+          throw InputError(
+            law + ": Contact solver/Solver = " + scene.contact_solver.solver +
+            " solves linear bodies only" +
+            (solvers.empty() ? std::string(" (so far every solver)")
+                             : "; use Solver = " + solvers));
+        const std::string estimators =
+          estimators_with(&EstimatorCapabilities::nonlinear_laws);
+        if (estimates && !estimator.nonlinear_laws)
+          throw InputError(
+            law +
+            ": Adaptation/Estimator = " + to_string(adaptation.estimator) +
+            " estimates linear bodies only; use " +
+            (estimators.empty() ? std::string("")
+                                : "Estimator = " + estimators + " or ") +
+            "Mode = uniform");
+      }
+    }
+  } // namespace
+
   void
   SceneParameters::parse(ParameterHandler &prm)
   {
@@ -398,16 +457,7 @@ namespace ddcontact
                        " under mpirun");
 
     check_adaptation_bodies(*this);
-    // The BEM's kernels (Kelvin's solution) are those of plane strain; an
-    // axisymmetric body would need ring-load kernels (doc/axisymmetric.md).
-    if (geometry == Geometry::axisymmetric && adaptation.enabled() &&
-        adaptation.mode != AdaptationMode::uniform &&
-        is_fem_bem(adaptation.estimator))
-      throw InputError(
-        "Adaptation/Estimator: " + to_string(adaptation.estimator) +
-        " is written for plane strain; with Geometry = "
-        "axisymmetric use Estimator = residual or kelly (or Mode = "
-        "uniform)");
+    check_material_laws(*this);
     parse_contact_pairs(prm, *this);
     set_contact_formulation(*this);
     parse_output(prm, *this);

@@ -117,7 +117,7 @@ namespace ddcontact
   double
   Simulation::solve_step_twice(const double                     t_start,
                                const double                     t_end,
-                               const FrictionHistory           &start,
+                               const LoadStepStart             &start,
                                std::optional<LoadPathMeasures> &one_step)
   {
     if (!one_step)
@@ -227,7 +227,7 @@ namespace ddcontact
     // measures of the step solved at once, when a split made them known
     // (the first half of the rejected step is the whole of the next:
     // solve_step_twice() leaves them).
-    FrictionHistory                 start = contact_solver->load_step_start();
+    LoadStepStart                   start = contact_solver->load_step_start();
     std::optional<LoadPathMeasures> one_step;
     unsigned int                    k = 0;
     while (!control.finished())

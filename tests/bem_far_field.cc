@@ -40,7 +40,7 @@ main(int argc, char **argv)
     body.make_mesh();
     body.setup_and_factorize();
 
-    BoundaryElementSolver bem(body.get_material(),
+    BoundaryElementSolver bem(body.get_elastic_constants(),
                               body.get_boundary_conditions());
     bem.setup(body.get_dof_handler(), body.get_mapping());
     bem.solve();

@@ -27,8 +27,8 @@ namespace
   void
   check_free_terms(const std::string &name, Triangulation<2> &tria)
   {
-    const double nu = 0.3;
-    Material     material;
+    const double     nu = 0.3;
+    ElasticConstants material;
     material.youngs_modulus = 7.;
     material.poisson_ratio  = nu;
     // Traction free everywhere: a floating body; the diagonal blocks do

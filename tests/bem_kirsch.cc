@@ -42,7 +42,7 @@ namespace
   }
 
   Tensor<1, 2>
-  exact_displacement(const Point<2> &x, const Material &m)
+  exact_displacement(const Point<2> &x, const ElasticConstants &m)
   {
     const double mu = m.mu(), kappa = 3 - 4 * m.poisson_ratio;
     const double r = x.norm(), theta = std::atan2(x[1], x[0]);
@@ -81,7 +81,7 @@ namespace
 int
 main()
 {
-  const Material material = steel();
+  const ElasticConstants material = steel();
 
   // Colorized plate_with_a_hole: 0 left, 1 right, 2 bottom, 3 top, 4 hole
   // (traction free, not listed).

@@ -38,7 +38,7 @@ namespace
   }
 
   Tensor<1, 2>
-  exact_displacement(const Point<2> &x, const Material &m)
+  exact_displacement(const Point<2> &x, const ElasticConstants &m)
   {
     const double r = x.norm(), nu = m.poisson_ratio;
     const double u_r =
@@ -51,7 +51,7 @@ namespace
 int
 main()
 {
-  const Material material = steel();
+  const ElasticConstants material = steel();
 
   // Inner arc (id 0): contact id, loaded by samples of -p n; outer arc
   // (id 1): traction free; x = 0 (id 2) and y = 0 (id 3): rollers.

@@ -40,7 +40,8 @@ namespace
   class LinearField : public Function<2>
   {
   public:
-    LinearField(const Material &material, const SymmetricTensor<2, 2> &sigma)
+    LinearField(const ElasticConstants      &material,
+                const SymmetricTensor<2, 2> &sigma)
       : Function<2>(2)
     {
       const double E = material.youngs_modulus, nu = material.poisson_ratio;
@@ -102,8 +103,8 @@ namespace
            const Mapping<2>    &mapping,
            const Quadrature<2> &cell_quadrature)
   {
-    const Material        material = steel();
-    SymmetricTensor<2, 2> sigma;
+    const ElasticConstants material = steel();
+    SymmetricTensor<2, 2>  sigma;
     sigma[0][0] = 120.;
     sigma[1][1] = -75.;
     sigma[0][1] = test_case.shear_free ? 0. : 40.;
@@ -284,7 +285,7 @@ main()
     FESystem<2>   fe(FE_Q<2>(3), 2);
     DoFHandler<2> dof_handler(tria);
     dof_handler.distribute_dofs(fe);
-    Material material;
+    ElasticConstants material;
     material.youngs_modulus = 1;
     material.poisson_ratio  = 0.3;
     BoundaryElementSolver bem(material, BoundaryConditions<2>());

@@ -137,7 +137,7 @@ namespace
   class QuadraticField : public Function<2>
   {
   public:
-    QuadraticField(const Material &m)
+    QuadraticField(const ElasticConstants &m)
       : Function<2>(2)
       , E(m.youngs_modulus)
       , nu(m.poisson_ratio)
@@ -210,8 +210,8 @@ namespace
                       const Mapping<2>                      &mapping,
                       const std::vector<types::boundary_id> &dirichlet_ids)
   {
-    const Material material = steel();
-    const auto     field    = std::make_shared<QuadraticField>(material);
+    const ElasticConstants material = steel();
+    const auto             field = std::make_shared<QuadraticField>(material);
     const std::array<Tensor<1, 2>, 4> normals{{Tensor<1, 2>{{-1., 0.}},
                                                Tensor<1, 2>{{1., 0.}},
                                                Tensor<1, 2>{{0., -1.}},

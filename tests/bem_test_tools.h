@@ -55,10 +55,10 @@ namespace ddcontact
     };
 
     /** Steel: E = 2.1e5, nu = 0.3. */
-    inline Material
+    inline ElasticConstants
     steel()
     {
-      Material m;
+      ElasticConstants m;
       m.youngs_modulus = 2.1e5;
       m.poisson_ratio  = 0.3;
       return m;
@@ -256,7 +256,7 @@ namespace ddcontact
       class ExactDisplacement : public Function<2>
       {
       public:
-        ExactDisplacement(const Material &m)
+        ExactDisplacement(const ElasticConstants &m)
           : Function<2>(2)
           , E(m.youngs_modulus / (1. - m.poisson_ratio * m.poisson_ratio))
           , nu(m.poisson_ratio / (1. - m.poisson_ratio))
@@ -329,7 +329,7 @@ namespace ddcontact
             const unsigned int degree,
             const bool         floating = false)
       {
-        Material material;
+        ElasticConstants material;
         material.youngs_modulus = 1e3;
         material.poisson_ratio  = 0.3;
         const auto exact        = std::make_shared<ExactDisplacement>(material);

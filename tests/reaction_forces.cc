@@ -88,7 +88,7 @@ namespace
   check_block(const std::string &cell_type, const unsigned int degree)
   {
     const std::string label = cell_type + " degree " + std::to_string(degree);
-    Material          material;
+    ElasticConstants  material;
     material.youngs_modulus = 2.1e5;
     material.poisson_ratio  = 0.3;
     const double lambda = material.lambda(), mu = material.mu();

@@ -196,7 +196,7 @@ namespace ddcontact
     double
     solve_step_twice(double                           t_start,
                      double                           t_end,
-                     const FrictionHistory           &start,
+                     const LoadStepStart             &start,
                      std::optional<LoadPathMeasures> &one_step);
 
     /** The measures of the current solution. Collective. */

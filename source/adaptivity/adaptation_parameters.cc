@@ -17,6 +17,40 @@ namespace ddcontact
                       {"fraction", MarkingType::fraction},
                       {"doerfler", MarkingType::doerfler})
 
+  namespace
+  {
+    /** The estimators' capabilities: axisymmetric sections, nonlinear
+     * laws. */
+    const std::vector<std::pair<EstimatorType, EstimatorCapabilities>>
+      estimator_table = {{EstimatorType::fem_bem, {false, false}},
+                         {EstimatorType::fem_bem_scaled, {false, false}},
+                         {EstimatorType::kelly, {true, false}},
+                         {EstimatorType::residual, {true, false}}};
+  } // namespace
+
+  const EstimatorCapabilities &
+  capabilities_of(const EstimatorType type)
+  {
+    for (const auto &[t, can] : estimator_table)
+      if (t == type)
+        return can;
+    Assert(false, ExcInternalError());
+    return estimator_table.front().second;
+  }
+
+  std::string
+  estimators_with(bool EstimatorCapabilities::*capability)
+  {
+    std::vector<std::string> names;
+    for (const auto &[t, can] : estimator_table)
+      if (can.*capability)
+        names.push_back(to_string(t));
+    std::string list;
+    for (unsigned int i = 0; i < names.size(); ++i)
+      list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    return list;
+  }
+
   std::string
   to_string(const AdaptationMode value)
   {

@@ -12,7 +12,7 @@ namespace ddcontact
                                    const EstimatorType   variant)
     : body(body)
     , scaled(variant == EstimatorType::fem_bem_scaled)
-    , bem(body.get_material(), body.get_boundary_conditions())
+    , bem(body.get_elastic_constants(), body.get_boundary_conditions())
   {
     Assert(is_fem_bem(variant), ExcInternalError());
     // The boundary mesh (25) follows the FEM mesh: any refinement makes
@@ -39,8 +39,8 @@ namespace ddcontact
     double energy_error2 = 0, energy_norm2 = 0;
     // sigma : C^{-1} sigma in plane strain, (sigma:sigma - nu tr^2) / 2 mu:
     // the energy norm of the stress error, for the global estimate.
-    const double mu     = body.get_material().mu();
-    const double nu     = body.get_material().poisson_ratio;
+    const double mu     = body.get_elastic_constants().mu();
+    const double nu     = body.get_elastic_constants().poisson_ratio;
     const auto   energy = [&](const SymmetricTensor<2, 2> &s)
     { return (s * s - nu * trace(s) * trace(s)) / (2 * mu); };
     FEValues<2> fe_values(body.get_mapping(),

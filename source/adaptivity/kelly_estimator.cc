@@ -5,6 +5,7 @@
 #include <deal.II/numerics/error_estimator.h>
 
 #include <ddcontact/adaptivity/kelly_estimator.h>
+#include <ddcontact/body/section_kinematics.h>
 
 #include <cmath>
 
@@ -66,7 +67,7 @@ namespace ddcontact
   Tensor<1, 2>
   face_flux(const std::vector<Tensor<1, 2>> &gradient,
             const Tensor<1, 2>              &normal,
-            const Material                  *material)
+            const ElasticConstants          *material)
   {
     Tensor<1, 2> f;
     if (material == nullptr)
@@ -79,17 +80,21 @@ namespace ddcontact
     for (unsigned int i = 0; i < 2; ++i)
       for (unsigned int j = i; j < 2; ++j)
         strain[i][j] = 0.5 * (gradient[i][j] + gradient[j][i]);
-    return material->stress(strain) * normal / (2. * material->mu());
+    // sigma n / (2 mu) of the elastic tangent (the in-plane part; the hoop
+    // strain's lambda u_r / r is continuous and leaves the jumps).
+    const SymmetricTensor<2, 3> sigma =
+      material->tangent().apply(SectionKinematics::embed(strain, 0.));
+    return SectionKinematics::in_plane(sigma) * normal / (2. * material->mu());
   }
 
   void
-  face_jump_integrals(const Mapping<2>    &mapping,
-                      const DoFHandler<2> &dof_handler,
-                      const Quadrature<1> &face_quadrature,
-                      const BodyVector    &solution,
-                      const Material      *material,
-                      const Geometry       geometry,
-                      Vector<double>      &jumps)
+  face_jump_integrals(const Mapping<2>       &mapping,
+                      const DoFHandler<2>    &dof_handler,
+                      const Quadrature<1>    &face_quadrature,
+                      const BodyVector       &solution,
+                      const ElasticConstants *material,
+                      const Geometry          geometry,
+                      Vector<double>         &jumps)
   {
     const auto        &fe           = dof_handler.get_fe();
     const unsigned int n_components = fe.n_components();

@@ -137,7 +137,7 @@ namespace ddcontact
                       const std::vector<Tensor<1, 2>>   &g,
                       const std::vector<double>         &dS,
                       const ComponentMask               &prescribed,
-                      const Material                    &material,
+                      const ElasticConstants            &material,
                       const Geometry                     geometry)
     {
       const bool axisymmetric = geometry == Geometry::axisymmetric;
@@ -168,7 +168,7 @@ namespace ddcontact
   {
     const QGauss<1>             face_quadrature(body.get_fe().degree + 1);
     const auto                 &conditions = body.get_boundary_conditions();
-    const Material             &material   = body.get_material();
+    const ElasticConstants     &material   = body.get_elastic_constants();
     const Geometry              geometry   = body.get_geometry();
     const unsigned int          n_q        = face_quadrature.size();
     const unsigned int          degree     = body.get_fe().degree;
@@ -256,13 +256,13 @@ namespace ddcontact
   ResidualEstimator::add_cell_residuals(const BodyVector &solution,
                                         Vector<double>   &integrals) const
   {
-    const Material    &material = body.get_material();
-    const auto        &force    = body.get_boundary_conditions().body_force;
-    const Geometry     geometry = body.get_geometry();
-    const double       lambda = material.lambda(), mu = material.mu();
-    const auto        &quadrature = body.get_cell_quadrature();
-    const unsigned int n_q        = quadrature.size();
-    FEValues<2>        values(body.get_mapping(),
+    const ElasticConstants &material = body.get_elastic_constants();
+    const auto             &force = body.get_boundary_conditions().body_force;
+    const Geometry          geometry = body.get_geometry();
+    const double            lambda = material.lambda(), mu = material.mu();
+    const auto             &quadrature = body.get_cell_quadrature();
+    const unsigned int      n_q        = quadrature.size();
+    FEValues<2>             values(body.get_mapping(),
                        body.get_fe(),
                        quadrature,
                        update_values | update_gradients | update_hessians |
@@ -327,7 +327,7 @@ namespace ddcontact
                         body.get_dof_handler(),
                         QGauss<1>(body.get_fe().degree + 1),
                         u_fem,
-                        &body.get_material(),
+                        &body.get_elastic_constants(),
                         body.get_geometry(),
                         integrals);
     add_boundary_residuals(u_fem, contact, integrals);

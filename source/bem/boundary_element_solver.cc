@@ -15,7 +15,8 @@
 namespace ddcontact
 {
   BoundaryElementSolver::BoundaryElementSolver(
-    const Material &material, const BoundaryConditions<2> &boundary_conditions)
+    const ElasticConstants      &material,
+    const BoundaryConditions<2> &boundary_conditions)
     : material(material)
     , boundary_conditions(boundary_conditions)
     , kelvin(1., material.poisson_ratio)

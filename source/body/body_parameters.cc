@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <ddcontact/body/body_parameters.h>
+#include <ddcontact/body/material_laws.h>
 
 #include <string>
 #include <vector>
@@ -243,6 +244,14 @@ namespace ddcontact
                           "0.3",
                           Patterns::Double(),
                           "nu, in (-1, 0.5) (plane strain).");
+        prm.declare_entry("Law",
+                          material_laws().front().name,
+                          material_law_pattern(),
+                          material_law_documentation() +
+                            " Every law has the elastic constants Young's "
+                            "modulus and Poisson's ratio.");
+        for (const auto &row : material_laws())
+          row.declare(prm);
       }
       prm.leave_subsection();
     }
@@ -368,6 +377,16 @@ namespace ddcontact
       const std::string section = body.section() + "/";
       prm.enter_subsection("Material");
       {
+        body.material_law           = prm.get("Law");
+        const MaterialLawInfo &law  = material_law_info(body.material_law);
+        body.material_law_constants = law.parse(prm, section + "Material/");
+        if (body.volumetric_integration == VolumetricIntegration::reduced &&
+            !law.reduced_integration)
+          throw InputError(section +
+                           "Element/Volumetric integration = "
+                           "reduced: Material/Law = " +
+                           law.name +
+                           " has no reduced volumetric part; set it to full");
         body.material.youngs_modulus = prm.get_double("Young's modulus");
         body.material.poisson_ratio  = prm.get_double("Poisson's ratio");
         // Stiffness entries are E times O(1) factors summed over cells: at

@@ -22,108 +22,46 @@ namespace ddcontact
                                   const BodyVector       &u)
     : body(body)
     , u(u)
-    , axisymmetric(body.get_geometry() == Geometry::axisymmetric)
-    , axis_tolerance(
-        axisymmetric ? AxisOfSymmetry::tolerance(body.get_triangulation()) : 0.)
+    , kinematics(body.get_kinematics())
+    , law(body.get_material_law())
   {
+    // A path-dependent law's stress needs its quadrature-point state, which
+    // BodyStresses does not hold (yet).
+    Assert(!law.is_path_dependent(), ExcNotImplemented());
     const Quadrature<dim> *reduced = body.get_volumetric_quadrature();
     if (reduced == nullptr)
       return;
     dilatation.assign(body.get_triangulation().n_active_cells(), 0.);
-    FEValues<dim>                        fe_values(body.get_mapping(),
+    FEValues<dim>                      fe_values(body.get_mapping(),
                             body.get_fe(),
                             *reduced,
-                            strain_flags(update_gradients));
-    std::vector<SymmetricTensor<2, dim>> strain(reduced->size());
-    std::vector<double>                  hoop(reduced->size());
+                            kinematics.update_flags(update_gradients));
+    std::vector<SymmetricTensor<2, 3>> strain(reduced->size());
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (body.computes(cell))
       {
         fe_values.reinit(cell);
-        strains(fe_values, strain, hoop);
-        dilatation[cell->active_cell_index()] =
-          axisymmetric ? trace(strain[0]) + hoop[0] : trace(strain[0]);
+        kinematics.field_strains(fe_values, u, strain);
+        dilatation[cell->active_cell_index()] = trace(strain[0]);
       }
   }
 
   template <int dim>
-  UpdateFlags
-  BodyStresses<dim>::strain_flags(const UpdateFlags flags) const
+  SymmetricTensor<2, 3>
+  BodyStresses<dim>::stress(const SymmetricTensor<2, 3> &strain,
+                            const unsigned int           cell) const
   {
-    return axisymmetric ? flags | update_values | update_gradients |
-                            update_quadrature_points
-                        : flags | update_gradients;
-  }
-
-  template <int dim>
-  void
-  BodyStresses<dim>::strains(const FEValues<dim>                  &fe_values,
-                             std::vector<SymmetricTensor<2, dim>> &strain,
-                             std::vector<double>                  &hoop) const
-  {
-    const FEValuesExtractors::Vector displacement(0);
-    fe_values[displacement].get_function_symmetric_gradients(u, strain);
-    hoop.assign(strain.size(), 0.);
-    if (!axisymmetric)
-      return;
-    std::vector<Tensor<1, dim>> value(strain.size());
-    std::vector<Tensor<2, dim>> gradient(strain.size());
-    fe_values[displacement].get_function_values(u, value);
-    fe_values[displacement].get_function_gradients(u, gradient);
-    for (unsigned int q = 0; q < strain.size(); ++q)
-      hoop[q] =
-        hoop_strain(fe_values.quadrature_point(q), value[q], gradient[q]);
-  }
-
-  template <int dim>
-  double
-  BodyStresses<dim>::hoop_strain(const Point<dim>     &x,
-                                 const Tensor<1, dim> &value,
-                                 const Tensor<2, dim> &gradient) const
-  {
-    if (!axisymmetric)
-      return 0.;
-    // Output evaluates at vertices, some on the axis: there u_r = 0 and
-    // u_r / r tends to du_r/dr.
-    return x[0] > axis_tolerance ? value[0] / x[0] : gradient[0][0];
-  }
-
-  template <int dim>
-  SymmetricTensor<2, dim>
-  BodyStresses<dim>::stress(const SymmetricTensor<2, dim> &strain,
-                            const unsigned int             cell,
-                            const double                   hoop_strain) const
-  {
-    const Material &material = body.get_material();
-    auto            s        = material.stress(strain);
-    if (axisymmetric)
-    {
-      // lambda (tr eps + eps_tt) I + 2 mu eps, the volumetric part
-      // possibly from the reduced point.
-      const double volumetric =
-        dilatation.empty() ? trace(strain) + hoop_strain : dilatation[cell];
-      s += material.lambda() * (volumetric - trace(strain)) *
-           unit_symmetric_tensor<dim>();
-      return s;
-    }
+    // The volumetric part from the cell's reduced point: an isotropic
+    // linear law (MaterialLawInfo::reduced_integration).
     if (!dilatation.empty())
-      s += material.lambda() * (dilatation[cell] - trace(strain)) *
-           unit_symmetric_tensor<dim>();
-    return s;
-  }
-
-  template <int dim>
-  double
-  BodyStresses<dim>::out_of_plane(const SymmetricTensor<2, dim> &strain,
-                                  const unsigned int             cell,
-                                  const double hoop_strain) const
-  {
-    const Material &material = body.get_material();
-    if (!axisymmetric)
-      return material.out_of_plane_stress(stress(strain, cell));
-    const double volumetric =
-      dilatation.empty() ? trace(strain) + hoop_strain : dilatation[cell];
-    return material.lambda() * volumetric + 2. * material.mu() * hoop_strain;
+      return law.linear_tangent().apply(strain, dilatation[cell]);
+    SymmetricTensor<2, 3> sigma;
+    law.evaluate(make_array_view(&strain, &strain + 1),
+                 {},
+                 make_array_view(&sigma, &sigma + 1),
+                 nullptr,
+                 {});
+    return sigma;
   }
 
   template <int dim>
@@ -135,26 +73,27 @@ namespace ddcontact
     std::vector<std::vector<SymmetricTensor<2, dim>>> result(n_cells);
     if (third)
       third->assign(n_cells, {});
-    const Quadrature<dim> &quadrature = body.get_cell_quadrature();
-    FEValues<dim>          fe_values(body.get_mapping(),
+    const Quadrature<dim>             &quadrature = body.get_cell_quadrature();
+    FEValues<dim>                      fe_values(body.get_mapping(),
                             body.get_fe(),
                             quadrature,
-                            strain_flags(update_gradients));
-    std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
-    std::vector<double>                  hoop(quadrature.size());
+                            kinematics.update_flags(update_gradients));
+    std::vector<SymmetricTensor<2, 3>> strain(quadrature.size());
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (body.computes(cell))
       {
         fe_values.reinit(cell);
-        strains(fe_values, strain, hoop);
+        kinematics.field_strains(fe_values, u, strain);
         const unsigned int c = cell->active_cell_index();
         auto              &s = result[c];
         s.resize(strain.size());
         for (unsigned int q = 0; q < strain.size(); ++q)
-          s[q] = stress(strain[q], c, hoop[q]);
-        if (third)
-          for (unsigned int q = 0; q < strain.size(); ++q)
-            (*third)[c].push_back(out_of_plane(strain[q], c, hoop[q]));
+        {
+          const SymmetricTensor<2, 3> sigma = stress(strain[q], c);
+          s[q] = SectionKinematics::in_plane(sigma);
+          if (third)
+            (*third)[c].push_back(sigma[2][2]);
+        }
       }
     return result;
   }
@@ -175,21 +114,21 @@ namespace ddcontact
     std::vector<SymmetricTensor<2, dim>> result(n_cells);
     if (third)
       third->assign(n_cells, 0.);
-    FEValues<dim>                        fe_values(body.get_mapping(),
+    FEValues<dim>                      fe_values(body.get_mapping(),
                             body.get_fe(),
                             cell_centre(),
-                            strain_flags(update_gradients));
-    std::vector<SymmetricTensor<2, dim>> strain(1);
-    std::vector<double>                  hoop(1);
+                            kinematics.update_flags(update_gradients));
+    std::vector<SymmetricTensor<2, 3>> strain(1);
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (body.computes(cell))
       {
         fe_values.reinit(cell);
-        strains(fe_values, strain, hoop);
-        const unsigned int c = cell->active_cell_index();
-        result[c]            = stress(strain[0], c, hoop[0]);
+        kinematics.field_strains(fe_values, u, strain);
+        const unsigned int          c     = cell->active_cell_index();
+        const SymmetricTensor<2, 3> sigma = stress(strain[0], c);
+        result[c]                         = SectionKinematics::in_plane(sigma);
         if (third)
-          (*third)[c] = out_of_plane(strain[0], c, hoop[0]);
+          (*third)[c] = sigma[2][2];
       }
     return result;
   }
@@ -198,28 +137,24 @@ namespace ddcontact
   std::pair<double, double>
   BodyStresses<dim>::largest_strain_and_rotation() const
   {
-    FEValues<dim>                        fe_values(body.get_mapping(),
+    FEValues<dim>                      fe_values(body.get_mapping(),
                             body.get_fe(),
                             cell_centre(),
-                            strain_flags(update_gradients));
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<Tensor<2, dim>>          gradient(1);
-    std::vector<SymmetricTensor<2, dim>> unused(1);
-    std::vector<double>                  hoop(1);
-    double                               strain = 0, rotation = 0;
+                            kinematics.update_flags(update_gradients));
+    const FEValuesExtractors::Vector   displacement(0);
+    std::vector<Tensor<2, dim>>        gradient(1);
+    std::vector<SymmetricTensor<2, 3>> eps(1);
+    double                             strain = 0, rotation = 0;
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (body.computes(cell))
       {
         fe_values.reinit(cell);
         fe_values[displacement].get_function_gradients(u, gradient);
-        const SymmetricTensor<2, dim> eps = symmetrize(gradient[0]);
-        for (const double e : eigenvalues(eps))
+        kinematics.field_strains(fe_values, u, eps);
+        // The in-plane principal strains, and eps_33 (a principal strain).
+        for (const double e : eigenvalues(SectionKinematics::in_plane(eps[0])))
           strain = std::max(strain, std::abs(e));
-        if (axisymmetric)
-        {
-          strains(fe_values, unused, hoop);
-          strain = std::max(strain, std::abs(hoop[0]));
-        }
+        strain   = std::max(strain, std::abs(eps[0][2][2]));
         rotation = std::max(
           rotation, 0.5 * std::abs(gradient[0][1][0] - gradient[0][0][1]));
       }
@@ -230,46 +165,31 @@ namespace ddcontact
   double
   BodyStresses<dim>::strain_energy() const
   {
-    const Material                  &material   = body.get_material();
-    const Quadrature<dim>           &quadrature = body.get_cell_quadrature();
-    FEValues<dim>                    fe_values(body.get_mapping(),
+    // 1/2 a_a(u, u) = 1/2 int eps : C : eps of the law's (constant)
+    // tangent, with the quadratures of the assembly.
+    Assert(law.is_linear(), ExcNotImplemented());
+    const MaterialTangent              tangent    = law.linear_tangent();
+    const Quadrature<dim>             &quadrature = body.get_cell_quadrature();
+    FEValues<dim>                      fe_values(body.get_mapping(),
                             body.get_fe(),
                             quadrature,
-                            strain_flags(update_gradients | update_JxW_values |
-                                         update_quadrature_points));
-    const FEValuesExtractors::Vector displacement(0);
-    std::vector<SymmetricTensor<2, dim>> strain(quadrature.size());
-    std::vector<double>                  hoop(quadrature.size());
-    const bool                           reduced  = !dilatation.empty();
-    const Geometry                       geometry = body.get_geometry();
-    double                               energy   = 0;
+                            kinematics.update_flags(update_gradients |
+                                                    update_JxW_values |
+                                                    update_quadrature_points));
+    std::vector<SymmetricTensor<2, 3>> strain(quadrature.size());
+    const bool                         reduced = !dilatation.empty();
+    double                             energy  = 0;
     for (const auto &cell : body.get_dof_handler().active_cell_iterators())
       if (body.computes(cell))
       {
         fe_values.reinit(cell);
-        strains(fe_values, strain, hoop);
+        kinematics.field_strains(fe_values, u, strain);
         for (const unsigned int q : fe_values.quadrature_point_indices())
-        {
-          const double JxW =
-            fe_values.JxW(q) *
-            section_measure(geometry, fe_values.quadrature_point(q));
-          if (axisymmetric)
-          {
-            // 1/2 (sigma : eps + sigma_tt eps_tt), as assembled.
-            const double shear      = strain[q] * strain[q] + hoop[q] * hoop[q];
-            const double volumetric = trace(strain[q]) + hoop[q];
-            energy +=
-              0.5 *
-              (2. * material.mu() * shear +
-               (reduced ? 0. : material.lambda() * volumetric * volumetric)) *
-              JxW;
-            continue;
-          }
           energy += 0.5 *
-                    (reduced ? 2. * material.mu() * (strain[q] * strain[q])
-                             : material.stress(strain[q]) * strain[q]) *
-                    JxW;
-        }
+                    (reduced ? tangent.shear_form(strain[q], strain[q])
+                             : tangent.form(strain[q], strain[q])) *
+                    fe_values.JxW(q) *
+                    kinematics.measure(fe_values.quadrature_point(q));
       }
     if (reduced)
     {
@@ -284,8 +204,9 @@ namespace ddcontact
           fe_reduced.reinit(cell);
           const double d = dilatation[cell->active_cell_index()];
           for (const unsigned int q : fe_reduced.quadrature_point_indices())
-            energy += 0.5 * material.lambda() * d * d * fe_reduced.JxW(q) *
-                      section_measure(geometry, fe_reduced.quadrature_point(q));
+            energy += 0.5 * tangent.volumetric_modulus() * d * d *
+                      fe_reduced.JxW(q) *
+                      kinematics.measure(fe_reduced.quadrature_point(q));
         }
     }
     return body.get_mesh().sum(energy);
@@ -305,21 +226,18 @@ namespace ddcontact
                             update_values | update_gradients |
                               update_quadrature_points);
     fe_values.reinit(cell);
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<Tensor<1, dim>>          value(1);
-    std::vector<Tensor<2, dim>>          gradient(1);
-    std::vector<SymmetricTensor<2, dim>> strain(1);
+    const FEValuesExtractors::Vector   displacement(0);
+    std::vector<Tensor<1, dim>>        value(1);
+    std::vector<SymmetricTensor<2, 3>> strain(1);
     fe_values[displacement].get_function_values(u, value);
-    fe_values[displacement].get_function_gradients(u, gradient);
-    fe_values[displacement].get_function_symmetric_gradients(u, strain);
-    const double hoop =
-      hoop_strain(fe_values.quadrature_point(0), value[0], gradient[0]);
-    const unsigned int c = cell->active_cell_index();
-    PointValues<dim>   result;
+    kinematics.field_strains(fe_values, u, strain);
+    const SymmetricTensor<2, 3> sigma =
+      stress(strain[0], cell->active_cell_index());
+    PointValues<dim> result;
     result.x            = x;
     result.displacement = value[0];
-    result.stress       = stress(strain[0], c, hoop);
-    result.out_of_plane = out_of_plane(strain[0], c, hoop);
+    result.stress       = SectionKinematics::in_plane(sigma);
+    result.out_of_plane = sigma[2][2];
     return result;
   }
 
@@ -443,8 +361,7 @@ namespace ddcontact
         }
       }
     }
-    result.von_mises =
-      body.get_material().von_mises(result.stress, result.out_of_plane);
+    result.von_mises = von_mises_stress(result.stress, result.out_of_plane);
     return result;
   }
 

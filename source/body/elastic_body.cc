@@ -28,11 +28,23 @@
 namespace ddcontact
 {
   template <int dim>
+  SectionKinematics
+  ElasticBody<dim>::get_kinematics() const
+  {
+    return SectionKinematics(get_geometry(),
+                             get_geometry() == Geometry::axisymmetric
+                               ? AxisOfSymmetry::tolerance(get_triangulation())
+                               : 0.);
+  }
+
+  template <int dim>
   ElasticBody<dim>::ElasticBody(const BodyParameters &parameters,
                                 const Constants      &constants,
                                 const MeshKind        mesh_kind)
     : parameters(parameters)
-    , material(parameters.material)
+    , law(create_material_law(parameters.material_law,
+                              parameters.material,
+                              parameters.material_law_constants))
     , boundary_conditions(make_boundary_conditions(parameters, constants))
     , mesh(this->parameters, mesh_kind)
   {
@@ -157,6 +169,13 @@ namespace ddcontact
   {
     dof_handler.reinit(get_triangulation());
     dof_handler.distribute_dofs(*fe);
+    // The law's state on the cells this process computes (new cells get
+    // the initial state; refine_and_transfer() moved the others').
+    material_state.setup(get_triangulation(),
+                         *law,
+                         cell_quadrature->size(),
+                         [this](const auto &cell)
+                         { return cell->is_active() && mesh.computes(cell); });
 
     IndexSet relevant;
     if (mesh.is_distributed())
@@ -319,6 +338,9 @@ namespace ddcontact
       parallel::distributed::SolutionTransfer<dim, BodyVector> transfer(
         dof_handler);
       transfer.prepare_for_coarsening_and_refinement(solution);
+      // The law's state does not move with p4est's cells yet
+      // (SceneParameters refuses path-dependent laws there).
+      Assert(material_state.empty(), ExcNotImplemented());
       get_triangulation().execute_coarsening_and_refinement();
       setup_system();
       transfer.interpolate(solution);
@@ -337,7 +359,9 @@ namespace ddcontact
       // numerical FE_SimplexP prolongation (see RefinementTransfer).
       RefinementTransfer transfer(dof_handler);
       transfer.prepare(solution);
+      material_state.prepare_for_refinement();
       get_triangulation().execute_coarsening_and_refinement();
+      material_state.transfer_after_refinement();
       setup_system();
       transfer.interpolate(solution);
     }
@@ -346,8 +370,9 @@ namespace ddcontact
       SolutionTransfer<dim, BodyVector> transfer(dof_handler);
       const BodyVector                  old_solution = solution;
       transfer.prepare_for_coarsening_and_refinement(old_solution);
+      material_state.prepare_for_refinement();
       get_triangulation().execute_coarsening_and_refinement();
-
+      material_state.transfer_after_refinement();
       setup_system();
       transfer.interpolate(old_solution, solution);
     }

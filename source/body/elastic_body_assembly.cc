@@ -202,14 +202,14 @@ namespace ddcontact
     const bool load_only) const
   {
     using Iterator = typename DoFHandler<dim>::active_cell_iterator;
-    const FEValuesExtractors::Vector displacement(0);
-    const double                     lambda = material.lambda();
-    const double                     mu     = material.mu();
-    // With reduced volumetric integration the lambda term is added below,
-    // on its own quadrature.
-    const double lambda_full = (volumetric_quadrature != nullptr) ? 0. : lambda;
-    const Geometry geometry  = get_geometry();
-    const bool     axisymmetric = geometry == Geometry::axisymmetric;
+    const SectionKinematics kinematics = get_kinematics();
+    // a_a (11) with the law's tangent C: int eps(v) : C : eps(u). A linear
+    // law's is constant (a nonlinear law's body is not assembled here).
+    Assert(law->is_linear(), ExcNotImplemented());
+    const MaterialTangent tangent = law->linear_tangent();
+    // With reduced volumetric integration the volumetric part of C is
+    // added below, on its own quadrature.
+    const bool reduced = volumetric_quadrature != nullptr;
 
     const UpdateFlags cell_flags = update_values | update_gradients |
                                    update_quadrature_points | update_JxW_values;
@@ -238,29 +238,21 @@ namespace ddcontact
         boundary_conditions.body_force->vector_value_list(
           fe_values.get_quadrature_points(), force);
 
-      std::vector<SymmetricTensor<2, dim>> eps(dofs_per_cell);
-      std::vector<double>                  div(dofs_per_cell);
-      // The hoop strain u_r / r of an axisymmetric body (0 in plane
-      // strain, where the sums below then add exact zeros).
-      std::vector<double> hoop(dofs_per_cell, 0.);
+      // The strains of the shape functions (the hoop strain u_r / r in
+      // eps_33 of an axisymmetric body, 0 in plane strain).
+      std::vector<SymmetricTensor<2, 3>> eps(dofs_per_cell);
       for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         const Point<dim> &x = fe_values.quadrature_point(q);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
-        {
-          eps[i] = fe_values[displacement].symmetric_gradient(i, q);
-          if (axisymmetric)
-            hoop[i] = fe_values[displacement].value(i, q)[0] / x[0];
-          div[i] = trace(eps[i]) + hoop[i];
-        }
-        const double JxW = fe_values.JxW(q) * section_measure(geometry, x);
+          eps[i] = kinematics.shape_strain(fe_values, i, q);
+        const double JxW = fe_values.JxW(q) * kinematics.measure(x);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
         {
           for (unsigned int j = 0; j < dofs_per_cell; ++j)
-            cell_matrix(i, j) +=
-              (lambda_full * div[i] * div[j] +
-               2. * mu * (eps[i] * eps[j] + hoop[i] * hoop[j])) *
-              JxW;
+            cell_matrix(i, j) += (reduced ? tangent.shear_form(eps[i], eps[j])
+                                          : tangent.form(eps[i], eps[j])) *
+                                 JxW;
           if (boundary_conditions.body_force)
           {
             const unsigned int c = fe->system_to_component_index(i).first;
@@ -300,7 +292,7 @@ namespace ddcontact
             continue;
           cell_rhs(i) += fe_face.shape_value(i, q) * traction[q](c) *
                          fe_face.JxW(q) *
-                         section_measure(geometry, fe_face.quadrature_point(q));
+                         kinematics.measure(fe_face.quadrature_point(q));
         }
     };
 
@@ -332,10 +324,11 @@ namespace ddcontact
     const bool load_only) const
   {
     using Iterator = typename DoFHandler<dim>::active_cell_iterator;
-    const FEValuesExtractors::Vector displacement(0);
-    const double                     lambda   = material.lambda();
-    const Geometry                   geometry = get_geometry();
-    const UpdateFlags                flags = update_values | update_gradients |
+    const SectionKinematics kinematics = get_kinematics();
+    // The volumetric modulus lambda of the law's isotropic tangent
+    // (MaterialLawInfo::reduced_integration).
+    const double      lambda = law->linear_tangent().volumetric_modulus();
+    const UpdateFlags flags  = update_values | update_gradients |
                               update_quadrature_points | update_JxW_values;
 
     // Selective reduced integration: lambda div u div v on one Gauss point
@@ -368,15 +361,12 @@ namespace ddcontact
       std::vector<double> div(dofs_per_cell);
       for (const unsigned int q : fe_values.quadrature_point_indices())
       {
-        // div u + u_r / r in axisymmetry: the whole volumetric strain.
+        // tr eps: div u + u_r / r in axisymmetry, the whole volumetric
+        // strain.
         const Point<dim> &x = fe_values.quadrature_point(q);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
-        {
-          div[i] = fe_values[displacement].divergence(i, q);
-          if (geometry == Geometry::axisymmetric)
-            div[i] += fe_values[displacement].value(i, q)[0] / x[0];
-        }
-        const double JxW = fe_values.JxW(q) * section_measure(geometry, x);
+          div[i] = trace(kinematics.shape_strain(fe_values, i, q));
+        const double JxW = fe_values.JxW(q) * kinematics.measure(x);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           for (unsigned int j = 0; j < dofs_per_cell; ++j)
             copy.matrices[0](i, j) += lambda * div[i] * div[j] * JxW;

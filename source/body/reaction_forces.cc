@@ -247,7 +247,7 @@ namespace ddcontact
       radial[0] = 1;
       ring      = 2 * M_PI * body.get_mesh().extent_along(radial).second;
     }
-    return body.get_material().youngs_modulus * largest * ring;
+    return body.get_elastic_constants().youngs_modulus * largest * ring;
   }
 
   template class ReactionForces<2>;

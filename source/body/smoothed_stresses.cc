@@ -117,11 +117,11 @@ namespace ddcontact
 
     // The stress of u at the quadrature points of the body's assembly
     // (BodyStresses applies a reduced dilatation if the body has one).
-    std::vector<std::vector<double>> hoop;
-    const auto                       stress =
-      body.stresses(u).at_quadrature_points(axisymmetric ? &hoop : nullptr);
-    // The hoop stress of an axisymmetric body is a fourth field.
-    const unsigned int     n_fields   = axisymmetric ? 4 : 3;
+    // The third normal stress (sigma_33, or the hoop stress of an
+    // axisymmetric body) is a fourth field: the material law gives it.
+    std::vector<std::vector<double>> third;
+    const auto         stress   = body.stresses(u).at_quadrature_points(&third);
+    const unsigned int n_fields = 4;
     const Quadrature<dim> &quadrature = body.get_cell_quadrature();
     FEValues<dim>          fe_values(body.get_mapping(),
                             dof_handler.get_fe(),
@@ -148,8 +148,7 @@ namespace ddcontact
             cell_mass(i, j) += phi_i * fe_values.shape_value(j, q);
           for (unsigned int c = 0; c < 3; ++c)
             cell_load[c](i) += phi_i * s[q][components[c][0]][components[c][1]];
-          if (axisymmetric)
-            cell_load[3](i) += phi_i * hoop[cell->active_cell_index()][q];
+          cell_load[3](i) += phi_i * third[cell->active_cell_index()][q];
         }
       cell->get_dof_indices(dofs);
       constraints.distribute_local_to_global(cell_mass, dofs, mass);
@@ -160,16 +159,13 @@ namespace ddcontact
     projected.resize(5, Vector<double>(dof_handler.n_dofs()));
     for (unsigned int c = 0; c < n_fields; ++c)
       solve_projection(mass, constraints, load[c], projected[c]);
-    const Material &material = body.get_material();
     for (unsigned int i = 0; i < dof_handler.n_dofs(); ++i)
     {
       SymmetricTensor<2, dim> s;
-      s[0][0] = projected[0](i);
-      s[1][1] = projected[1](i);
-      s[0][1] = projected[2](i);
-      if (!axisymmetric)
-        projected[3](i) = material.out_of_plane_stress(s);
-      projected[4](i) = material.von_mises(s, projected[3](i));
+      s[0][0]         = projected[0](i);
+      s[1][1]         = projected[1](i);
+      s[0][1]         = projected[2](i);
+      projected[4](i) = von_mises_stress(s, projected[3](i));
     }
   }
 

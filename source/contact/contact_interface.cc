@@ -340,7 +340,7 @@ namespace ddcontact
   double
   ContactInterface::surface_compliance(const ElasticBody<2> &body)
   {
-    const auto &m = body.get_material();
+    const auto &m = body.get_elastic_constants();
     return (1. - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;
   }
 

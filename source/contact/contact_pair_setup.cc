@@ -436,14 +436,15 @@ namespace ddcontact
     // theta = c H / E_1 (paper, section 6), or given.
     theta = (parameters.penalty_type == PenaltyType::relative)
               ? parameters.penalty * thickness_1 /
-                  body_1.get_material().youngs_modulus
+                  body_1.get_elastic_constants().youngs_modulus
               : parameters.penalty;
     // The penalty relative to the body, c = theta E_1 / H_1: below 1e-12 the
     // penetration theta p is below round-off of the displacements and the
     // pressure g/theta is round-off amplified by 1e12 (no solver can tell
     // contact from separation).
     const double extent = extent_1.second - extent_1.first;
-    const double c      = theta * body_1.get_material().youngs_modulus / extent;
+    const double c =
+      theta * body_1.get_elastic_constants().youngs_modulus / extent;
     if (!(c >= 1e-12) || !std::isfinite(theta))
     {
       std::ostringstream s;

@@ -25,7 +25,7 @@ namespace ddcontact
         const double H1         = pair.thickness_of_body_1();
         const auto   compliance = [&](const ElasticBody<2> &body, double H)
         {
-          const auto &m = body.get_material();
+          const auto &m = body.get_elastic_constants();
           return H * (1 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;
         };
         // Body 2's thickness measured like body 1's.

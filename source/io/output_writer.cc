@@ -27,7 +27,7 @@ namespace ddcontact
     public:
       StressPostprocessor(const ElasticBody<dim> &body, const BodyVector &u)
         : stresses(body, u)
-        , material(body.get_material())
+        , kinematics(body.get_kinematics())
         , axisymmetric(body.get_geometry() == Geometry::axisymmetric)
       {
       }
@@ -44,30 +44,25 @@ namespace ddcontact
             for (unsigned int j = i; j < dim; ++j)
               strain[i][j] = 0.5 * (inputs.solution_gradients[q][i][j] +
                                     inputs.solution_gradients[q][j][i]);
-          // The body's own stress (2), with its reduced dilatation if any.
+          // The body's own stress, with its reduced dilatation if any.
           const unsigned int cell =
             inputs.template get_cell<dim>()->active_cell_index();
-          double hoop = 0.;
-          if (axisymmetric)
-          {
-            Tensor<1, dim> value;
-            Tensor<2, dim> gradient;
-            for (unsigned int i = 0; i < dim; ++i)
-            {
-              value[i]    = inputs.solution_values[q][i];
-              gradient[i] = inputs.solution_gradients[q][i];
-            }
-            hoop = stresses.hoop_strain(
-              inputs.evaluation_points[q], value, gradient);
-          }
-          const auto   s     = stresses.stress(strain, cell, hoop);
-          const double third = stresses.out_of_plane(strain, cell, hoop);
+          const double                eps_33 = axisymmetric
+                                                 ? kinematics.out_of_plane_strain(
+                                      inputs.evaluation_points[q],
+                                      inputs.solution_values[q][0],
+                                      inputs.solution_gradients[q][0][0])
+                                                 : 0.;
+          const SymmetricTensor<2, 3> sigma =
+            stresses.stress(SectionKinematics::embed(strain, eps_33), cell);
+          const auto   s     = SectionKinematics::in_plane(sigma);
+          const double third = sigma[2][2];
           auto        &out   = computed_quantities[q];
           out(0)             = s[0][0];
           out(1)             = s[1][1];
           out(2)             = s[0][1];
           out(3)             = third;
-          out(4)             = material.von_mises(s, third);
+          out(4)             = von_mises_stress(s, third);
         }
       }
 
@@ -91,7 +86,7 @@ namespace ddcontact
 
     private:
       const BodyStresses<dim> stresses;
-      const Material          material;
+      const SectionKinematics kinematics;
       const bool              axisymmetric;
     };
 

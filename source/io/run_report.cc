@@ -354,8 +354,8 @@ namespace ddcontact
         for (const unsigned int v : corners)
           rows << cell->vertex(v)[0] << ',' << cell->vertex(v)[1] << ',';
         const unsigned int c = cell->active_cell_index();
-        rows << cell->level() << ','
-             << body.get_material().von_mises(stress[c], third[c]) << ','
+        rows << cell->level() << ',' << von_mises_stress(stress[c], third[c])
+             << ','
              << (eta.size() == body.get_triangulation().n_active_cells()
                    ? eta(c)
                    : 0.)

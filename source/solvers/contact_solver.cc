@@ -199,22 +199,37 @@ namespace ddcontact
     start_load_step();
   }
 
-  FrictionHistory
+  void
+  ContactSolver::start_load_step()
+  {
+    for (ElasticBody<2> *body : problem.get_bodies())
+      body->get_material_state().commit();
+    reinit_after_refinement();
+  }
+
+  LoadStepStart
   ContactSolver::load_step_start() const
   {
+    LoadStepStart start;
     // friction_history() is not const: it hands out the solver's own
     // history, which this copies and does not change.
     if (const auto *friction =
           const_cast<ContactSolver *>(this)->friction_history())
-      return *friction;
-    return {};
+      start.friction = *friction;
+    for (const ElasticBody<2> *body : problem.get_bodies())
+      start.bodies.push_back(body->get_material_state().snapshot());
+    return start;
   }
 
   void
-  ContactSolver::return_to_load_step_start(const FrictionHistory &start)
+  ContactSolver::return_to_load_step_start(const LoadStepStart &start)
   {
     if (auto *friction = friction_history())
-      *friction = start;
+      *friction = start.friction;
+    const auto &bodies = problem.get_bodies();
+    AssertDimension(start.bodies.size(), bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      bodies[b]->get_material_state().restore(start.bodies[b]);
   }
 
   void

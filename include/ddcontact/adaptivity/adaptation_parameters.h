@@ -43,6 +43,26 @@ namespace ddcontact
            type == EstimatorType::fem_bem_scaled;
   }
 
+  /** What an error estimator can take, one row per EstimatorType
+   * (adaptation_parameters.cc); SceneParameters refuses the rest. */
+  struct EstimatorCapabilities
+  {
+    /** Axisymmetric sections (the BEM's Kelvin kernels are plane
+     * strain's). */
+    bool axisymmetric = false;
+    /** Bodies of a nonlinear material law (the jumps and residuals of the
+     * law's own stress). */
+    bool nonlinear_laws = false;
+  };
+
+  const EstimatorCapabilities &
+  capabilities_of(EstimatorType type);
+
+  /** "kelly or residual": the estimators that have @p capability (empty
+   * if none). */
+  std::string
+  estimators_with(bool EstimatorCapabilities::*capability);
+
   /** Adaptation/Marking: eta > delta as in (27), a fixed fraction, or
    * Doerfler's bulk criterion. */
   enum class MarkingType

@@ -9,7 +9,7 @@
 
 #include <ddcontact/adaptivity/error_estimator.h>
 #include <ddcontact/body/geometry.h>
-#include <ddcontact/body/material.h>
+#include <ddcontact/body/material_law.h>
 
 namespace ddcontact
 {
@@ -50,7 +50,7 @@ namespace ddcontact
   Tensor<1, 2>
   face_flux(const std::vector<Tensor<1, 2>> &gradient,
             const Tensor<1, 2>              &normal,
-            const Material                  *material);
+            const ElasticConstants          *material);
 
   /**
    * The face integrals of face_jump_indicators() per active cell, before
@@ -62,13 +62,13 @@ namespace ddcontact
    * integrated.
    */
   void
-  face_jump_integrals(const Mapping<2>    &mapping,
-                      const DoFHandler<2> &dof_handler,
-                      const Quadrature<1> &face_quadrature,
-                      const BodyVector    &solution,
-                      const Material      *material,
-                      const Geometry       geometry,
-                      Vector<double>      &jumps);
+  face_jump_integrals(const Mapping<2>       &mapping,
+                      const DoFHandler<2>    &dof_handler,
+                      const Quadrature<1>    &face_quadrature,
+                      const BodyVector       &solution,
+                      const ElasticConstants *material,
+                      const Geometry          geometry,
+                      Vector<double>         &jumps);
 
   /**
    * eta_K = sqrt(h_K / 24 * @p integrals(K)) on the locally owned cells,

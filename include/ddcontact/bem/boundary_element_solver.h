@@ -18,7 +18,7 @@
 #include <ddcontact/bem/collocation_system.h>
 #include <ddcontact/bem/kelvin_solution.h>
 #include <ddcontact/body/boundary_conditions.h>
-#include <ddcontact/body/material.h>
+#include <ddcontact/body/material_law.h>
 
 #include <array>
 #include <memory>
@@ -65,7 +65,7 @@ namespace ddcontact
   class BoundaryElementSolver
   {
   public:
-    BoundaryElementSolver(const Material              &material,
+    BoundaryElementSolver(const ElasticConstants      &material,
                           const BoundaryConditions<2> &boundary_conditions);
 
     /** Build the boundary mesh from the active boundary faces of the mesh
@@ -309,7 +309,7 @@ namespace ddcontact
     project_contact_traction(const BoundaryTractionSamples &contact,
                              Vector<double> &contact_values) const;
 
-    const Material              material;
+    const ElasticConstants      material;
     const BoundaryConditions<2> boundary_conditions;
     // Kernels with mu = 1: tractions and stresses are scaled by mu.
     const KelvinSolution kelvin;

@@ -6,7 +6,7 @@
 
 #include <ddcontact/body/boundary_conditions.h>
 #include <ddcontact/body/geometry.h>
-#include <ddcontact/body/material.h>
+#include <ddcontact/body/material_laws.h>
 #include <ddcontact/parameter_tools.h>
 
 #include <string>
@@ -82,7 +82,11 @@ namespace ddcontact
     // per Q1 cell with "reduced" (selective reduced integration).
     VolumetricIntegration volumetric_integration = VolumetricIntegration::full;
 
-    Material material;
+    // Material: the elastic constants every law has, the law (a row of the
+    // table of material_laws.h) and the row's own entries.
+    ElasticConstants     material;
+    std::string          material_law = "linear-elastic";
+    MaterialLawConstants material_law_constants;
     // The scene's Geometry (SceneParameters sets it on every body).
     Geometry geometry = Geometry::plane_strain;
 

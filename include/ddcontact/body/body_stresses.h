@@ -12,6 +12,8 @@
 #include <deal.II/lac/vector.h>
 
 #include <ddcontact/body/body_vector.h>
+#include <ddcontact/body/material_law.h>
+#include <ddcontact/body/section_kinematics.h>
 #include <ddcontact/parameter_tools.h>
 
 #include <vector>
@@ -42,11 +44,12 @@ namespace ddcontact
    * meshes' files), at any point, and the elastic energy 1/2 a_a(u, u) of
    * (11).
    *
-   * With selective reduced integration (ElasticBody::
-   * reduced_volumetric_integration()) the stress is sigma = lambda (div
-   * u)(x_c) I + 2 mu eps(u), with the dilatation taken at the cell's
-   * reduced point x_c, consistently with the assembled a_a; stress() is the
-   * one place that applies this correction.
+   * The strains come from the body's SectionKinematics and the stresses
+   * from its MaterialLaw. With selective reduced integration (ElasticBody::
+   * get_volumetric_quadrature()) the stress is sigma = lambda (div u)(x_c) I
+   * + 2 mu eps(u), with the dilatation taken at the cell's reduced point
+   * x_c, consistently with the assembled a_a; stress() is the one place
+   * that applies this correction.
    *
    * On a distributed mesh each process computes its own cells; sums are
    * taken over the processes, and per-cell arrays hold zeros elsewhere.
@@ -60,29 +63,13 @@ namespace ddcontact
      * outlive this object. */
     BodyStresses(const ElasticBody<dim> &body, const BodyVector &u);
 
-    /** The in-plane stress (2) from the strain at a point of the active
-     * cell with index @p cell, and the hoop strain u_r / r there
-     * (axisymmetric bodies; 0 in plane strain). */
-    SymmetricTensor<2, dim>
-    stress(const SymmetricTensor<2, dim> &strain,
-           const unsigned int             cell,
-           const double                   hoop_strain = 0.) const;
-
-    /** The third normal stress: nu (sigma_11 + sigma_22) in plane strain,
-     * sigma_thetatheta = lambda (tr eps + eps_tt) + 2 mu eps_tt in
-     * axisymmetry (with the cell's reduced dilatation if it has one). */
-    double
-    out_of_plane(const SymmetricTensor<2, dim> &strain,
-                 const unsigned int             cell,
-                 const double                   hoop_strain = 0.) const;
-
-    /** The hoop strain u_r / r at @p x of a displacement with @p value and
-     * @p gradient there; on the axis (where u_r = 0) its limit du_r/dr. 0
-     * in plane strain. */
-    double
-    hoop_strain(const Point<dim>     &x,
-                const Tensor<1, dim> &value,
-                const Tensor<2, dim> &gradient) const;
+    /** The stress of the body's material law (3 x 3: the third normal
+     * stress is sigma_33 of plane strain, sigma_tt in axisymmetry) of the
+     * @p strain (SectionKinematics) at a point of the active cell with index
+     * @p cell, whose reduced dilatation replaces tr(strain) in the
+     * volumetric part if the cell has one. */
+    SymmetricTensor<2, 3>
+    stress(const SymmetricTensor<2, 3> &strain, const unsigned int cell) const;
 
     /** sigma(u) at every quadrature point of every active cell, indexed
      * [active_cell_index][q]; the third normal stress (out_of_plane())
@@ -148,23 +135,10 @@ namespace ddcontact
     Quadrature<dim>
     cell_centre() const;
 
-    /** The strain and the hoop strain of u at the points of @p fe_values
-     * (reinit on a cell; values, gradients and points updated in
-     * axisymmetry). */
-    void
-    strains(const FEValues<dim>                  &fe_values,
-            std::vector<SymmetricTensor<2, dim>> &strain,
-            std::vector<double>                  &hoop) const;
-
-    /** The update flags strains() needs besides @p flags. */
-    UpdateFlags
-    strain_flags(UpdateFlags flags) const;
-
     const ElasticBody<dim> &body;
     const BodyVector       &u;
-    const bool              axisymmetric;
-    /** Below this r a point is on the axis (AxisOfSymmetry::tolerance). */
-    const double axis_tolerance;
+    const SectionKinematics kinematics;
+    const MaterialLaw      &law;
     /** div u (+ u_r / r in axisymmetry) at the reduced point of every
      * active cell; empty with full integration. */
     std::vector<double> dilatation;

@@ -23,9 +23,11 @@
 #include <ddcontact/body/body_vector.h>
 #include <ddcontact/body/boundary_conditions.h>
 #include <ddcontact/body/geometry.h>
-#include <ddcontact/body/material.h>
+#include <ddcontact/body/material_law.h>
 #include <ddcontact/body/parallel_parameters.h>
+#include <ddcontact/body/quadrature_point_history.h>
 #include <ddcontact/body/rigid_body_modes.h>
+#include <ddcontact/body/section_kinematics.h>
 #include <ddcontact/parameter_tools.h>
 
 #include <functional>
@@ -354,11 +356,39 @@ namespace ddcontact
       return mode_loads;
     }
 
-    const Material &
-    get_material() const
+    /** The body's material law (Body X/Material/Law). */
+    const MaterialLaw &
+    get_material_law() const
     {
-      return material;
+      return *law;
     }
+
+    /** The elastic constants of the law, for the scales that need them
+     * (penalty, Robin preconditioner, compliance, BEM). */
+    const ElasticConstants &
+    get_elastic_constants() const
+    {
+      return law->elastic_constants();
+    }
+
+    /** The law's quadrature-point state (empty for a law without one):
+     * committed per load step (ContactSolver::start_load_step()), restored
+     * for a second solve of a step, carried through refinement. */
+    const QuadraturePointHistory<dim> &
+    get_material_state() const
+    {
+      return material_state;
+    }
+
+    QuadraturePointHistory<dim> &
+    get_material_state()
+    {
+      return material_state;
+    }
+
+    /** The strains of the body's section (plane strain or axisymmetric). */
+    SectionKinematics
+    get_kinematics() const;
 
     /** Plane strain, or an axisymmetric section (x = r, y = z). */
     Geometry
@@ -522,9 +552,10 @@ namespace ddcontact
     void
     setup_rigid_modes();
 
-    const BodyParameters          parameters;
-    const Material                material;
-    const BoundaryConditions<dim> boundary_conditions;
+    const BodyParameters                     parameters;
+    const std::shared_ptr<const MaterialLaw> law;
+    QuadraturePointHistory<dim>              material_state;
+    const BoundaryConditions<dim>            boundary_conditions;
 
     // The mesh first: the dofs and the solver (which uses the group's
     // communicator, freed by the mesh) are destroyed before it.

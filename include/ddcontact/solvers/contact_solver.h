@@ -56,6 +56,15 @@ namespace ddcontact
     unsigned int krylov_iterations            = 0;
   };
 
+  /** The path-dependent state a load step starts from
+   * (ContactSolver::load_step_start()): the friction history and each
+   * body's material state. */
+  struct LoadStepStart
+  {
+    FrictionHistory                                  friction;
+    std::vector<QuadraturePointHistory<2>::Snapshot> bodies;
+  };
+
   /**
    * A solver of the contact problem (16) of several bodies: the one
    * interface through which the adaptive strategies (adaptivity/) and the
@@ -144,12 +153,10 @@ namespace ddcontact
      * have new data (ElasticBody::set_load_time()): the solvers' data are
      * set up again (as after a refinement, with the same points), warm
      * started from the last iterate; with friction the last step's slip
-     * and traction become the history. */
+     * and traction become the history, and the bodies' material states of
+     * the last iterate are committed. */
     virtual void
-    start_load_step()
-    {
-      reinit_after_refinement();
-    }
+    start_load_step();
 
     /** start_load_step() for the second part of the current load step
      * (Loading/Steps = auto solves a step in two halves): the history
@@ -159,16 +166,16 @@ namespace ddcontact
     continue_load_step();
 
     /** The path-dependent state a load step starts from: a copy of the
-     * friction history (empty without friction, where the solution does
-     * not depend on the path). */
-    FrictionHistory
+     * friction history (empty without friction) and the bodies' material
+     * states (empty for laws without state). */
+    LoadStepStart
     load_step_start() const;
 
     /** Go back to @p start (from load_step_start()) to solve the load
      * step again; the next start_load_step() starts from it. The iterate
      * stays as it is: it only starts the next solve. */
     void
-    return_to_load_step_start(const FrictionHistory &start);
+    return_to_load_step_start(const LoadStepStart &start);
 
     /**
      * The augmented Lagrangian's outer step (UzawaLoop::update()) after

@@ -77,6 +77,10 @@ namespace ddcontact
     bool single_steps = false;
     /** Runs under mpirun (bodies on several processes). */
     bool several_processes = false;
+    /** Bodies of a nonlinear material law (MaterialLaw::is_linear()): a
+     * body Newton loop per solve. No solver yet; each takes a body's
+     * response as affine in its load (dd-newton's u_0 + u_p). */
+    bool nonlinear_laws = false;
   };
 
   /** The capabilities of Contact solver/Solver = @p solver, from the
