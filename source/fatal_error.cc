@@ -2,9 +2,9 @@
 
 #include <ddcontact/fatal_error.h>
 #include <ddcontact/interruption.h>
+#include <ddcontact/iteration_errors.h>
 #include <ddcontact/output_file.h>
 #include <ddcontact/parameter_tools.h>
-#include <ddcontact/solvers/errors.h>
 
 #include <chrono>
 #include <iostream>

@@ -4,8 +4,8 @@
 #ifndef ddcontact_tests_scene_tools_h
 #define ddcontact_tests_scene_tools_h
 
+#include <ddcontact/iteration_errors.h>
 #include <ddcontact/simulation.h>
-#include <ddcontact/solvers/errors.h>
 
 #include "test_tools.h"
 

@@ -127,8 +127,9 @@ namespace ddcontact
     /**
      * int_F |(g - sigma(u_h) n) / (2 mu)|^2 dS over the face of @p values
      * in the components that @p prescribed leaves free, with u_h's
-     * gradients @p grad and values @p u (for the hoop strain's part of
-     * sigma in an axisymmetric @p geometry) and the measure @p dS.
+     * gradients @p grad and values @p u (the strain of @p kinematics, with
+     * the hoop strain of an axisymmetric section), the stress of the
+     * elastic @p material's tangent, and the measure @p dS.
      */
     double
     traction_residual(const FEFaceValues<2>             &values,
@@ -138,20 +139,24 @@ namespace ddcontact
                       const std::vector<double>         &dS,
                       const ComponentMask               &prescribed,
                       const ElasticConstants            &material,
-                      const Geometry                     geometry)
+                      const SectionKinematics           &kinematics)
     {
-      const bool axisymmetric = geometry == Geometry::axisymmetric;
-      double     integral     = 0;
+      const MaterialTangent tangent  = material.tangent();
+      double                integral = 0;
       for (unsigned int q = 0; q < dS.size(); ++q)
       {
         if (dS[q] == 0)
           continue; // a face on the axis: no ring, no residual
-        const Tensor<1, 2> &n = values.normal_vector(q);
-        Tensor<1, 2>        r =
-          g[q] / (2. * material.mu()) - face_flux(grad[q], n, &material);
-        if (axisymmetric)
-          r -= material.lambda() * u[q](0) / values.quadrature_point(q)[0] * n /
-               (2. * material.mu());
+        const Tensor<1, 2>   &n = values.normal_vector(q);
+        SymmetricTensor<2, 2> in_plane;
+        for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int j = i; j < 2; ++j)
+            in_plane[i][j] = 0.5 * (grad[q][i][j] + grad[q][j][i]);
+        const double eps_33 = kinematics.out_of_plane_strain(
+          values.quadrature_point(q), u[q](0), grad[q][0][0]);
+        const SymmetricTensor<2, 2> sigma = SectionKinematics::in_plane(
+          tangent.apply(SectionKinematics::embed(in_plane, eps_33)));
+        const Tensor<1, 2> r = (g[q] - sigma * n) / (2. * material.mu());
         for (unsigned int c = 0; c < 2; ++c)
           if (!prescribed[c])
             integral += r[c] * r[c] * dS[q];
@@ -169,7 +174,7 @@ namespace ddcontact
     const QGauss<1>             face_quadrature(body.get_fe().degree + 1);
     const auto                 &conditions = body.get_boundary_conditions();
     const ElasticConstants     &material   = body.get_elastic_constants();
-    const Geometry              geometry   = body.get_geometry();
+    const SectionKinematics     kinematics = body.get_kinematics();
     const unsigned int          n_q        = face_quadrature.size();
     const unsigned int          degree     = body.get_fe().degree;
     FEFaceValues<2>             values(body.get_mapping(),
@@ -213,8 +218,8 @@ namespace ddcontact
           values.get_function_gradients(solution, grad);
           values.get_function_values(solution, u);
           for (unsigned int q = 0; q < n_q; ++q)
-            dS[q] = values.JxW(q) *
-                    section_measure(geometry, values.quadrature_point(q));
+            dS[q] =
+              values.JxW(q) * kinematics.measure(values.quadrature_point(q));
 
           std::fill(g.begin(), g.end(), Tensor<1, 2>());
           if (const auto t = conditions.neumann.find(id);
@@ -242,7 +247,7 @@ namespace ddcontact
           }
 
           const double integral = traction_residual(
-            values, grad, u, g, dS, prescribed, material, geometry);
+            values, grad, u, g, dS, prescribed, material, kinematics);
           integrals(cell->active_cell_index()) += integral;
         }
   }
@@ -258,7 +263,8 @@ namespace ddcontact
   {
     const ElasticConstants &material = body.get_elastic_constants();
     const auto             &force = body.get_boundary_conditions().body_force;
-    const Geometry          geometry = body.get_geometry();
+    const Geometry          geometry   = body.get_geometry();
+    const SectionKinematics kinematics = body.get_kinematics();
     const double            lambda = material.lambda(), mu = material.mu();
     const auto             &quadrature = body.get_cell_quadrature();
     const unsigned int      n_q        = quadrature.size();
@@ -305,14 +311,16 @@ namespace ddcontact
             // lambda a / r. Quadrature points lie off the axis, r > 0.
             const auto  &G  = grad[q];
             const double rr = x[0];
-            r[0] += (lambda + 2. * mu) * (G[0][0] / rr - u[q](0) / (rr * rr));
+            const double hoop =
+              kinematics.out_of_plane_strain(x, u[q](0), G[0][0]);
+            r[0] += (lambda + 2. * mu) * (G[0][0] - hoop) / rr;
             r[1] += ((lambda + mu) * G[0][1] + mu * G[1][0]) / rr;
           }
           if (force)
             for (unsigned int c = 0; c < 2; ++c)
               r[c] += f[q](c);
           integral += (r / (2. * mu)).norm_square() * values.JxW(q) *
-                      section_measure(geometry, x);
+                      kinematics.measure(x);
         }
         integrals(cell->active_cell_index()) += cell->diameter() * integral;
       }

@@ -321,6 +321,18 @@ namespace ddcontact
                           "10000",
                           Patterns::Integer(1),
                           "Iteration limit of cg-amg.");
+        prm.declare_entry(
+          "Newton tolerance",
+          "1e-10",
+          Patterns::Double(0),
+          "A nonlinear Material/Law: the body's Newton loop stops when the "
+          "residual l + contact load - internal force is this fraction of "
+          "the load's norm (a linear law is solved by one factorization).");
+        prm.declare_entry("Newton max iterations",
+                          "30",
+                          Patterns::Integer(1, 1000),
+                          "A nonlinear Material/Law: the limit of the body's "
+                          "Newton steps per solve.");
       }
       prm.leave_subsection();
     }
@@ -471,6 +483,8 @@ namespace ddcontact
       solver                = parse_selection<BodySolverType>(prm.get("Type"));
       solver_tolerance      = prm.get_double("Tolerance");
       solver_max_iterations = prm.get_integer("Max iterations");
+      newton_tolerance      = prm.get_double("Newton tolerance");
+      newton_max_iterations = prm.get_integer("Newton max iterations");
     }
     prm.leave_subsection();
   }

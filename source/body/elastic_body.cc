@@ -20,6 +20,7 @@
 #include <ddcontact/body/boundary_data_checks.h>
 #include <ddcontact/body/elastic_body.h>
 #include <ddcontact/body/refinement_transfer.h>
+#include <ddcontact/iteration_errors.h>
 #include <ddcontact/tasks.h>
 
 #include <iomanip>
@@ -486,6 +487,8 @@ namespace ddcontact
   void
   ElasticBody<dim>::solve(const BodyVector &load, BodyVector &u) const
   {
+    Assert(law->is_linear(),
+           ExcMessage("a nonlinear material law: use solve_nonlinear()"));
     Assert(is_factorized, ExcMessage("factorize() must be called first"));
     if (load.size() > 0)
       AssertDimension(load.size(), dof_handler.n_dofs());
@@ -500,6 +503,104 @@ namespace ddcontact
         throw InputError(parameters.section() +
                          ": the body problem gave a non-finite displacement; "
                          "check the Dirichlet conditions and the material");
+  }
+
+  template <int dim>
+  BodyNewtonReport
+  ElasticBody<dim>::solve_nonlinear(const BodyVector &load, BodyVector &u)
+  {
+    AssertThrow(solved_here && !is_solved_distributed() && !distributed_vectors,
+                ExcMessage("a nonlinear material law is solved on one process "
+                           "per body (for now)"));
+    if (load.size() > 0)
+      AssertDimension(load.size(), dof_handler.n_dofs());
+    if (u.size() != dof_handler.n_dofs())
+      reinit_vector(u);
+    // The increments are zero on Dirichlet dofs: the constraints without
+    // their inhomogeneities (u carries the Dirichlet values).
+    AffineConstraints<double> increment_constraints;
+    for (const auto &line : constraints.get_lines())
+    {
+      increment_constraints.add_line(line.index);
+      increment_constraints.add_entries(line.index, line.entries);
+    }
+    increment_constraints.close();
+    distribute_constraints(u, false);
+
+    // The residual is measured against the load l_a + load, condensed.
+    BodyNewtonReport report;
+    {
+      Vector<double> l(dof_handler.n_dofs());
+      assemble_cells(
+        [&](const MeshWorker::CopyData<1, 1, 1> &copy)
+        {
+          if (!copy.local_dof_indices[0].empty())
+            increment_constraints.distribute_local_to_global(
+              copy.vectors[0], copy.local_dof_indices[0], l);
+        });
+      for (unsigned int i = 0; i < l.size() && load.size() > 0; ++i)
+        l(i) += load(i);
+      report.load_norm = l.l2_norm();
+    }
+
+    BodyVector                       du;
+    std::vector<std::vector<double>> new_states(
+      get_triangulation().n_active_cells());
+    for (unsigned int step = 0;; ++step)
+    {
+      // The tangent at u and the residual l_a + load - F(u).
+      linear_solver->zero();
+      assemble_cells(
+        [&](const MeshWorker::CopyData<1, 1, 1> &copy)
+        {
+          if (!copy.local_dof_indices[0].empty())
+            linear_solver->add(increment_constraints,
+                               copy.matrices[0],
+                               copy.vectors[0],
+                               copy.local_dof_indices[0]);
+        },
+        false,
+        &u,
+        &new_states);
+      linear_solver->compress();
+      Vector<double> residual = linear_solver->load_vector();
+      for (unsigned int i = 0; i < residual.size() && load.size() > 0; ++i)
+        if (!increment_constraints.is_constrained(i))
+          residual(i) += load(i);
+      const double norm = residual.l2_norm();
+      report.residuals.push_back(norm);
+      if (!std::isfinite(norm))
+        throw DivergenceError(parameters.section() +
+                              ": the body's Newton loop gave a non-finite "
+                              "residual; more Loading/Steps");
+      if (norm <= parameters.newton_tolerance * report.load_norm || norm == 0.)
+        break;
+      if (step == parameters.newton_max_iterations)
+      {
+        std::ostringstream message;
+        message << parameters.section() << ": the body's Newton loop did not "
+                << "converge in " << step << " steps (residual " << norm
+                << " of the load's " << report.load_norm
+                << "); more Loading/Steps, or a larger Solver/Newton max "
+                   "iterations";
+        throw NotConvergedError(message.str());
+      }
+      linear_solver->factorize(dof_handler);
+      reinit_vector(du);
+      linear_solver->solve(load, du);
+      distribute_constraints(du, true);
+      u += du;
+    }
+    // The state of the converged displacement, the current iterate's.
+    if (!material_state.empty())
+      for (const auto &cell : get_triangulation().active_cell_iterators())
+        if (mesh.computes(cell))
+          material_state.set_trial(
+            cell, make_array_view(new_states[cell->active_cell_index()]));
+    // The matrix is the tangent of the last step, no longer the body's
+    // (linear) stiffness.
+    is_factorized = false;
+    return report;
   }
 
   template <int dim>

@@ -168,7 +168,25 @@ namespace ddcontact
     reinit_vector(r);
     reinit_vector(load);
     // r_K = A_K u_K - f_K of every cell, added without constraints: the
-    // same cell matrices and loads the solver was given.
+    // same cell matrices and loads the solver was given. A nonlinear law:
+    // r = F(u) - l_a, the negated loads minus internal forces of the
+    // linearization at u, and the loads of the plain assembly.
+    if (!law->is_linear())
+    {
+      const auto add = [](const MeshWorker::CopyData<1, 1, 1> &copy,
+                          const double                         sign,
+                          BodyVector                          &to)
+      {
+        const auto &dofs = copy.local_dof_indices[0];
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          to(dofs[i]) += sign * copy.vectors[0](i);
+      };
+      assemble_cells([&](const auto &copy) { add(copy, -1., r); }, false, &u);
+      assemble_cells([&](const auto &copy) { add(copy, 1., load); });
+      r.set_ghost_state(true);
+      load.set_ghost_state(true);
+      return;
+    }
     Vector<double> u_cell, r_cell;
     assemble_cells(
       [&](const MeshWorker::CopyData<1, 1, 1> &copy)
@@ -199,14 +217,22 @@ namespace ddcontact
   void
   ElasticBody<dim>::assemble_cells(
     const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier,
-    const bool load_only) const
+    const bool                                                        load_only,
+    const BodyVector                 *linearization,
+    std::vector<std::vector<double>> *new_states) const
   {
     using Iterator = typename DoFHandler<dim>::active_cell_iterator;
     const SectionKinematics kinematics = get_kinematics();
     // a_a (11) with the law's tangent C: int eps(v) : C : eps(u). A linear
-    // law's is constant (a nonlinear law's body is not assembled here).
-    Assert(law->is_linear(), ExcNotImplemented());
-    const MaterialTangent tangent = law->linear_tangent();
+    // law's is constant; a nonlinear law's is its linearization at a
+    // displacement (solve_nonlinear()).
+    // (Without a linearization a nonlinear law's matrices are those of its
+    // elastic constants: only the loads count then.)
+    Assert(linearization == nullptr || volumetric_quadrature == nullptr,
+           ExcNotImplemented());
+    const MaterialTangent tangent = law->is_linear()
+                                      ? law->linear_tangent()
+                                      : law->elastic_constants().tangent();
     // With reduced volumetric integration the volumetric part of C is
     // added below, on its own quadrature.
     const bool reduced = volumetric_quadrature != nullptr;
@@ -238,6 +264,30 @@ namespace ddcontact
         boundary_conditions.body_force->vector_value_list(
           fe_values.get_quadrature_points(), force);
 
+      // A nonlinear law at the points, linearized at the displacement:
+      // the stress and tangent of its strain, from the points' states at
+      // the start of the step.
+      std::vector<SymmetricTensor<2, 3>> stress;
+      std::vector<MaterialTangent>       tangents;
+      if (linearization != nullptr)
+      {
+        std::vector<SymmetricTensor<2, 3>> strain;
+        kinematics.field_strains(fe_values, *linearization, strain);
+        std::vector<double> old_state;
+        if (!material_state.empty())
+          material_state.get_committed(
+            typename Triangulation<dim>::cell_iterator(cell), old_state);
+        std::vector<double> new_state(old_state.size());
+        stress.resize(strain.size());
+        law->evaluate(make_array_view(strain),
+                      make_array_view(old_state),
+                      make_array_view(stress),
+                      &tangents,
+                      make_array_view(new_state));
+        if (new_states != nullptr)
+          (*new_states)[cell->active_cell_index()] = std::move(new_state);
+      }
+
       // The strains of the shape functions (the hoop strain u_r / r in
       // eps_33 of an axisymmetric body, 0 in plane strain).
       std::vector<SymmetricTensor<2, 3>> eps(dofs_per_cell);
@@ -246,13 +296,17 @@ namespace ddcontact
         const Point<dim> &x = fe_values.quadrature_point(q);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           eps[i] = kinematics.shape_strain(fe_values, i, q);
-        const double JxW = fe_values.JxW(q) * kinematics.measure(x);
+        const double           JxW = fe_values.JxW(q) * kinematics.measure(x);
+        const MaterialTangent &C   = linearization ? tangents[q] : tangent;
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
         {
           for (unsigned int j = 0; j < dofs_per_cell; ++j)
-            cell_matrix(i, j) += (reduced ? tangent.shear_form(eps[i], eps[j])
-                                          : tangent.form(eps[i], eps[j])) *
+            cell_matrix(i, j) += (reduced ? C.shear_form(eps[i], eps[j])
+                                          : C.form(eps[i], eps[j])) *
                                  JxW;
+          // l_a(phi_i) - F(u)(phi_i): the internal force sigma : eps(phi_i).
+          if (linearization)
+            cell_rhs(i) -= (stress[q] * eps[i]) * JxW;
           if (boundary_conditions.body_force)
           {
             const unsigned int c = fe->system_to_component_index(i).first;
@@ -401,7 +455,9 @@ namespace ddcontact
   template void
   ElasticBody<2>::assemble_cells(
     const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &,
-    bool) const;
+    bool,
+    const BodyVector *,
+    std::vector<std::vector<double>> *) const;
   template void
   ElasticBody<2>::assemble_reduced_volumetric_term(
     const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &,

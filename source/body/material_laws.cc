@@ -18,32 +18,52 @@ namespace ddcontact
     }
   } // namespace
 
+  namespace
+  {
+    /** The table itself (register_material_law() adds rows). */
+    std::vector<MaterialLawInfo> &
+    table_of_laws()
+    {
+      static std::vector<MaterialLawInfo> table = []
+      {
+        std::vector<MaterialLawInfo> rows;
+        {
+          MaterialLawInfo row;
+          row.name = "linear-elastic";
+          row.description =
+            "isotropic linear elasticity, Hooke's law sigma = lambda tr(eps) "
+            "I + 2 mu eps of Young's modulus and Poisson's ratio (factorized "
+            "once per mesh)";
+          row.linear              = true;
+          row.path_dependent      = false;
+          row.reduced_integration = true;
+          row.declare             = no_entries;
+          row.parse               = read_no_entries;
+          row.create =
+            [](const ElasticConstants &constants, const MaterialLawConstants &)
+          { return std::make_shared<const LinearElasticLaw>(constants); };
+          rows.push_back(row);
+        }
+        return rows;
+      }();
+      return table;
+    }
+  } // namespace
+
   const std::vector<MaterialLawInfo> &
   material_laws()
   {
-    static const std::vector<MaterialLawInfo> table = []
-    {
-      std::vector<MaterialLawInfo> rows;
-      {
-        MaterialLawInfo row;
-        row.name = "linear-elastic";
-        row.description =
-          "isotropic linear elasticity, Hooke's law sigma = lambda tr(eps) "
-          "I + 2 mu eps of Young's modulus and Poisson's ratio (factorized "
-          "once per mesh)";
-        row.linear              = true;
-        row.path_dependent      = false;
-        row.reduced_integration = true;
-        row.declare             = no_entries;
-        row.parse               = read_no_entries;
-        row.create =
-          [](const ElasticConstants &constants, const MaterialLawConstants &)
-        { return std::make_shared<const LinearElasticLaw>(constants); };
-        rows.push_back(row);
-      }
-      return rows;
-    }();
-    return table;
+    return table_of_laws();
+  }
+
+  void
+  register_material_law(const MaterialLawInfo &row)
+  {
+    for (const auto &other : table_of_laws())
+      AssertThrow(other.name != row.name,
+                  ExcMessage("a material law '" + row.name +
+                             "' is in the table already"));
+    table_of_laws().push_back(row);
   }
 
   const MaterialLawInfo &

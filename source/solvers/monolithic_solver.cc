@@ -1,6 +1,6 @@
 #include <deal.II/lac/sparse_direct.h>
 
-#include <ddcontact/solvers/errors.h>
+#include <ddcontact/iteration_errors.h>
 #include <ddcontact/solvers/monolithic_solver.h>
 
 #include <algorithm>

@@ -101,6 +101,9 @@ namespace ddcontact
     BodySolverType solver                = BodySolverType::direct;
     double         solver_tolerance      = 1e-12;
     unsigned int   solver_max_iterations = 10000;
+    // The Newton loop of a body of a nonlinear material law.
+    double       newton_tolerance      = 1e-10;
+    unsigned int newton_max_iterations = 30;
 
     static void
     declare(ParameterHandler &prm);

@@ -38,6 +38,22 @@ namespace ddcontact
 {
   using namespace dealii;
 
+  /** The residual norms of ElasticBody::solve_nonlinear(), one per
+   * linearization (the last one converged). */
+  struct BodyNewtonReport
+  {
+    std::vector<double> residuals;
+    /** The norm of the load l_a + load the residuals are measured
+     * against. */
+    double load_norm = 0;
+
+    unsigned int
+    n_steps() const
+    {
+      return residuals.empty() ? 0 : residuals.size() - 1;
+    }
+  };
+
   /**
    * One linear elastic body Omega_a in plane strain: its finite element
    * space on its mesh (BodyMesh: quadrilaterals with hanging nodes, or
@@ -165,6 +181,20 @@ namespace ddcontact
      */
     void
     solve_homogeneous(const BodyVector &load, BodyVector &u) const;
+
+    /**
+     * The body problem of a nonlinear material law: internal force
+     * F(u) = l_a + @p load, F(u)(v) = int sigma(eps(u)) : eps(v) dV, by
+     * Newton's method from @p u (a warm start; its Dirichlet values are
+     * set first), with the law's consistent tangent assembled and
+     * factorized at every step. Stops when the residual is Solver/Newton
+     * tolerance times the load's norm; the law's trial state
+     * (get_material_state()) is then that of @p u. A linear law converges
+     * in one step to solve()'s answer. One process per body (for now);
+     * throws SolverError naming the body if the loop does not converge.
+     */
+    BodyNewtonReport
+    solve_nonlinear(const BodyVector &load, BodyVector &u);
 
     /** Solve with no extra load into the body's own solution vector. */
     void
@@ -482,11 +512,17 @@ namespace ddcontact
     /** The cell matrices of a_a (11) and the loads of l_a (12) of this
      * process's cells, each passed to @p copier (one thread at a time);
      * with @p load_only only the cells that carry a load or a Dirichlet
-     * inhomogeneity (loaded_cell()), the others handed over without dofs. */
+     * inhomogeneity (loaded_cell()), the others handed over without dofs.
+     * With @p linearization the law's linearization at that displacement
+     * instead: the consistent tangent matrices and the loads minus the
+     * internal forces, l_a(phi_i) - F(u)(phi_i), and the law's new states
+     * into @p new_states (by active cell index) if given. */
     void
     assemble_cells(
       const std::function<void(const MeshWorker::CopyData<1, 1, 1> &)> &copier,
-      bool load_only = false) const;
+      bool                              load_only     = false,
+      const BodyVector                 *linearization = nullptr,
+      std::vector<std::vector<double>> *new_states    = nullptr) const;
 
     /** The lambda div u div v term of a_a (11) on one Gauss point per cell
      * (see get_volumetric_quadrature()), through @p copier; @p load_only

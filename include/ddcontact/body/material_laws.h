@@ -49,6 +49,12 @@ namespace ddcontact
   const std::vector<MaterialLawInfo> &
   material_laws();
 
+  /** Add a row to the table (a law defined outside the library, e.g. by a
+   * test or a program that links it), before any parameter file is read.
+   * Its name must be new. */
+  void
+  register_material_law(const MaterialLawInfo &row);
+
   /** The row of @p name (one of the table's names). */
   const MaterialLawInfo &
   material_law_info(const std::string &name);

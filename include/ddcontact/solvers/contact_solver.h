@@ -9,9 +9,9 @@
 #include <ddcontact/body/body_distribution.h>
 #include <ddcontact/contact/contact_problem.h>
 #include <ddcontact/contact/friction_history.h>
+#include <ddcontact/iteration_errors.h>
 #include <ddcontact/parameter_tools.h>
 #include <ddcontact/solvers/contact_solver_parameters.h>
-#include <ddcontact/solvers/errors.h>
 #include <ddcontact/solvers/uzawa_loop.h>
 
 #include <functional>

@@ -1,5 +1,5 @@
-#ifndef ddcontact_errors_h
-#define ddcontact_errors_h
+#ifndef ddcontact_iteration_errors_h
+#define ddcontact_iteration_errors_h
 
 #include <stdexcept>
 
