@@ -58,6 +58,7 @@ case_ "E <= 0" "Young's modulus" "$base" --set "Body lower/Material/Young's modu
 case_ "E = 0" "Young's modulus" "$base" --set "Body lower/Material/Young's modulus=0"
 case_ "nu = 0.5" "Poisson's ratio" "$base" --set "Body upper/Material/Poisson's ratio=0.5"
 case_ "nu = -1.2" "Poisson's ratio" "$base" --set "Body upper/Material/Poisson's ratio=-1.2"
+case_ "unknown material law" "Material/Law = 'plastic': not one of linear-elastic" "$base" --set "Body upper/Material/Law=plastic"
 case_ "boundary id not in mesh" "boundary id 7" "$base" --set "Body lower/Boundary conditions/Neumann=7: 0; 1"
 case_ "no Dirichlet part" "Body upper/Dirichlet" "$base" --set "Body upper/Boundary conditions/Dirichlet="
 case_ "expression does not parse" "Body lower/Neumann" "$base" --set "Body lower/Boundary conditions/Neumann=3: 0; -p*("
