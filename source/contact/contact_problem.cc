@@ -415,13 +415,23 @@ namespace ddcontact
   ContactProblem::penetration(const Iterate &u) const
   {
     double max_penetration = 0, max_displacement = 0;
-    for (unsigned int p = 0; p < pairs.size(); ++p)
+    // The normal displacements alone: the penetration needs no pressure,
+    // loads or extents (contact_state()), which the Uzawa loop would pay
+    // for at every update.
+    std::vector<double> u_1n, u_2n;
+    for (const ContactPair *pair : pairs)
     {
-      const auto state = contact_state(p, u);
-      max_penetration  = std::max(max_penetration, state.max_penetration);
-      for (unsigned int q = 0; q < state.u_1n.size(); ++q)
-        max_displacement = std::max(
-          max_displacement, std::abs(state.u_1n[q]) + std::abs(state.u_2n[q]));
+      pair->normal_displacements(u[body_index(pair->get_body_1())],
+                                 u[body_index(pair->get_body_2())],
+                                 u_1n,
+                                 u_2n);
+      for (unsigned int q = 0; q < u_1n.size(); ++q)
+      {
+        max_penetration = std::max(max_penetration,
+                                   u_1n[q] + u_2n[q] - pair->points()[q].gap);
+        max_displacement =
+          std::max(max_displacement, std::abs(u_1n[q]) + std::abs(u_2n[q]));
+      }
     }
     return {max_penetration,
             max_penetration / std::max(max_displacement, 1e-300)};
