@@ -291,19 +291,33 @@ namespace ddcontact
       // The strains of the shape functions (the hoop strain u_r / r in
       // eps_33 of an axisymmetric body, 0 in plane strain).
       std::vector<SymmetricTensor<2, 3>> eps(dofs_per_cell);
+      std::vector<double>                tr(dofs_per_cell);
+      // C : eps(phi_j) of a general tangent, once per j.
+      std::vector<SymmetricTensor<2, 3>> C_eps;
       for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         const Point<dim> &x = fe_values.quadrature_point(q);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
           eps[i] = kinematics.shape_strain(fe_values, i, q);
+          tr[i]  = trace(eps[i]);
+        }
         const double           JxW = fe_values.JxW(q) * kinematics.measure(x);
         const MaterialTangent &C   = linearization ? tangents[q] : tangent;
+        if (!C.is_isotropic())
+        {
+          C_eps.resize(dofs_per_cell);
+          for (unsigned int j = 0; j < dofs_per_cell; ++j)
+            C_eps[j] = C.apply(eps[j]);
+        }
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
         {
           for (unsigned int j = 0; j < dofs_per_cell; ++j)
-            cell_matrix(i, j) += (reduced ? C.shear_form(eps[i], eps[j])
-                                          : C.form(eps[i], eps[j])) *
-                                 JxW;
+            cell_matrix(i, j) +=
+              (reduced            ? C.shear_form(eps[i], eps[j])
+               : C.is_isotropic() ? C.form(eps[i], tr[i], eps[j], tr[j])
+                                  : eps[i] * C_eps[j]) *
+              JxW;
           // l_a(phi_i) - F(u)(phi_i): the internal force sigma : eps(phi_i).
           if (linearization)
             cell_rhs(i) -= (stress[q] * eps[i]) * JxW;

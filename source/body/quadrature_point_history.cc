@@ -38,15 +38,25 @@ namespace ddcontact
 
   template <int dim>
   void
-  QuadraturePointHistory<dim>::get_committed(const CellIterator  &cell,
-                                             std::vector<double> &values) const
+  QuadraturePointHistory<dim>::gather(
+    const CellIterator &cell,
+    std::vector<double> MaterialPointState::*which,
+    std::vector<double>                     &values) const
   {
     values.resize(n_points * n_values);
     const auto data = storage.get_data(cell);
     for (unsigned int q = 0; q < n_points; ++q)
-      std::copy(data[q]->committed.begin(),
-                data[q]->committed.end(),
+      std::copy(((*data[q]).*which).begin(),
+                ((*data[q]).*which).end(),
                 values.begin() + q * n_values);
+  }
+
+  template <int dim>
+  void
+  QuadraturePointHistory<dim>::get_committed(const CellIterator  &cell,
+                                             std::vector<double> &values) const
+  {
+    gather(cell, &MaterialPointState::committed, values);
   }
 
   template <int dim>
@@ -54,12 +64,7 @@ namespace ddcontact
   QuadraturePointHistory<dim>::get_trial(const CellIterator  &cell,
                                          std::vector<double> &values) const
   {
-    values.resize(n_points * n_values);
-    const auto data = storage.get_data(cell);
-    for (unsigned int q = 0; q < n_points; ++q)
-      std::copy(data[q]->trial.begin(),
-                data[q]->trial.end(),
-                values.begin() + q * n_values);
+    gather(cell, &MaterialPointState::trial, values);
   }
 
   template <int dim>

@@ -427,8 +427,8 @@ namespace ddcontact
                                  u_2n);
       for (unsigned int q = 0; q < u_1n.size(); ++q)
       {
-        max_penetration = std::max(max_penetration,
-                                   u_1n[q] + u_2n[q] - pair->points()[q].gap);
+        max_penetration =
+          std::max(max_penetration, u_1n[q] + u_2n[q] - pair->points()[q].gap);
         max_displacement =
           std::max(max_displacement, std::abs(u_1n[q]) + std::abs(u_2n[q]));
       }

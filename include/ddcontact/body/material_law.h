@@ -69,6 +69,19 @@ namespace ddcontact
       return a * (C_ * b);
     }
 
+    /** form() with the traces of @p a and @p b given: an assembly computes
+     * each shape function's once, not once per pair (the same number). */
+    double
+    form(const SymmetricTensor<2, 3> &a,
+         const double                 trace_a,
+         const SymmetricTensor<2, 3> &b,
+         const double                 trace_b) const
+    {
+      if (is_isotropic_)
+        return lambda_ * trace_a * trace_b + 2. * mu_ * (a * b);
+      return a * (C_ * b);
+    }
+
     /**
      * Selective reduced integration ("Element/Volumetric integration =
      * reduced") splits an isotropic tangent into its shear part 2 mu I_s,

@@ -138,6 +138,12 @@ namespace ddcontact
     transfer_after_refinement();
 
   private:
+    /** The committed or trial states (@p which) of @p cell's points. */
+    void
+    gather(const CellIterator &cell,
+           std::vector<double> MaterialPointState::*which,
+           std::vector<double>                     &values) const;
+
     /** The mean over the points of @p cell of their committed states. */
     std::vector<double>
     mean_committed(const CellIterator &cell) const;
