@@ -190,6 +190,18 @@ namespace ddcontact
     }
 
     std::string
+    alternatives(const std::vector<std::string> &names)
+    {
+      std::string list;
+      for (unsigned int i = 0; i < names.size(); ++i)
+        list += (i == 0                  ? ""
+                 : i + 1 == names.size() ? " or "
+                                         : ", ") +
+                names[i];
+      return list;
+    }
+
+    std::string
     unknown_subsection(const std::string      &parent,
                        const std::string      &name,
                        const ParameterHandler &prm)

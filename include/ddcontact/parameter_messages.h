@@ -39,6 +39,12 @@ namespace ddcontact
     std::string
     joined(const std::vector<std::string> &path);
 
+    /** "a, b or c" of @p names (empty if there are none): the choices a
+     * message offers, e.g. the solvers or estimators that can take a
+     * scene. */
+    std::string
+    alternatives(const std::vector<std::string> &names);
+
     /** The subsection @p name, which @p prm does not declare in @p parent
      * (a path, empty: the top level), with the declared sibling closest
      * to it if one is close. */

@@ -1,4 +1,5 @@
 #include <ddcontact/adaptivity/adaptation_parameters.h>
+#include <ddcontact/parameter_messages.h>
 
 namespace ddcontact
 {
@@ -45,10 +46,7 @@ namespace ddcontact
     for (const auto &[t, can] : estimator_table)
       if (can.*capability)
         names.push_back(to_string(t));
-    std::string list;
-    for (unsigned int i = 0; i < names.size(); ++i)
-      list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
-    return list;
+    return parameter_messages::alternatives(names);
   }
 
   std::string

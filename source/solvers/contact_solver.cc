@@ -1,5 +1,6 @@
 #include <ddcontact/contact/elastic_layer_guess.h>
 #include <ddcontact/interruption.h>
+#include <ddcontact/parameter_messages.h>
 #include <ddcontact/parameter_tools.h>
 #include <ddcontact/solvers/contact_solver.h>
 #include <ddcontact/solvers/dd_newton_solver.h>
@@ -128,10 +129,7 @@ namespace ddcontact
     for (const auto &entry : solvers)
       if (entry.can.*capability)
         names.emplace_back(entry.name);
-    std::string list;
-    for (unsigned int i = 0; i < names.size(); ++i)
-      list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
-    return list;
+    return parameter_messages::alternatives(names);
   }
 
   std::unique_ptr<ContactSolver>
