@@ -3,6 +3,8 @@
 #include <ddcontact/body/body_parameters.h>
 #include <ddcontact/body/material_laws.h>
 
+#include <algorithm>
+
 #include <string>
 #include <vector>
 
@@ -389,8 +391,21 @@ namespace ddcontact
       const std::string section = body.section() + "/";
       prm.enter_subsection("Material");
       {
-        body.material_law           = prm.get("Law");
-        const MaterialLawInfo &law  = material_law_info(body.material_law);
+        body.material_law          = prm.get("Law");
+        const MaterialLawInfo &law = material_law_info(body.material_law);
+        // An entry of another law would be ignored silently.
+        for (const auto &other : material_laws())
+          if (other.name != law.name)
+            for (const auto &entry : other.entries)
+              if (std::find(law.entries.begin(), law.entries.end(), entry) ==
+                    law.entries.end() &&
+                  !Utilities::trim(prm.get(entry)).empty())
+                throw InputError(section + "Material/" + entry + " = " +
+                                 prm.get(entry) +
+                                 " belongs to Law = " + other.name +
+                                 ", but the body's Law is " + law.name +
+                                 "; set Material/Law = " + other.name +
+                                 ", or remove the entry");
         body.material_law_constants = law.parse(prm, section + "Material/");
         if (body.volumetric_integration == VolumetricIntegration::reduced &&
             !law.reduced_integration)

@@ -25,9 +25,27 @@ namespace ddcontact
     , kinematics(body.get_kinematics())
     , law(body.get_material_law())
   {
-    // A path-dependent law's stress needs its quadrature-point state, which
-    // BodyStresses does not hold (yet).
-    Assert(!law.is_path_dependent(), ExcNotImplemented());
+    // A path-dependent law's stress from the state at the start of the
+    // step: per point, and the cell's mean for points between them.
+    const auto &state = body.get_material_state();
+    if (!state.empty())
+    {
+      const unsigned int n_cells  = body.get_triangulation().n_active_cells();
+      const unsigned int n_values = law.n_state_variables();
+      committed.resize(n_cells);
+      committed_mean.resize(n_cells);
+      for (const auto &cell : body.get_triangulation().active_cell_iterators())
+        if (body.computes(cell))
+        {
+          const unsigned int c = cell->active_cell_index();
+          state.get_committed(cell, committed[c]);
+          const unsigned int n_points = committed[c].size() / n_values;
+          committed_mean[c].assign(n_values, 0.);
+          for (unsigned int q = 0; q < n_points; ++q)
+            for (unsigned int k = 0; k < n_values; ++k)
+              committed_mean[c][k] += committed[c][q * n_values + k] / n_points;
+        }
+    }
     const Quadrature<dim> *reduced = body.get_volumetric_quadrature();
     if (reduced == nullptr)
       return;
@@ -56,11 +74,42 @@ namespace ddcontact
     if (!dilatation.empty())
       return law.linear_tangent().apply(strain, dilatation[cell]);
     SymmetricTensor<2, 3> sigma;
+    if (committed_mean.empty())
+      law.evaluate(make_array_view(&strain, &strain + 1),
+                   {},
+                   make_array_view(&sigma, &sigma + 1),
+                   nullptr,
+                   {});
+    else
+    {
+      std::vector<double> new_state(committed_mean[cell].size());
+      law.evaluate(make_array_view(&strain, &strain + 1),
+                   make_array_view(committed_mean[cell]),
+                   make_array_view(&sigma, &sigma + 1),
+                   nullptr,
+                   make_array_view(new_state));
+    }
+    return sigma;
+  }
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  BodyStresses<dim>::stress_at_quadrature_point(
+    const SymmetricTensor<2, 3> &strain,
+    const unsigned int           cell,
+    const unsigned int           q) const
+  {
+    if (committed.empty())
+      return stress(strain, cell);
+    const unsigned int    n_values = law.n_state_variables();
+    std::vector<double>   new_state(n_values);
+    SymmetricTensor<2, 3> sigma;
     law.evaluate(make_array_view(&strain, &strain + 1),
-                 {},
+                 make_array_view(committed[cell].data() + q * n_values,
+                                 committed[cell].data() + (q + 1) * n_values),
                  make_array_view(&sigma, &sigma + 1),
                  nullptr,
-                 {});
+                 make_array_view(new_state));
     return sigma;
   }
 
@@ -89,7 +138,8 @@ namespace ddcontact
         s.resize(strain.size());
         for (unsigned int q = 0; q < strain.size(); ++q)
         {
-          const SymmetricTensor<2, 3> sigma = stress(strain[q], c);
+          const SymmetricTensor<2, 3> sigma =
+            stress_at_quadrature_point(strain[q], c, q);
           s[q] = SectionKinematics::in_plane(sigma);
           if (third)
             (*third)[c].push_back(sigma[2][2]);

@@ -24,6 +24,7 @@
 #include <ddcontact/tasks.h>
 
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace ddcontact
@@ -546,6 +547,10 @@ namespace ddcontact
     BodyVector                       du;
     std::vector<std::vector<double>> new_states(
       get_triangulation().n_active_cells());
+    // Backtracking: a step that does not reduce the residual is halved
+    // (the tangent of a yield surface switches between the elastic and the
+    // plastic one, and full steps can cycle between the two).
+    double tau = 1, last_norm = std::numeric_limits<double>::infinity();
     for (unsigned int step = 0;; ++step)
     {
       // The tangent at u and the residual l_a + load - F(u).
@@ -569,10 +574,35 @@ namespace ddcontact
           residual(i) += load(i);
       const double norm = residual.l2_norm();
       report.residuals.push_back(norm);
+      // The forces' scale where l_a + load vanishes (a body driven by its
+      // Dirichlet values, or unloaded with residual stresses): the tangent
+      // times the start, on the free dofs.
+      if (step == 0)
+      {
+        Vector<double> u_values(u.size()), force(u.size());
+        for (unsigned int i = 0; i < u.size(); ++i)
+          u_values(i) = u(i);
+        linear_solver->matrix().vmult(force, u_values);
+        increment_constraints.set_zero(force);
+        report.load_norm = std::max(report.load_norm, force.l2_norm());
+      }
       if (!std::isfinite(norm))
         throw DivergenceError(parameters.section() +
                               ": the body's Newton loop gave a non-finite "
                               "residual; more Loading/Steps");
+      if (norm >= last_norm && tau > 1. / 64 &&
+          norm > parameters.newton_tolerance * report.load_norm &&
+          step < parameters.newton_max_iterations)
+      {
+        tau /= 2;
+        u.add(-tau, du);
+        continue;
+      }
+      last_norm = norm;
+      tau       = 1;
+      // Factorized before the test: the tangent at the converged u is what
+      // solve_homogeneous() solves with after the loop.
+      linear_solver->factorize(dof_handler);
       if (norm <= parameters.newton_tolerance * report.load_norm || norm == 0.)
         break;
       if (step == parameters.newton_max_iterations)
@@ -585,7 +615,6 @@ namespace ddcontact
                    "iterations";
         throw NotConvergedError(message.str());
       }
-      linear_solver->factorize(dof_handler);
       reinit_vector(du);
       linear_solver->solve(load, du);
       distribute_constraints(du, true);
@@ -597,9 +626,8 @@ namespace ddcontact
         if (mesh.computes(cell))
           material_state.set_trial(
             cell, make_array_view(new_states[cell->active_cell_index()]));
-    // The matrix is the tangent of the last step, no longer the body's
-    // (linear) stiffness.
-    is_factorized = false;
+    // The factorization is the tangent at u (for solve_homogeneous()).
+    is_factorized = true;
     return report;
   }
 

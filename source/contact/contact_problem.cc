@@ -103,6 +103,15 @@ namespace ddcontact
         bodies[b]->distribute_vectors(traces[b]);
   }
 
+  bool
+  ContactProblem::has_nonlinear_bodies() const
+  {
+    for (const auto *body : bodies)
+      if (!body->get_material_law().is_linear())
+        return true;
+    return false;
+  }
+
   void
   ContactProblem::solve_all(const Iterate &loads,
                             Iterate       &u,
@@ -133,8 +142,10 @@ namespace ddcontact
     {
       if (homogeneous)
         bodies[b]->solve_homogeneous(loads[b], u[b]);
-      else
+      else if (bodies[b]->get_material_law().is_linear())
         bodies[b]->solve(loads[b], u[b]);
+      else
+        bodies[b]->solve_nonlinear(loads[b], u[b]);
     };
     if (exchange == Exchange::traces)
       distribution.solve_and_share_traces(solve, u, trace_dofs());

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <ddcontact/body/material_state_fields.h>
 #include <ddcontact/body/reaction_forces.h>
 #include <ddcontact/interruption.h>
 #include <ddcontact/io/process_report.h>
@@ -238,6 +239,25 @@ namespace ddcontact
       pairs.push_back(c);
     }
     row["pairs"] = pairs;
+    // Bodies with a state (plasticity): how far they have yielded.
+    Json bodies = Json::array();
+    for (const auto &body : results.bodies)
+    {
+      const MaterialStateSummary state = summarize_material_state(*body);
+      if (state.names.empty())
+        continue;
+      Json b;
+      b["body"] = body->name();
+      for (unsigned int k = 0; k < state.names.size(); ++k)
+        if (state.names[k] != "yielded")
+          b["largest_" + state.names[k]] = state.largest[k];
+      b["plastic_zone_measure"] = state.yielded_measure;
+      if (state.yielded())
+        b["location_of_largest"] = state.location_of_largest;
+      bodies.push_back(b);
+    }
+    if (!bodies.empty())
+      row["bodies"] = bodies;
     record_supports(results, states, step, t, row);
     load_steps.push_back(row);
   }

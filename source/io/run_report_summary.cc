@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <ddcontact/body/material_state_fields.h>
 #include <ddcontact/body/reaction_forces.h>
 #include <ddcontact/interruption.h>
 #include <ddcontact/io/process_report.h>
@@ -232,7 +233,15 @@ namespace ddcontact
       b["mesh_memory_mb"]    = Utilities::MPI::max(mesh_mb, MPI_COMM_WORLD);
       b["dofs"]              = body->n_dofs();
       b["min_cell_diameter"] = body->get_mesh().min_cell_diameter();
-      b["strain_energy"]     = body->stresses().strain_energy();
+      // The elastic energy of a linear body; a plastic one's state.
+      if (body->get_material_law().is_linear())
+        b["strain_energy"] = body->stresses().strain_energy();
+      const MaterialStateSummary state = summarize_material_state(*body);
+      for (unsigned int k = 0; k < state.names.size(); ++k)
+        if (state.names[k] != "yielded")
+          b["largest_" + state.names[k]] = state.largest[k];
+      if (!state.names.empty())
+        b["plastic_zone_measure"] = state.yielded_measure;
       const auto [strain, rotation] =
         body->stresses().largest_strain_and_rotation();
       b["largest_strain"]   = Utilities::MPI::max(strain, MPI_COMM_WORLD);
@@ -645,6 +654,16 @@ namespace ddcontact
     json["points"]        = points_json(results);
     if (!load_steps.empty())
       json["load_steps"] = load_steps;
+    // The first load step at which a point of a body yields, and where.
+    for (const auto &row : load_steps)
+      if (row.contains("bodies") && !json.contains("first_yield"))
+        for (const auto &b : row.at("bodies"))
+          if (b.at("plastic_zone_measure").get<double>() > 0 &&
+              !json.contains("first_yield"))
+            json["first_yield"] = {{"step", row.at("step")},
+                                   {"t", row.at("t")},
+                                   {"body", b.at("body")},
+                                   {"location", b.at("location_of_largest")}};
     if (!load_path.is_null())
       json["load_path"] = load_path;
     // The penetration is judged only where the contact iteration converged

@@ -1,3 +1,4 @@
+#include <ddcontact/body/material_state_fields.h>
 #include <ddcontact/io/solution_output.h>
 
 namespace ddcontact
@@ -34,6 +35,9 @@ namespace ddcontact
       for (const auto &a : results.adaptations)
         if (&a->get_body() == bodies[b].get())
           cell_data[b] = a->cell_data();
+      // A law's state (the equivalent plastic strain, yielded) per cell.
+      for (auto &[name, field] : material_state_cell_fields(*bodies[b]))
+        cell_data[b][name] = std::move(field);
     }
     body_writer->write_step(step, step, body_pointers, solutions, cell_data);
 

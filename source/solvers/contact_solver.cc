@@ -63,22 +63,22 @@ namespace ddcontact
      * its source, its row here and its test. Capabilities: friction,
      * floating bodies, pressure on the nodes, exact contact on the nodes,
      * (the same only with friction), auto = points for the Uzawa loop,
-     * single steps, several processes. */
+     * single steps, several processes, nonlinear material laws. */
     const std::vector<SolverEntry> solvers = {
       {"dd-newton",
        &make_solver<DDNewtonSolver>,
-       {true, true, true, true, true, false, true, true},
+       {true, true, true, true, true, false, true, true, true},
        "semismooth Newton on the contact pressure of (20), "
        "whose linear systems are solved by preconditioned CG with one set "
        "of body solves per iteration (doc/contact-solvers.md)"},
       {"monolithic",
        &make_solver<MonolithicContactSolver>,
-       {true, false, true, false, true, true, false, false},
+       {true, false, true, false, true, true, false, false, false},
        "semismooth Newton on the penalised problem (16) for all bodies at "
        "once (the reference)"},
       {"dd",
        &make_solver<NeumannDDSolver>,
-       {false, false, false, false, false, false, true, true},
+       {false, false, false, false, false, false, true, true, true},
        "the paper's parallel Neumann domain decomposition (20)-(21) with "
        "the relaxation of the subsection Domain decomposition, kept for "
        "reproducing the paper (and needed when a body is solved by a "
@@ -355,7 +355,14 @@ namespace ddcontact
     // lambda_max]).
     const auto             &bodies = problem.get_bodies();
     ContactProblem::Iterate base, v(bodies.size()), w;
-    problem.solve_all(ContactProblem::Iterate(bodies.size()), base);
+    // Nonlinear bodies: the operator of their tangents (of the last solve,
+    // or the elastic stiffness before any), by homogeneous solves, which
+    // leave the bodies' states alone.
+    const bool tangent = problem.has_nonlinear_bodies();
+    if (tangent)
+      base = problem.zero_iterate();
+    else
+      problem.solve_all(ContactProblem::Iterate(bodies.size()), base);
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
       v[b] = bodies[b]->get_solution();
@@ -390,7 +397,7 @@ namespace ddcontact
           sigma[q] = -(u_1n[q] + u_2n[q]) / pair->penalty();
         pair->add_contact_loads(sigma, loads[b1], loads[b2]);
       }
-      problem.solve_all(loads, w);
+      problem.solve_all(loads, w, tangent);
       double norm_v = 0, norm_w = 0;
       for (unsigned int b = 0; b < bodies.size(); ++b)
       {

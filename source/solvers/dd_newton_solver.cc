@@ -103,6 +103,7 @@ namespace ddcontact
   {
     ContactSolver::start_phase();
     phase_ready = false;
+    keep_scale  = false;
     last_active.clear();
     last_slip_directions.clear();
     alpha_stale = !coarse.empty();
@@ -112,6 +113,7 @@ namespace ddcontact
   DDNewtonSolver::setup_mesh()
   {
     AssertDimension(p.size(), interface.n_unknowns());
+    const bool kept_mesh = same_mesh;
     if (!same_mesh)
       preconditioner.setup(interface);
     same_mesh = false;
@@ -120,17 +122,66 @@ namespace ddcontact
     Ga.assign(p.size(), 0.);
     alpha_stale = !coarse.empty();
     balanced    = coarse.empty();
-    problem.solve_all(ContactProblem::Iterate(problem.get_bodies().size()),
-                      u_0,
-                      false,
-                      ContactProblem::Exchange::traces);
+    nonlinear   = problem.has_nonlinear_bodies();
+    if (nonlinear)
+    {
+      // A new load step starts from the last step's displacement; a new
+      // mesh from zero.
+      ContactProblem::Iterate warm(problem.get_bodies().size());
+      if (kept_mesh && u_0.size() == warm.size())
+      {
+        ContactProblem::assign(warm, u_0);
+        add(warm, 1., u_p);
+      }
+      relinearize(warm);
+    }
+    else
+    {
+      problem.solve_all(ContactProblem::Iterate(problem.get_bodies().size()),
+                        u_0,
+                        false,
+                        ContactProblem::Exchange::traces);
+      ++n_data_solves;
+      u_p = problem.zero_iterate();
+      Sp.assign(p.size(), 0.);
+      if (std::any_of(
+            p.begin(), p.end(), [](const double x) { return x != 0; }))
+        interface.apply(p, u_p, Sp);
+    }
+    mesh_ready  = true;
+    phase_ready = false;
+    keep_scale  = false;
+  }
+
+  void
+  DDNewtonSolver::relinearize(const ContactProblem::Iterate &warm_start)
+  {
+    // u(p): every body under the contact loads of p, the nonlinear ones by
+    // their Newton loops, which leave their tangents factorized.
+    ContactProblem::Iterate u_k;
+    ContactProblem::assign(u_k, warm_start);
+    if (interface.has_friction())
+      problem.solve_bodies(interface.normal_stresses(p),
+                           interface.tangential_tractions(p),
+                           u_k,
+                           false,
+                           ContactProblem::Exchange::traces);
+    else
+      problem.solve_bodies(interface.normal_stresses(p),
+                           u_k,
+                           false,
+                           ContactProblem::Exchange::traces);
     ++n_data_solves;
+    // S of the tangents: u_p = K_T^{-1} B^T p and u_0 = u(p) - u_p, so that
+    // u_0 + u_x is the tangent's prediction of the bodies under x.
     u_p = problem.zero_iterate();
     Sp.assign(p.size(), 0.);
     if (std::any_of(p.begin(), p.end(), [](const double x) { return x != 0; }))
       interface.apply(p, u_p, Sp);
-    mesh_ready  = true;
+    ContactProblem::assign(u_0, u_k);
+    add(u_0, -1., u_p);
     phase_ready = false;
+    keep_scale  = true;
   }
 
   void
@@ -213,10 +264,8 @@ namespace ddcontact
   }
 
   void
-  DDNewtonSolver::prepare_step()
+  DDNewtonSolver::update_data()
   {
-    if (!mesh_ready)
-      setup_mesh();
     if (!phase_ready)
     {
       d_0 = interface.penetration(u_0);
@@ -233,9 +282,20 @@ namespace ddcontact
           interface.penalty(q) * history.old_traction(i) - history.old_slip(i);
         overlap[q] = std::abs(d_0[q]);
       }
-      scale       = interface.norm(overlap);
+      // A new linearization of a nonlinear body keeps the phase's scale.
+      if (!keep_scale)
+        scale = interface.norm(overlap);
+      keep_scale  = false;
       phase_ready = true;
     }
+  }
+
+  void
+  DDNewtonSolver::prepare_step()
+  {
+    if (!mesh_ready)
+      setup_mesh();
+    update_data();
     if (continuation.is_pending())
       continuation.start(d_0, problem.get_pairs());
     if (alpha_stale)
@@ -341,7 +401,7 @@ namespace ddcontact
                             const ContactProblem::Iterate &u_x,
                             const PointVector             &Gx,
                             const std::vector<double>     &alpha_x,
-                            const double                   psi_new)
+                            double                        &psi_new)
   {
     PointVector change = x;
     add(change, -1., p);
@@ -353,6 +413,17 @@ namespace ddcontact
     blend(Ga, tau, Gx);
     blend(alpha, tau, alpha_x);
     balanced = true;
+    // Nonlinear bodies: solved under the new p, and the model taken there;
+    // its residual at p is then the true one (psi_new was the model's).
+    if (nonlinear)
+    {
+      ContactProblem::Iterate prediction;
+      ContactProblem::assign(prediction, u_0);
+      add(prediction, 1., u_p);
+      relinearize(prediction);
+      update_data();
+      psi_new = interface.norm(newton_residual(p, Sp, Ga));
+    }
     // A floating body's d_0 is that of its clamped components, which may
     // carry the whole load and see no overlap: the residual is then
     // measured against the approach of the bodies under the pressure.

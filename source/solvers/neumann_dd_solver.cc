@@ -254,9 +254,12 @@ namespace ddcontact
   bool
   NeumannDDSolver::step()
   {
-    const auto             &pairs = problem.get_pairs();
-    const auto              u     = problem.current_iterate();
+    const auto &pairs = problem.get_pairs();
+    const auto  u     = problem.current_iterate();
+    // Nonlinear bodies start their Newton loops from the current iterate.
     ContactProblem::Iterate u_tilde;
+    if (problem.has_nonlinear_bodies())
+      ContactProblem::assign(u_tilde, u);
 
     IterationRecord record;
     record.iteration = records.size() + 1;

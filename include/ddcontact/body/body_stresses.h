@@ -51,6 +51,13 @@ namespace ddcontact
    * x_c, consistently with the assembled a_a; stress() is the one place
    * that applies this correction.
    *
+   * A path-dependent law (plasticity) evaluates the stress from the state
+   * committed at the start of the load step (ElasticBody::
+   * get_material_state()): at the body's quadrature points each point's
+   * own state, which gives exactly the stress of the body's last solve;
+   * at any other point of a cell the mean of the cell's states (a
+   * piecewise-constant projection of the state).
+   *
    * On a distributed mesh each process computes its own cells; sums are
    * taken over the processes, and per-cell arrays hold zeros elsewhere.
    */
@@ -70,6 +77,14 @@ namespace ddcontact
      * volumetric part if the cell has one. */
     SymmetricTensor<2, 3>
     stress(const SymmetricTensor<2, 3> &strain, const unsigned int cell) const;
+
+    /** The same at the quadrature point @p q of the body's cell quadrature
+     * (ElasticBody::get_cell_quadrature()): a path-dependent law from that
+     * point's own state. */
+    SymmetricTensor<2, 3>
+    stress_at_quadrature_point(const SymmetricTensor<2, 3> &strain,
+                               unsigned int                 cell,
+                               unsigned int                 q) const;
 
     /** sigma(u) at every quadrature point of every active cell, indexed
      * [active_cell_index][q]; the third normal stress (out_of_plane())
@@ -142,6 +157,12 @@ namespace ddcontact
     /** div u (+ u_r / r in axisymmetry) at the reduced point of every
      * active cell; empty with full integration. */
     std::vector<double> dilatation;
+
+    /** A path-dependent law's committed states, by active cell index: the
+     * values of every quadrature point, then (committed_mean) their mean;
+     * empty otherwise. */
+    std::vector<std::vector<double>> committed;
+    std::vector<std::vector<double>> committed_mean;
   };
 } // namespace ddcontact
 

@@ -39,12 +39,14 @@ namespace ddcontact
   using namespace dealii;
 
   /** The residual norms of ElasticBody::solve_nonlinear(), one per
-   * linearization (the last one converged). */
+   * assembly (the last one converged; a step halved by the backtracking
+   * adds one). */
   struct BodyNewtonReport
   {
     std::vector<double> residuals;
-    /** The norm of the load l_a + load the residuals are measured
-     * against. */
+    /** What the residuals are measured against: the norm of the load l_a +
+     * load, or if larger of the forces of the start, K_T u on the free
+     * dofs (a body driven by its Dirichlet values, or unloaded). */
     double load_norm = 0;
 
     unsigned int
@@ -189,9 +191,12 @@ namespace ddcontact
      * set first), with the law's consistent tangent assembled and
      * factorized at every step. Stops when the residual is Solver/Newton
      * tolerance times the load's norm; the law's trial state
-     * (get_material_state()) is then that of @p u. A linear law converges
-     * in one step to solve()'s answer. One process per body (for now);
-     * throws SolverError naming the body if the loop does not converge.
+     * (get_material_state()) is then that of @p u, and the consistent
+     * tangent at @p u is left factorized: solve_homogeneous() then gives
+     * the linearized response to a load (dd-newton's interface operator at
+     * this linearization). A linear law converges in one step to solve()'s
+     * answer. One process per body (for now); throws NotConvergedError or
+     * DivergenceError naming the body if the loop does not converge.
      */
     BodyNewtonReport
     solve_nonlinear(const BodyVector &load, BodyVector &u);

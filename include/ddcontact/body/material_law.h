@@ -247,6 +247,26 @@ namespace ddcontact
              std::vector<MaterialTangent>                 *tangent,
              const ArrayView<double>                      &new_state) const = 0;
 
+    /** The names of the scalars that describe a point's state for the
+     * output (VTU cell data, summary.json), e.g. the equivalent plastic
+     * strain; none by default. */
+    virtual std::vector<std::string>
+    state_output_names() const
+    {
+      return {};
+    }
+
+    /** Those scalars of one point's @p state (n_state_variables() values)
+     * into @p values (state_output_names().size() values). */
+    virtual void
+    state_outputs(const ArrayView<const double> &state,
+                  const ArrayView<double>       &values) const
+    {
+      (void)state;
+      (void)values;
+      AssertDimension(values.size(), 0);
+    }
+
     /** The constant tangent of a linear law. */
     virtual MaterialTangent
     linear_tangent() const

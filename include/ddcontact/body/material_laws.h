@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace ddcontact
 {
@@ -32,6 +33,11 @@ namespace ddcontact
     /** Whether Element/Volumetric integration = reduced applies (an
      * isotropic tangent, MaterialTangent::shear_form()). */
     bool reduced_integration = false;
+    /** The names of the row's own entries of Body X/Material, declared
+     * with an empty default: a body of another law that sets one is
+     * refused (parse_material()). */
+    std::vector<std::string> entries;
+
     /** Declare the row's own entries in the current subsection Material. */
     std::function<void(ParameterHandler &)> declare;
     /** Read and check them; @p section ("Body lower/Material/") names

@@ -152,6 +152,10 @@ namespace ddcontact
     unsigned int
     body_index(const ElasticBody<2> &body) const;
 
+    /** Whether a body has a nonlinear material law. */
+    bool
+    has_nonlinear_bodies() const;
+
     /** Where the bodies are solved (for other solves than solve_all()). */
     const BodyDistribution &
     get_distribution() const
@@ -205,7 +209,10 @@ namespace ddcontact
      * on its process, concurrently; every process receives all u[b].
      * A non-finite load is refused naming the pairs' Gap and Penalty.
      * With @p homogeneous, the bodies' own data are left out
-     * (ElasticBody::solve_homogeneous()). */
+     * (ElasticBody::solve_homogeneous(): with a nonlinear law, the tangent
+     * of its last solve). Otherwise a body of a nonlinear law runs its
+     * Newton loop (ElasticBody::solve_nonlinear()) warm-started from u[b]
+     * (zero if empty). */
     void
     solve_all(const Iterate &loads,
               Iterate       &u,

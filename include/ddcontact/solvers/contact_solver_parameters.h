@@ -78,8 +78,8 @@ namespace ddcontact
     /** Runs under mpirun (bodies on several processes). */
     bool several_processes = false;
     /** Bodies of a nonlinear material law (MaterialLaw::is_linear()): a
-     * body Newton loop per solve. No solver yet; each takes a body's
-     * response as affine in its load (dd-newton's u_0 + u_p). */
+     * body Newton loop per solve (dd-newton: and the interface problem
+     * relinearized at every Newton step). */
     bool nonlinear_laws = false;
   };
 

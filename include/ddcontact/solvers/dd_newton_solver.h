@@ -155,6 +155,19 @@ namespace ddcontact
           const PointVector &Sx,
           const PointVector &Gx) const;
 
+    /**
+     * Bodies of a nonlinear law (plasticity): the affine model d(x) = d_0 -
+     * S x of the interface problem, taken at the pressure p. Every body is
+     * solved under p (a nonlinear body by its Newton loop, warm-started
+     * from @p warm_start, the model's prediction), which leaves its
+     * consistent tangent factorized; S is then the Schur complement of the
+     * tangents and d_0 = d(u(p)) + S p, so that the model is exact at p
+     * and the semismooth Newton step on it is a Newton step of the
+     * nonlinear problem. u_p = S-response to p, u_0 = u(p) - u_p.
+     */
+    void
+    relinearize(const ContactProblem::Iterate &warm_start);
+
     /** For floating bodies: the amplitudes alpha that fit the gaps where
      * the pressure is positive, for the pressure of another mesh or
      * phase (zero if these do not hold the modes). */
@@ -166,6 +179,11 @@ namespace ddcontact
      * gaps there in the least-squares sense. */
     std::vector<double>
     fitted_amplitudes(const PointVector &x, const PointVector &Sx) const;
+
+    /** d_0, its scale and with friction the history's part, for a new
+     * phase or linearization (phase_ready false). */
+    void
+    update_data();
 
     /** What a step needs before its active set: the data d_0 of a new
      * phase, the continuation's first stage, the floating modes'
@@ -199,7 +217,9 @@ namespace ddcontact
             double            &psi_new) const;
 
     /** p + tau (x - p) with S p, u_p, G alpha and alpha alike; the bodies'
-     * solutions and the step's record. */
+     * solutions and the step's record. With nonlinear bodies relinearized
+     * at the new p, and @p psi_new (the model's residual there) replaced
+     * by the true one. */
     IterationRecord
     take_step(double                         tau,
               const PointVector             &x,
@@ -207,7 +227,7 @@ namespace ddcontact
               const ContactProblem::Iterate &u_x,
               const PointVector             &Gx,
               const std::vector<double>     &alpha_x,
-              double                         psi_new);
+              double                        &psi_new);
 
     /** The step's line of progress; DivergenceError on a non-finite
      * residual, or where the step's CG stopped at its iteration limit
@@ -254,6 +274,8 @@ namespace ddcontact
     bool                  mesh_ready = false; // interface, u_0, S p
     bool same_mesh   = false; // a load step: the preconditioner is kept
     bool phase_ready = false; // d_0 with the multipliers
+    bool nonlinear   = false; // a body of a nonlinear law: relinearize()
+    bool keep_scale  = false; // d_0 of a new linearization, not a new phase
 
     ContactProblem::Iterate u_0;       // the bodies under their data alone
     PointVector             d_0;       // its penetration

@@ -147,4 +147,19 @@ namespace ddcontact
       }
     }
   }
+  std::vector<std::string>
+  J2PlasticityLaw::state_output_names() const
+  {
+    return {"equivalent_plastic_strain", "yielded"};
+  }
+
+  void
+  J2PlasticityLaw::state_outputs(const ArrayView<const double> &state,
+                                 const ArrayView<double>       &values) const
+  {
+    AssertDimension(state.size(), n_state_values);
+    AssertDimension(values.size(), 2);
+    values[0] = state[alpha_offset];
+    values[1] = (state[alpha_offset] > 0) ? 1. : 0.;
+  }
 } // namespace ddcontact

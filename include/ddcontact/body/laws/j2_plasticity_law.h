@@ -9,8 +9,8 @@ namespace ddcontact
    * J2 (von Mises) elastoplasticity with linear isotropic and linear
    * kinematic (Prager) hardening, small strains, integrated by the
    * backward-Euler radial return (Simo and Hughes, Computational
-   * Inelasticity, chapter 3). Not in the table of laws yet: no solver takes
-   * a nonlinear law today (doc/materials.md).
+   * Inelasticity, chapter 3): Body X/Material/Law = j2-plasticity
+   * (doc/materials.md).
    *
    * Additive split eps = eps_e + eps_p, sigma = C : (eps - eps_p) with
    * Hooke's C of the elastic constants. The yield function is written with
@@ -105,6 +105,15 @@ namespace ddcontact
              const ArrayView<SymmetricTensor<2, 3>>       &stress,
              std::vector<MaterialTangent>                 *tangent,
              const ArrayView<double> &new_state) const override;
+
+    /** "equivalent_plastic_strain": alpha, and "yielded": 1 where alpha
+     * > 0, else 0. */
+    std::vector<std::string>
+    state_output_names() const override;
+
+    void
+    state_outputs(const ArrayView<const double> &state,
+                  const ArrayView<double>       &values) const override;
 
   private:
     const ElasticConstants elastic;
