@@ -59,6 +59,11 @@ case_ "E = 0" "Young's modulus" "$base" --set "Body lower/Material/Young's modul
 case_ "nu = 0.5" "Poisson's ratio" "$base" --set "Body upper/Material/Poisson's ratio=0.5"
 case_ "nu = -1.2" "Poisson's ratio" "$base" --set "Body upper/Material/Poisson's ratio=-1.2"
 case_ "unknown material law" "Material/Law = 'plastic': not one of linear-elastic" "$base" --set "Body upper/Material/Law=plastic"
+case_ "j2-plasticity without a yield stress" "Body upper/Material/Yield stress: required by Law = j2-plasticity" "$base" --set "Body upper/Material/Law=j2-plasticity"
+case_ "yield stress 0" "Body upper/Material/Yield stress = 0 must be > 0" "$base" --set "Body upper/Material/Law=j2-plasticity" --set "Body upper/Material/Yield stress=0"
+case_ "softening" "Body upper/Material/Isotropic hardening = -5 must be >= 0" "$base" --set "Body upper/Material/Law=j2-plasticity" --set "Body upper/Material/Yield stress=100" --set "Body upper/Material/Isotropic hardening=-5"
+case_ "a plastic entry on an elastic body" "Body upper/Material/Yield stress = 100 belongs to Law = j2-plasticity" "$base" --set "Body upper/Material/Yield stress=100"
+case_ "monolithic with a plastic body" "Contact solver/Solver = monolithic solves linear bodies only; use Solver = dd-newton or dd" "$base" --set "Body upper/Material/Law=j2-plasticity" --set "Body upper/Material/Yield stress=100" --set "Contact solver/Solver=monolithic"
 case_ "boundary id not in mesh" "boundary id 7" "$base" --set "Body lower/Boundary conditions/Neumann=7: 0; 1"
 case_ "no Dirichlet part" "Body upper/Dirichlet" "$base" --set "Body upper/Boundary conditions/Dirichlet="
 case_ "expression does not parse" "Body lower/Neumann" "$base" --set "Body lower/Boundary conditions/Neumann=3: 0; -p*("
@@ -77,6 +82,7 @@ case_ "body owner range beyond the run" "does not exist" "$base" --set "Parallel
 # Hostile and careless input: crashes, shells, runaway memory, silent
 # wrong answers (doc/reliability.md).
 paper="$src/prm/paper_two_bodies.prm"
+case_ "FEM-BEM with a plastic body" "Adaptation/Estimator = fem-bem-scaled estimates linear bodies only" "$paper" --set "Body omega1/Material/Law=j2-plasticity" --set "Body omega1/Material/Yield stress=100"
 flat="--set Adaptation/Mode=none"
 case_ "--set with an empty entry path" "empty part" "$base" --set "=3"
 case_ "--set with a trailing slash" "empty part" "$base" --set "Body lower/=3"

@@ -1,5 +1,6 @@
 #include <ddcontact/body/body_distribution.h>
 #include <ddcontact/interruption.h>
+#include <ddcontact/iteration_errors.h>
 #include <ddcontact/tasks.h>
 
 #include <deal.II/base/thread_management.h>
@@ -15,6 +16,10 @@ namespace ddcontact
   {
     // Leads the message of an out-of-memory error between processes.
     const std::string out_of_memory_mark = "\x01";
+    // A body's Newton loop that did not converge or diverged (a nonlinear
+    // law): the contact solver may damp its step and solve again.
+    const std::string not_converged_mark = "\x02";
+    const std::string divergence_mark    = "\x03";
   } // namespace
 
   BodyDistribution::BodyDistribution(
@@ -145,6 +150,14 @@ namespace ddcontact
                                                      "problem; refine less or "
                                                      "run on more processes");
       }
+      catch (const NotConvergedError &e)
+      {
+        errors[b] = not_converged_mark + e.what();
+      }
+      catch (const DivergenceError &e)
+      {
+        errors[b] = divergence_mark + e.what();
+      }
       catch (const std::exception &e)
       {
         errors[b] = e.what();
@@ -170,13 +183,17 @@ namespace ddcontact
 
   namespace
   {
-    /** InputError, or OutOfMemoryError for a message that carries the
-     * out-of-memory mark. */
+    /** InputError, or the error of the mark the message carries
+     * (OutOfMemoryError, NotConvergedError, DivergenceError). */
     [[noreturn]] void
     throw_error(const std::string &message)
     {
       if (message.rfind(out_of_memory_mark, 0) == 0)
         throw OutOfMemoryError(message.substr(out_of_memory_mark.size()));
+      if (message.rfind(not_converged_mark, 0) == 0)
+        throw NotConvergedError(message.substr(not_converged_mark.size()));
+      if (message.rfind(divergence_mark, 0) == 0)
+        throw DivergenceError(message.substr(divergence_mark.size()));
       throw InputError(message);
     }
   } // namespace

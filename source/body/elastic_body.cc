@@ -590,10 +590,25 @@ namespace ddcontact
         throw DivergenceError(parameters.section() +
                               ": the body's Newton loop gave a non-finite "
                               "residual; more Loading/Steps");
-      if (norm >= last_norm && tau > 1. / 64 &&
+      if (norm >= last_norm &&
           norm > parameters.newton_tolerance * report.load_norm &&
           step < parameters.newton_max_iterations)
       {
+        // No step along the Newton direction reduces the residual: the body
+        // cannot carry the load (a perfectly plastic body beyond its limit
+        // load), or the tangent is wrong. The caller may damp its load.
+        if (tau <= 1. / 64)
+        {
+          std::ostringstream message;
+          message << parameters.section() << ": the body's Newton loop "
+                  << "stalled at the residual " << last_norm << " of the "
+                  << "load's " << report.load_norm
+                  << " (no step along its direction reduces it: a load "
+                     "beyond what the body carries, such as a perfectly "
+                     "plastic body past its limit load); more Loading/Steps, "
+                     "or hardening";
+          throw NotConvergedError(message.str());
+        }
         tau /= 2;
         u.add(-tau, du);
         continue;

@@ -134,6 +134,13 @@ namespace ddcontact
         add(warm, 1., u_p);
       }
       relinearize(warm);
+      // From zero pressure (a new mesh or the first step) the first
+      // iterates keep this linearization: the contact problem of the start's
+      // tangent first, its pressure then the first load of the bodies' own
+      // laws (the early iterates' pressures, peaked at a few nodes or
+      // pulling, are no load a plastic body carries).
+      tangent_start =
+        std::all_of(p.begin(), p.end(), [](const double x) { return x == 0; });
     }
     else
     {
@@ -395,7 +402,7 @@ namespace ddcontact
   }
 
   IterationRecord
-  DDNewtonSolver::take_step(const double                   tau,
+  DDNewtonSolver::take_step(double                        &tau,
                             const PointVector             &x,
                             const PointVector             &Sx,
                             const ContactProblem::Iterate &u_x,
@@ -406,21 +413,53 @@ namespace ddcontact
     PointVector change = x;
     add(change, -1., p);
     const double increment = interface.norm(change);
-    // p + tau (x - p), and S p and u_p alike (both linear in p).
-    blend(p, tau, x);
-    blend(Sp, tau, Sx);
-    blend(u_p, tau, u_x);
-    blend(Ga, tau, Gx);
-    blend(alpha, tau, alpha_x);
-    balanced = true;
-    // Nonlinear bodies: solved under the new p, and the model taken there;
-    // its residual at p is then the true one (psi_new was the model's).
+    // The iterate before the step, for a nonlinear body that cannot carry
+    // the step's pressure.
+    const PointVector       p_old = p, Sp_old = Sp, Ga_old = Ga;
+    const auto              alpha_old = alpha;
+    ContactProblem::Iterate u_p_old;
     if (nonlinear)
+      ContactProblem::assign(u_p_old, u_p);
+    for (;;)
     {
-      ContactProblem::Iterate prediction;
-      ContactProblem::assign(prediction, u_0);
-      add(prediction, 1., u_p);
-      relinearize(prediction);
+      // p + tau (x - p), and S p and u_p alike (both linear in p).
+      blend(p, tau, x);
+      blend(Sp, tau, Sx);
+      blend(u_p, tau, u_x);
+      blend(Ga, tau, Gx);
+      blend(alpha, tau, alpha_x);
+      balanced = true;
+      if (!nonlinear || tangent_start)
+        break;
+      // Nonlinear bodies: solved under the new p, and the model taken
+      // there; its residual at p is then the true one (psi_new was the
+      // model's). A pressure beyond what a body carries (a perfectly
+      // plastic body past its limit load, where the model's pressure
+      // peaks at a node) stops the body's Newton loop: the step is halved.
+      try
+      {
+        ContactProblem::Iterate prediction;
+        ContactProblem::assign(prediction, u_0);
+        add(prediction, 1., u_p);
+        relinearize(prediction);
+        break;
+      }
+      catch (const DivergenceError &e)
+      {
+        if (tau < 1. / 64)
+          throw;
+        p  = p_old;
+        Sp = Sp_old;
+        Ga = Ga_old;
+        ContactProblem::assign(u_p, u_p_old);
+        alpha = alpha_old;
+        tau /= 2;
+        pcout << "  a body's Newton loop failed under the step's pressure ("
+              << e.what() << "): step halved to tau = " << tau << std::endl;
+      }
+    }
+    if (nonlinear && !tangent_start)
+    {
       update_data();
       psi_new = interface.norm(newton_residual(p, Sp, Ga));
     }
@@ -476,8 +515,13 @@ namespace ddcontact
     for (unsigned int q = 0; q < d_0.size(); ++q)
       if (active[q])
         active_data[q] = d_0[q];
+    // Nonlinear bodies: every step to the final tolerance. A crude early
+    // step's pressure (one CG iteration, peaked at a few nodes) is no load
+    // a plastic body carries, and each step costs the bodies' Newton loops
+    // (relinearize()) more than the Krylov iterations it saves.
+    const bool   settled = n_changed == 0 || nonlinear;
     const double tolerance =
-      std::max((n_changed == 0 && interface.get_continuation() == 0)
+      std::max((settled && interface.get_continuation() == 0)
                  ? final_tolerance
                  : std::max(final_tolerance, 0.1 * psi),
                1e-14 * interface.norm(active_data));
@@ -506,8 +550,8 @@ namespace ddcontact
     // the bound at the zone's ends), and a damped stick step leaves slip
     // increments whose trial tractions (ds / c, c an element's
     // compliance) throw every node into slip.
-    double       psi_new = 0;
-    const double tau =
+    double psi_new = 0;
+    double tau =
       damping(psi, first && interface.has_friction(), x, Sx, Gx, psi_new);
     const IterationRecord record =
       take_step(tau, x, Sx, u_x, Gx, alpha_x, psi_new);
@@ -520,10 +564,23 @@ namespace ddcontact
     // in force at Tolerance = 1e-6, 10 % at c = 0.05).
     unsigned int n_next = 0;
     active_set(n_next);
-    const bool converged = interface.get_continuation() == 0 &&
-                           n_changed == 0 && tau == 1 && n_next == 0 &&
-                           psi_new <= stopping_tolerance(p);
+    bool converged = interface.get_continuation() == 0 && n_changed == 0 &&
+                     tau == 1 && n_next == 0 &&
+                     psi_new <= stopping_tolerance(p);
     print_step(record, active, n_changed, cg);
+    if (converged && tangent_start)
+    {
+      // The start's tangent problem is solved: from here every step
+      // relinearizes at its pressure.
+      tangent_start = false;
+      ContactProblem::Iterate prediction;
+      ContactProblem::assign(prediction, u_0);
+      add(prediction, 1., u_p);
+      relinearize(prediction);
+      update_data();
+      store_iterate();
+      converged = false;
+    }
     return converged;
   }
 

@@ -219,9 +219,10 @@ namespace ddcontact
     /** p + tau (x - p) with S p, u_p, G alpha and alpha alike; the bodies'
      * solutions and the step's record. With nonlinear bodies relinearized
      * at the new p, and @p psi_new (the model's residual there) replaced
-     * by the true one. */
+     * by the true one; @p tau halved where a body's Newton loop fails
+     * under the step's pressure. */
     IterationRecord
-    take_step(double                         tau,
+    take_step(double                        &tau,
               const PointVector             &x,
               const PointVector             &Sx,
               const ContactProblem::Iterate &u_x,
@@ -272,10 +273,11 @@ namespace ddcontact
     PenaltyContinuation   continuation{interface, preconditioner, pcout};
     InterfaceKrylovSolver krylov{interface, preconditioner, coarse};
     bool                  mesh_ready = false; // interface, u_0, S p
-    bool same_mesh   = false; // a load step: the preconditioner is kept
-    bool phase_ready = false; // d_0 with the multipliers
-    bool nonlinear   = false; // a body of a nonlinear law: relinearize()
-    bool keep_scale  = false; // d_0 of a new linearization, not a new phase
+    bool same_mesh     = false; // a load step: the preconditioner is kept
+    bool phase_ready   = false; // d_0 with the multipliers
+    bool nonlinear     = false; // a body of a nonlinear law: relinearize()
+    bool keep_scale    = false; // d_0 of a new linearization, not a new phase
+    bool tangent_start = false; // nonlinear, from p = 0: no relinearize() yet
 
     ContactProblem::Iterate u_0;       // the bodies under their data alone
     PointVector             d_0;       // its penetration
