@@ -377,14 +377,13 @@ namespace ddcontact
                                  "or run on one process");
         if (info.linear)
           continue;
-        // The body's Newton loop runs on the process that owns the body.
-        if (n_world_processes() > 1 &&
-            scene.parallel.process_groups(n_world_processes(),
-                                          scene.bodies.size()))
-          throw InputError(law + ": a nonlinear law's body is solved by one "
-                                 "process (for now), not by a process group; "
-                                 "run on at most as many processes as "
-                                 "bodies, with Parallel/Body owners = auto");
+        // The body's Newton loop and its quadrature-point state live on the
+        // process that owns the body; the reports do not gather the state
+        // from there yet.
+        if (n_world_processes() > 1)
+          throw InputError(law + ": a nonlinear law runs on one process "
+                                 "(for now); run without mpirun (the bodies "
+                                 "are still solved concurrently, by threads)");
         const std::string solvers =
           solvers_with(&SolverCapabilities::nonlinear_laws);
         if (!solver.nonlinear_laws)

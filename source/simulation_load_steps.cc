@@ -2,6 +2,7 @@
 // the steps that LoadStepControl accepts by step doubling.
 #include <deal.II/base/mpi.h>
 
+#include <ddcontact/body/material_state_fields.h>
 #include <ddcontact/loading/load_step_control.h>
 #include <ddcontact/simulation.h>
 #include <ddcontact/tasks.h>
@@ -22,6 +23,9 @@ namespace ddcontact
       return false;
     for (const auto &pair : contact_pairs)
       if (pair->has_friction())
+        return true;
+    for (const auto &body : bodies)
+      if (body->get_material_law().is_path_dependent())
         return true;
     return false;
   }
@@ -66,8 +70,9 @@ namespace ddcontact
     else
     {
       if (parameters.loading.automatic)
-        pcout << "Loading/Steps = auto: without friction the solution does "
-                 "not depend on the load path; one step"
+        pcout << "Loading/Steps = auto: without friction or a "
+                 "path-dependent material law the solution does not depend "
+                 "on the load path; one step"
               << std::endl;
       run_fixed_load_steps();
     }
@@ -97,6 +102,11 @@ namespace ddcontact
       else
         contact_solver->start_load_step();
     }
+    // Without contact the bodies' states are committed here (the contact
+    // solver's start_load_step() does it otherwise).
+    if (n_solves > 0 && !contact_solver && !continuing)
+      for (auto &body : bodies)
+        body->get_material_state().commit();
     solve();
     ++n_solves;
   }
@@ -111,7 +121,15 @@ namespace ddcontact
       states.push_back(contact_solver->contact_state(p));
       friction.push_back(contact_solver->solution_of(p).friction);
     }
-    return LoadPathMeasures(states, friction);
+    // Path-dependent bodies: how far each has yielded.
+    std::vector<double> plastic_strain;
+    for (const auto &body : bodies)
+      if (body->get_material_law().is_path_dependent())
+      {
+        const MaterialStateSummary state = summarize_material_state(*body);
+        plastic_strain.push_back(state.largest.empty() ? 0. : state.largest[0]);
+      }
+    return LoadPathMeasures(states, friction, plastic_strain);
   }
 
   double
@@ -144,7 +162,7 @@ namespace ddcontact
   {
     if (!adaptation)
       output_results(k - 1);
-    if (record && contact_solver)
+    if (record)
       report.record_load_step(results(), k, t, path_error);
     if (record)
     {

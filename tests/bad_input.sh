@@ -296,6 +296,7 @@ else
 fi
 
 mpi_case_ "distributed mesh for a body on one process" "Parallel/Mesh" "$base" --set "Parallel/Mesh=distributed"
+mpi_case_ "a plastic body under mpirun" "Body upper/Material/Law = j2-plasticity: a nonlinear law runs on one process" "$base" --set "Body upper/Material/Law=j2-plasticity" --set "Body upper/Material/Yield stress=100"
 
 # Per-component mixed conditions: an id may be Dirichlet in one component and
 # loaded in the other, but no component is given twice.

@@ -10,8 +10,8 @@
 // pressure of every step (loading, first yield, hardening, elastic
 // unloading, reverse yielding at lift-off), the largest equivalent plastic
 // strain and the plastic zone (the whole lower block) in summary.json, and
-// the first yield step; and that the monolithic solver refuses the law in
-// one line.
+// the first yield step; the same end with Loading/Steps = auto; and that
+// the monolithic solver refuses the law in one line.
 #include <ddcontact/simulation.h>
 
 #include "scene_tools.h"
@@ -187,6 +187,26 @@ main(int argc, char **argv)
               first_yield,
           solver + ": the first yield step is the closed form's (" +
             std::to_string(first_yield) + ")");
+  }
+
+  // Loading/Steps = auto: the step control measures the plastic strain and
+  // the pressure too, so the path is path-dependent; step doubling returns
+  // to the start of a step (the quadrature-point state with it). Uniaxial
+  // strain with linear hardening is exact in one step per monotonic
+  // branch: two steps, the kinks of the path, and the same end.
+  {
+    const auto  sim     = run_scene(source_dir + "/prm/stability/uniaxial.prm",
+                               scene,
+                               {"Loading/Steps=auto"});
+    const auto &summary = sim->summary();
+    check(summary.at("load_path").at("accepted_steps").get<unsigned int>() == 2,
+          "Steps = auto: one step per monotonic branch");
+    check("Steps = auto: the final equivalent plastic strain",
+          relative(summary.at("bodies")[1]
+                     .at("largest_equivalent_plastic_strain")
+                     .get<double>(),
+                   point.alpha),
+          1e-7);
   }
 
   // The monolithic solver takes linear bodies only: one line naming the

@@ -177,7 +177,7 @@ namespace ddcontact
     run_automatic_load_steps();
 
     /** Whether the solution depends on the load path (a frictional
-     * pair). */
+     * pair, or a body of a path-dependent law). */
     bool
     path_dependent() const;
 

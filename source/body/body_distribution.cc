@@ -384,7 +384,11 @@ namespace ddcontact
     solve_and_share(
       [&](const unsigned int b)
       {
-        bodies[b]->solve();
+        // A nonlinear law: Newton from the last solution.
+        if (bodies[b]->get_material_law().is_linear())
+          bodies[b]->solve();
+        else
+          bodies[b]->solve_nonlinear(BodyVector(), bodies[b]->get_solution());
         u[b] = bodies[b]->get_solution();
       },
       u);

@@ -7,9 +7,14 @@ namespace ddcontact
 {
   LoadPathMeasures::LoadPathMeasures(
     const std::vector<ContactState>    &states,
-    const std::vector<FrictionResults> &friction)
+    const std::vector<FrictionResults> &friction,
+    const std::vector<double>          &plastic_strain)
+    : plastic_strain(plastic_strain)
   {
     AssertDimension(states.size(), friction.size());
+    if (!plastic_strain.empty())
+      for (const auto &state : states)
+        normal_stress.push_back(state.sigma_n);
     for (unsigned int k = 0; k < states.size(); ++k)
     {
       const auto &state = states[k];
@@ -51,6 +56,27 @@ namespace ddcontact
     if (energy > 0)
       change =
         std::max(change, std::abs(a.dissipation - b.dissipation) / energy);
+    AssertDimension(a.normal_stress.size(), b.normal_stress.size());
+    double largest = 0;
+    for (const auto &pair : a.normal_stress)
+      for (const double s : pair)
+        largest = std::max(largest, std::abs(s));
+    if (largest > 0)
+      for (unsigned int k = 0; k < a.normal_stress.size(); ++k)
+      {
+        AssertDimension(a.normal_stress[k].size(), b.normal_stress[k].size());
+        for (unsigned int q = 0; q < a.normal_stress[k].size(); ++q)
+          change = std::max(
+            change,
+            std::abs(a.normal_stress[k][q] - b.normal_stress[k][q]) / largest);
+      }
+    AssertDimension(a.plastic_strain.size(), b.plastic_strain.size());
+    for (unsigned int k = 0; k < a.plastic_strain.size(); ++k)
+      change = std::max(
+        change,
+        std::abs(a.plastic_strain[k] - b.plastic_strain[k]) /
+          std::max(
+            {a.plastic_strain[k], b.plastic_strain[k], plastic_strain_floor}));
     return change;
   }
 } // namespace ddcontact

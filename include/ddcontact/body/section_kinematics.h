@@ -28,13 +28,7 @@ namespace ddcontact
   public:
     /** @p axis_tolerance: how close to r = 0 a point counts as on the axis
      * (AxisOfSymmetry::tolerance()). */
-    explicit SectionKinematics(const Geometry geometry,
-                               const double   axis_tolerance = 0.)
-      : geometry(geometry)
-      , axisymmetric(geometry == Geometry::axisymmetric)
-      , axis_tolerance(axis_tolerance)
-    {
-    }
+    explicit SectionKinematics(Geometry geometry, double axis_tolerance = 0.);
 
     bool
     is_axisymmetric() const
@@ -51,12 +45,7 @@ namespace ddcontact
 
     /** The update flags the strains need, added to @p flags. */
     UpdateFlags
-    update_flags(const UpdateFlags flags = update_default) const
-    {
-      return axisymmetric ? flags | update_values | update_gradients |
-                              update_quadrature_points
-                          : flags | update_gradients;
-    }
+    update_flags(UpdateFlags flags = update_default) const;
 
     /**
      * eps_33 at @p x of a displacement with radial component @p u_r and

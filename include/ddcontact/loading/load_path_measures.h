@@ -31,10 +31,23 @@ namespace ddcontact
      * with a constant mu): the largest tangential force. */
     double bound_force = 0;
 
+    /** With path-dependent bodies (plasticity): per pair the normal
+     * stress at its points, and per such body its largest equivalent
+     * plastic strain; empty otherwise. */
+    std::vector<std::vector<double>> normal_stress;
+    std::vector<double>              plastic_strain;
+
+    /** Plastic strains below this are not told apart (the step control
+     * does not split steps for them). */
+    static constexpr double plastic_strain_floor = 1e-4;
+
     /** The measures of the pairs' states @p states and frictional
-     * results @p friction (PairSolution::friction). */
+     * results @p friction (PairSolution::friction); with @p plastic_strain
+     * (the largest equivalent plastic strain of each path-dependent body)
+     * also the normal stresses. */
     LoadPathMeasures(const std::vector<ContactState>    &states,
-                     const std::vector<FrictionResults> &friction);
+                     const std::vector<FrictionResults> &friction,
+                     const std::vector<double>          &plastic_strain = {});
 
     /**
      * The relative difference of two solutions of one step (the same
@@ -44,7 +57,10 @@ namespace ddcontact
      * the bound force times the largest slip). The tangential traction
      * carries where a point sticks from (its slip at entry) and where the
      * stick zone ends; the energy what slips. 0 where nothing is in
-     * contact.
+     * contact. With path-dependent bodies also max |sigma_n,a - sigma_n,b|
+     * over the largest |sigma_n|, and the change of each body's largest
+     * equivalent plastic strain over the larger of the two (at least
+     * plastic_strain_floor): where and how far the bodies yield.
      */
     static double
     difference(const LoadPathMeasures &a, const LoadPathMeasures &b);
