@@ -223,10 +223,14 @@ namespace ddcontact
         path["path_error"] = path_error;
       else
       {
-        // Friction depends on the path, and nothing measured how well
-        // these steps follow it.
+        // Friction and plasticity depend on the path, and nothing
+        // measured how well these steps follow it.
         path["path_error"] = Json();
-        pcout << "note: friction on " << n_steps << " fixed load step"
+        bool friction      = false;
+        for (const auto &pair : contact_pairs)
+          friction = friction || pair->has_friction();
+        pcout << "note: " << (friction ? "friction" : "a path-dependent law")
+              << " on " << n_steps << " fixed load step"
               << (n_steps > 1 ? "s" : "")
               << "; the load-path error is not estimated (Loading/Steps = "
                  "auto controls it, Check path = true estimates it)"

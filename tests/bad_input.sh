@@ -63,7 +63,6 @@ case_ "j2-plasticity without a yield stress" "Body upper/Material/Yield stress: 
 case_ "yield stress 0" "Body upper/Material/Yield stress = 0 must be > 0" "$base" --set "Body upper/Material/Law=j2-plasticity" --set "Body upper/Material/Yield stress=0"
 case_ "softening" "Body upper/Material/Isotropic hardening = -5 must be >= 0" "$base" --set "Body upper/Material/Law=j2-plasticity" --set "Body upper/Material/Yield stress=100" --set "Body upper/Material/Isotropic hardening=-5"
 case_ "a plastic entry on an elastic body" "Body upper/Material/Yield stress = 100 belongs to Law = j2-plasticity" "$base" --set "Body upper/Material/Yield stress=100"
-case_ "monolithic with a plastic body" "Contact solver/Solver = monolithic solves linear bodies only; use Solver = dd-newton or dd" "$base" --set "Body upper/Material/Law=j2-plasticity" --set "Body upper/Material/Yield stress=100" --set "Contact solver/Solver=monolithic"
 case_ "boundary id not in mesh" "boundary id 7" "$base" --set "Body lower/Boundary conditions/Neumann=7: 0; 1"
 case_ "no Dirichlet part" "Body upper/Dirichlet" "$base" --set "Body upper/Boundary conditions/Dirichlet="
 case_ "expression does not parse" "Body lower/Neumann" "$base" --set "Body lower/Boundary conditions/Neumann=3: 0; -p*("

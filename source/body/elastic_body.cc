@@ -29,6 +29,24 @@
 
 namespace ddcontact
 {
+  namespace
+  {
+    /** @p constraints without their inhomogeneities: the constraints of an
+     * increment, or of a displacement that carries its Dirichlet values. */
+    AffineConstraints<double>
+    without_inhomogeneities(const AffineConstraints<double> &constraints)
+    {
+      AffineConstraints<double> result;
+      for (const auto &line : constraints.get_lines())
+      {
+        result.add_line(line.index);
+        result.add_entries(line.index, line.entries);
+      }
+      result.close();
+      return result;
+    }
+  } // namespace
+
   template <int dim>
   SectionKinematics
   ElasticBody<dim>::get_kinematics() const
@@ -519,13 +537,8 @@ namespace ddcontact
       reinit_vector(u);
     // The increments are zero on Dirichlet dofs: the constraints without
     // their inhomogeneities (u carries the Dirichlet values).
-    AffineConstraints<double> increment_constraints;
-    for (const auto &line : constraints.get_lines())
-    {
-      increment_constraints.add_line(line.index);
-      increment_constraints.add_entries(line.index, line.entries);
-    }
-    increment_constraints.close();
+    const AffineConstraints<double> increment_constraints =
+      without_inhomogeneities(constraints);
     distribute_constraints(u, false);
 
     // The residual is measured against the load l_a + load, condensed.
@@ -544,30 +557,16 @@ namespace ddcontact
       report.load_norm = l.l2_norm();
     }
 
-    BodyVector                       du;
-    std::vector<std::vector<double>> new_states(
-      get_triangulation().n_active_cells());
+    BodyVector du;
     // Backtracking: a step that does not reduce the residual is halved
     // (the tangent of a yield surface switches between the elastic and the
     // plastic one, and full steps can cycle between the two).
     double tau = 1, last_norm = std::numeric_limits<double>::infinity();
     for (unsigned int step = 0;; ++step)
     {
-      // The tangent at u and the residual l_a + load - F(u).
-      linear_solver->zero();
-      assemble_cells(
-        [&](const MeshWorker::CopyData<1, 1, 1> &copy)
-        {
-          if (!copy.local_dof_indices[0].empty())
-            linear_solver->add(increment_constraints,
-                               copy.matrices[0],
-                               copy.vectors[0],
-                               copy.local_dof_indices[0]);
-        },
-        false,
-        &u,
-        &new_states);
-      linear_solver->compress();
+      // The tangent at u and the residual l_a + load - F(u); the state of
+      // u becomes the trial state.
+      linearize_at(u);
       Vector<double> residual = linear_solver->load_vector();
       for (unsigned int i = 0; i < residual.size() && load.size() > 0; ++i)
         if (!increment_constraints.is_constrained(i))
@@ -635,15 +634,51 @@ namespace ddcontact
       distribute_constraints(du, true);
       u += du;
     }
-    // The state of the converged displacement, the current iterate's.
+    // The factorization is the tangent at u (for solve_homogeneous()).
+    is_factorized = true;
+    return report;
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::set_trial_states(
+    const std::vector<std::vector<double>> &new_states)
+  {
     if (!material_state.empty())
       for (const auto &cell : get_triangulation().active_cell_iterators())
         if (mesh.computes(cell))
           material_state.set_trial(
             cell, make_array_view(new_states[cell->active_cell_index()]));
-    // The factorization is the tangent at u (for solve_homogeneous()).
-    is_factorized = true;
-    return report;
+  }
+
+  template <int dim>
+  void
+  ElasticBody<dim>::linearize_at(const BodyVector &u)
+  {
+    AssertThrow(solved_here && !is_solved_distributed() && !distributed_vectors,
+                ExcMessage("a nonlinear material law is solved on one process "
+                           "per body (for now)"));
+    AssertDimension(u.size(), dof_handler.n_dofs());
+    const AffineConstraints<double> increment_constraints =
+      without_inhomogeneities(constraints);
+    std::vector<std::vector<double>> new_states(
+      get_triangulation().n_active_cells());
+    linear_solver->zero();
+    assemble_cells(
+      [&](const MeshWorker::CopyData<1, 1, 1> &copy)
+      {
+        if (!copy.local_dof_indices[0].empty())
+          linear_solver->add(increment_constraints,
+                             copy.matrices[0],
+                             copy.vectors[0],
+                             copy.local_dof_indices[0]);
+      },
+      false,
+      &u,
+      &new_states);
+    linear_solver->compress();
+    set_trial_states(new_states);
+    is_factorized = false;
   }
 
   template <int dim>

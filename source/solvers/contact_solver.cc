@@ -73,7 +73,7 @@ namespace ddcontact
        "of body solves per iteration (doc/contact-solvers.md)"},
       {"monolithic",
        &make_solver<MonolithicContactSolver>,
-       {true, false, true, false, true, true, false, false, false},
+       {true, false, true, false, true, true, false, false, true},
        "semismooth Newton on the penalised problem (16) for all bodies at "
        "once (the reference)"},
       {"dd",

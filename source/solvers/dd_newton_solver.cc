@@ -149,15 +149,20 @@ namespace ddcontact
                         false,
                         ContactProblem::Exchange::traces);
       ++n_data_solves;
-      u_p = problem.zero_iterate();
-      Sp.assign(p.size(), 0.);
-      if (std::any_of(
-            p.begin(), p.end(), [](const double x) { return x != 0; }))
-        interface.apply(p, u_p, Sp);
+      respond_to_pressure();
     }
     mesh_ready  = true;
     phase_ready = false;
     keep_scale  = false;
+  }
+
+  void
+  DDNewtonSolver::respond_to_pressure()
+  {
+    u_p = problem.zero_iterate();
+    Sp.assign(p.size(), 0.);
+    if (std::any_of(p.begin(), p.end(), [](const double x) { return x != 0; }))
+      interface.apply(p, u_p, Sp);
   }
 
   void
@@ -181,10 +186,7 @@ namespace ddcontact
     ++n_data_solves;
     // S of the tangents: u_p = K_T^{-1} B^T p and u_0 = u(p) - u_p, so that
     // u_0 + u_x is the tangent's prediction of the bodies under x.
-    u_p = problem.zero_iterate();
-    Sp.assign(p.size(), 0.);
-    if (std::any_of(p.begin(), p.end(), [](const double x) { return x != 0; }))
-      interface.apply(p, u_p, Sp);
+    respond_to_pressure();
     ContactProblem::assign(u_0, u_k);
     add(u_0, -1., u_p);
     phase_ready = false;
@@ -408,7 +410,9 @@ namespace ddcontact
                             const ContactProblem::Iterate &u_x,
                             const PointVector             &Gx,
                             const std::vector<double>     &alpha_x,
-                            double                        &psi_new)
+                            double                        &psi_new,
+                            const double                   psi,
+                            const bool                     full_step)
   {
     PointVector change = x;
     add(change, -1., p);
@@ -417,9 +421,24 @@ namespace ddcontact
     // the step's pressure.
     const PointVector       p_old = p, Sp_old = Sp, Ga_old = Ga;
     const auto              alpha_old = alpha;
-    ContactProblem::Iterate u_p_old;
+    ContactProblem::Iterate u_p_old, u_0_old;
     if (nonlinear)
+    {
       ContactProblem::assign(u_p_old, u_p);
+      ContactProblem::assign(u_0_old, u_0);
+    }
+    const auto restore = [&]()
+    {
+      p  = p_old;
+      Sp = Sp_old;
+      Ga = Ga_old;
+      ContactProblem::assign(u_p, u_p_old);
+      ContactProblem::assign(u_0, u_0_old);
+      alpha = alpha_old;
+      tau /= 2;
+    };
+    const bool judge_true_residual =
+      !full_step && psi > stopping_tolerance(p_old);
     for (;;)
     {
       // p + tau (x - p), and S p and u_p alike (both linear in p).
@@ -442,26 +461,25 @@ namespace ddcontact
         ContactProblem::assign(prediction, u_0);
         add(prediction, 1., u_p);
         relinearize(prediction);
-        break;
       }
       catch (const DivergenceError &e)
       {
         if (tau < 1. / 64)
           throw;
-        p  = p_old;
-        Sp = Sp_old;
-        Ga = Ga_old;
-        ContactProblem::assign(u_p, u_p_old);
-        alpha = alpha_old;
-        tau /= 2;
+        restore();
         pcout << "  a body's Newton loop failed under the step's pressure ("
               << e.what() << "): step halved to tau = " << tau << std::endl;
+        continue;
       }
-    }
-    if (nonlinear && !tangent_start)
-    {
       update_data();
       psi_new = interface.norm(newton_residual(p, Sp, Ga));
+      // damping() judged the model; the step must also reduce the true
+      // residual (as damping() asks of the model, with its exceptions),
+      // or the active sets of contact, friction and yield cycle.
+      if (!judge_true_residual || tau < 1. / 64 ||
+          psi_new < (1 - 1e-4 * tau) * psi)
+        break;
+      restore();
     }
     // A floating body's d_0 is that of its clamped components, which may
     // carry the whole load and see no overlap: the residual is then
@@ -553,8 +571,15 @@ namespace ddcontact
     double psi_new = 0;
     double tau =
       damping(psi, first && interface.has_friction(), x, Sx, Gx, psi_new);
-    const IterationRecord record =
-      take_step(tau, x, Sx, u_x, Gx, alpha_x, psi_new);
+    const IterationRecord record = take_step(tau,
+                                             x,
+                                             Sx,
+                                             u_x,
+                                             Gx,
+                                             alpha_x,
+                                             psi_new,
+                                             psi,
+                                             first && interface.has_friction());
 
     // Converged only after a full step solved to the final tolerance on an
     // active set that the new iterate keeps: the residual weighs a tension

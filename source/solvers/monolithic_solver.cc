@@ -8,6 +8,20 @@
 
 namespace ddcontact
 {
+  namespace
+  {
+    /** Body @p b's part of the flattened displacement @p u. */
+    BodyVector
+    body_part(const Vector<double>                       &u,
+              const std::vector<types::global_dof_index> &offset,
+              const unsigned int                          b)
+    {
+      BodyVector u_b(offset[b + 1] - offset[b]);
+      std::copy(u.begin() + offset[b], u.begin() + offset[b + 1], u_b.begin());
+      return u_b;
+    }
+  } // namespace
+
   MonolithicContactSolver::MonolithicContactSolver(
     const ContactSolverParameters       &parameters,
     const std::vector<ElasticBody<2> *> &bodies,
@@ -203,15 +217,29 @@ namespace ddcontact
     const unsigned int   n_p    = on_nodes ? p.size() : 0;
     SparseMatrix<double> matrix(sparsity);
     Vector<double>       rhs(n + n_p);
-    // blockdiag(K_a) and the bodies' condensed loads (12).
+    // blockdiag(K_a) and the bodies' condensed loads (12). A nonlinear
+    // body linearized at u: K_T u_new = K_T u + l_a - F(u), the Newton step
+    // written for the displacement itself.
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
+      const bool linear = bodies[b]->get_material_law().is_linear();
+      if (!linear)
+        bodies[b]->linearize_at(body_part(u, offset, b));
       const auto &K = bodies[b]->get_stiffness_matrix();
       for (types::global_dof_index i = 0; i < K.m(); ++i)
         for (auto it = K.begin(i); it != K.end(i); ++it)
           matrix.add(i + offset[b], it->column() + offset[b], it->value());
       const auto &L = bodies[b]->get_load_vector();
       std::copy(L.begin(), L.end(), rhs.begin() + offset[b]);
+      if (!linear)
+      {
+        Vector<double> u_b(K.m()), K_u(K.m());
+        std::copy(
+          u.begin() + offset[b], u.begin() + offset[b + 1], u_b.begin());
+        K.vmult(K_u, u_b);
+        for (types::global_dof_index i = 0; i < K.m(); ++i)
+          rhs(i + offset[b]) += K_u(i);
+      }
     }
     for (unsigned int i = 0; i < penetrations.size(); ++i)
     {
@@ -262,9 +290,20 @@ namespace ddcontact
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
       Vector<double> u_b(bodies[b]->n_dofs()), r_b(bodies[b]->n_dofs());
-      std::copy(u.begin() + offset[b], u.begin() + offset[b + 1], u_b.begin());
-      bodies[b]->get_stiffness_matrix().vmult(r_b, u_b);
-      r_b -= bodies[b]->get_load_vector();
+      if (bodies[b]->get_material_law().is_linear())
+      {
+        std::copy(
+          u.begin() + offset[b], u.begin() + offset[b + 1], u_b.begin());
+        bodies[b]->get_stiffness_matrix().vmult(r_b, u_b);
+        r_b -= bodies[b]->get_load_vector();
+      }
+      else
+      {
+        // F(u) - l_a of the linearization at u (which sets the trial state).
+        bodies[b]->linearize_at(body_part(u, offset, b));
+        r_b = bodies[b]->get_load_vector();
+        r_b *= -1.;
+      }
       std::copy(r_b.begin(), r_b.end(), r.begin() + offset[b]);
     }
     double sum = 0;
@@ -386,15 +425,28 @@ namespace ddcontact
     std::vector<std::vector<NodeStatus>> seen;
     bool                                 full_step = false, damped = false;
     unsigned int                         iteration = 0;
+    // Nonlinear bodies: the Newton residual decides as well, relative to
+    // that of the zero iterate.
+    const bool   nonlinear = problem.has_nonlinear_bodies();
+    const double reference =
+      nonlinear
+        ? residual_norm(Vector<double>(u.size()), PointVector(p.size(), 0.))
+        : 0.;
     for (; iteration < max_iterations; ++iteration)
     {
       const auto active = active_set(u, p, iteration == 0);
       print_active_set(iteration, active);
-      // Settled: (u, p) solves the linear system of its own active set.
-      if (full_step && active == seen.back())
+      // Settled: (u, p) solves the linear system of its own active set;
+      // with nonlinear bodies once the residual is below the tolerance too.
+      const bool settled = full_step && active == seen.back();
+      if (settled && (!nonlinear ||
+                      residual_norm(u, p) <= parameters.tolerance * reference))
         break;
+      // A cycle: an active set met before, not the last one (which
+      // nonlinear bodies keep while their laws iterate).
       damped =
-        damped || std::find(seen.begin(), seen.end(), active) != seen.end();
+        damped || ((!nonlinear || !settled) &&
+                   std::find(seen.begin(), seen.end(), active) != seen.end());
       seen.push_back(active);
 
       Vector<double> u_new(u);

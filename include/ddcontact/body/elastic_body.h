@@ -201,6 +201,18 @@ namespace ddcontact
     BodyNewtonReport
     solve_nonlinear(const BodyVector &load, BodyVector &u);
 
+    /**
+     * A nonlinear law's linearization at @p u, for a solver that assembles
+     * the bodies itself (MonolithicContactSolver): the consistent tangent
+     * K_T into the body's matrix (get_stiffness_matrix()) and the residual
+     * l_a - F(u) into its load vector (get_load_vector()), both condensed
+     * with the constraints without their inhomogeneities (u carries the
+     * Dirichlet values); the law's state of @p u becomes the trial state.
+     * The factorization is stale afterwards. One process per body.
+     */
+    void
+    linearize_at(const BodyVector &u);
+
     /** Solve with no extra load into the body's own solution vector. */
     void
     solve();
@@ -573,6 +585,11 @@ namespace ddcontact
     void
     share_constraints(AffineConstraints<double>         &to_complete,
                       const Utilities::MPI::Partitioner *layout) const;
+
+    /** The states @p new_states (by active cell index, of assemble_cells())
+     * become the trial states of the cells this process computes. */
+    void
+    set_trial_states(const std::vector<std::vector<double>> &new_states);
 
     /** The ghosts of a distributed @p u after a solve: imported over the
      * group that solves the body (group_layout), or over all the mesh's

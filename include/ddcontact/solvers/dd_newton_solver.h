@@ -155,6 +155,11 @@ namespace ddcontact
           const PointVector &Sx,
           const PointVector &Gx) const;
 
+    /** u_p and S p of the current p (one set of homogeneous body solves,
+     * none for p = 0). */
+    void
+    respond_to_pressure();
+
     /**
      * Bodies of a nonlinear law (plasticity): the affine model d(x) = d_0 -
      * S x of the interface problem, taken at the pressure p. Every body is
@@ -220,7 +225,8 @@ namespace ddcontact
      * solutions and the step's record. With nonlinear bodies relinearized
      * at the new p, and @p psi_new (the model's residual there) replaced
      * by the true one; @p tau halved where a body's Newton loop fails
-     * under the step's pressure. */
+     * under the step's pressure, or (unless @p full_step) where the true
+     * residual does not fall below @p psi, the step's start. */
     IterationRecord
     take_step(double                        &tau,
               const PointVector             &x,
@@ -228,7 +234,9 @@ namespace ddcontact
               const ContactProblem::Iterate &u_x,
               const PointVector             &Gx,
               const std::vector<double>     &alpha_x,
-              double                        &psi_new);
+              double                        &psi_new,
+              double                         psi,
+              bool                           full_step);
 
     /** The step's line of progress; DivergenceError on a non-finite
      * residual, or where the step's CG stopped at its iteration limit
