@@ -74,6 +74,55 @@ namespace
     }
     return {best, depth};
   }
+  /** What a run with load steps reports of its first yield (summary.json
+   * first_yield and load_steps): the step, p0 / Y there and at the step
+   * before, the first plastic point (its distance x from the axis and its
+   * depth below the surface y = 0) and that step's contact extent a (the
+   * pair's entry @p extent). Checks, named by @p label, that the run
+   * reports it and that the steps bracket it (not the first step). */
+  struct FirstYield
+  {
+    bool         found = false;
+    unsigned int step  = 0;
+    double       ratio = 0, ratio_before = 0, x = 0, depth = 0, a = 0;
+  };
+
+  FirstYield
+  first_yield_of(const Simulation  &sim,
+                 const double       Y,
+                 const std::string &extent,
+                 const std::string &label)
+  {
+    FirstYield  result;
+    const auto &summary = sim.summary();
+    check(summary.contains("first_yield"),
+          label + ": the run reports its first yield");
+    if (!summary.contains("first_yield"))
+      return result;
+    const auto &first = summary.at("first_yield");
+    const auto &steps = summary.at("load_steps");
+    result.step       = first.at("step").get<unsigned int>();
+    check(result.step > 1,
+          label + ": the onset is bracketed by the load steps (step " +
+            std::to_string(result.step) + ")");
+    if (result.step < 2)
+      return result;
+    const auto pair = [&](const unsigned int step) -> const Json &
+    { return steps[step - 1].at("pairs")[0]; };
+    result.ratio = pair(result.step).at("max_pressure").get<double>() / Y;
+    result.ratio_before =
+      pair(result.step - 1).at("max_pressure").get<double>() / Y;
+    result.x     = std::abs(first.at("location")[0].get<double>());
+    result.depth = -first.at("location")[1].get<double>();
+    result.a     = pair(result.step).at(extent).get<double>();
+    result.found = true;
+    std::cout << std::setprecision(5) << label << ": first yield at step "
+              << result.step << ": p0 / Y = " << result.ratio
+              << " (step before: " << result.ratio_before << "), " << result.x
+              << " from the axis at the depth " << result.depth
+              << ", a = " << result.a << std::endl;
+    return result;
+  }
 } // namespace
 
 int
@@ -107,40 +156,26 @@ main(int argc, char **argv)
                "-Delta*(0.93+0.1*t)^2",
                "Body block/Material/Law=j2-plasticity",
                "Body block/Material/Yield stress=" + std::to_string(Y)});
-  const auto &summary = sim->summary();
-  check(summary.contains("first_yield"), "the run reports its first yield");
-  if (!summary.contains("first_yield"))
+  const FirstYield cylinder = first_yield_of(*sim, Y, "half_width", "cylinder");
+  if (!cylinder.found)
     return report();
-  const auto        &first = summary.at("first_yield");
-  const unsigned int k     = first.at("step").get<unsigned int>();
-  const auto        &steps = summary.at("load_steps");
-  const auto         p0    = [&](const unsigned int step)
-  { return steps[step - 1].at("pairs")[0].at("max_pressure").get<double>(); };
-  check(k > 1,
-        "the onset is bracketed by the load steps (step " + std::to_string(k) +
-          ")");
-  const double a = steps[k - 1].at("pairs")[0].at("half_width").get<double>();
-  std::cout << std::setprecision(5) << "first yield at step " << k
-            << ": p0 / Y = " << p0(k) / Y << " (step before: " << p0(k - 1) / Y
-            << "), at (" << first.at("location")[0] << ", "
-            << first.at("location")[1] << "), a = " << a << std::endl;
-  // The onset lies in (p0(k - 1), p0(k)] / Y. This mesh (cells of 0.0195
+  // The onset lies between the two steps' p0 / Y. This mesh (cells of 0.0195
   // under the zone, a / h = 7.6) resolves the peak of Hertz's von Mises
   // stress to +4 % (measured with Output/Points on the elastic field: the
   // elastic block of 20 x 10 adds the finite body's O(P / L) to Hertz's
   // half-space, +1.3 % on a block 10 times larger, and the cells the rest):
   // the field yields that much early, and the steps add their 1 %.
   check("p0 / Y at first yield against Hertz's 1.794",
-        std::abs(p0(k) / Y - onset) / onset,
+        std::abs(cylinder.ratio - onset) / onset,
         0.05);
-  check(p0(k - 1) / Y < onset, "no yield before Hertz's onset");
+  check(cylinder.ratio_before < onset, "no yield before Hertz's onset");
   // The first plastic point: on the axis, at 0.70 a, within one cell.
   const double h = 20. / 8 / 128;
   check("the first plastic point's distance from the axis / cell",
-        std::abs(first.at("location")[0].get<double>()) / h,
+        cylinder.x / h,
         1.5);
   check("its depth against 0.70 a, in cells",
-        std::abs(-first.at("location")[1].get<double>() - depth * a) / h,
+        std::abs(cylinder.depth - depth * cylinder.a) / h,
         1.);
 
   // 2. Hertz's sphere (prm/hertz_sphere.prm, axisymmetric, both blocks at
@@ -167,35 +202,22 @@ main(int argc, char **argv)
                  "-Delta*(0.96+0.08*t)^2",
                  "Body lower/Material/Law=j2-plasticity",
                  "Body lower/Material/Yield stress=" + std::to_string(Y_s)});
-    const auto &s = run->summary();
-    check(s.contains("first_yield"), "sphere: the run reports its first yield");
-    if (!s.contains("first_yield"))
+    const FirstYield sphere =
+      first_yield_of(*run, Y_s, "contact_radius", "sphere");
+    if (!sphere.found)
       return report();
-    const auto        &f     = s.at("first_yield");
-    const unsigned int j     = f.at("step").get<unsigned int>();
-    const auto        &steps = s.at("load_steps");
-    const auto         q0    = [&](const unsigned int step)
-    { return steps[step - 1].at("pairs")[0].at("max_pressure").get<double>(); };
-    const double a_s =
-      steps[j - 1].at("pairs")[0].at("contact_radius").get<double>();
-    check(j > 1, "sphere: the onset is bracketed by the load steps");
-    std::cout << std::setprecision(5) << "sphere: first yield at step " << j
-              << ": p0 / Y = " << q0(j) / Y_s << " (step before "
-              << q0(j - 1) / Y_s << "), at (" << f.at("location")[0] << ", "
-              << f.at("location")[1] << "), a = " << a_s << std::endl;
     // This mesh puts the peak of the von Mises stress 1.9 % above Huber's
     // (measured with Output/Points on the elastic field at 0.48 a), the
     // steps add their 0.8 %.
     check("sphere: p0 / Y at first yield against 1.6128",
-          std::abs(q0(j) / Y_s - sphere_onset) / sphere_onset,
+          std::abs(sphere.ratio - sphere_onset) / sphere_onset,
           0.03);
     const double h_s = 10. / 4 / 64;
     check("sphere: the first plastic point on the axis, in cells",
-          std::abs(f.at("location")[0].get<double>()) / h_s,
+          sphere.x / h_s,
           1.);
     check("sphere: its depth against 0.48 a, in cells",
-          std::abs(-f.at("location")[1].get<double>() - sphere_depth * a_s) /
-            h_s,
+          std::abs(sphere.depth - sphere_depth * sphere.a) / h_s,
           1.);
   }
   return report();
