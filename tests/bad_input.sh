@@ -314,6 +314,7 @@ case_ "zero path tolerance" "Loading/Path tolerance: must be positive" "$paper" 
 # Tresca's bound g large against the pressure lifts nodes off, and the
 # active set cycles between open and slip: the message names that cause
 # (issue 48), not more Newton steps.
+expect_code=4 case_ "a perfectly plastic body past its limit load" "Body sphere: the body's Newton loop stalled" "$src/tests/hollow_sphere.prm" --set "Constants=p=1.5" --set "Loading/Steps=1"
 expect_code=4 case_ "Tresca lifting nodes off" "With Tresca friction (Contact pair S) the slip bound g holds where the bodies touch" "$src/prm/flat_punch.prm" --set "Contact pair S/Friction=tresca" --set "Contact pair S/Friction bound=1000" --set "Contact solver/Contact pressure=auto" --set "Contact pair S/Formulation=exact" --set "Body punch/Boundary conditions/Dirichlet=3: xy: 0.01*max(0,2*t-1); -Delta*min(1,2*t)" --set "Loading/Steps=2" --set "Body block/Mesh/Box refinement=5" --set "Body punch/Mesh/Subdivisions=24, 12"
 case_ "automatic load steps with friction and adaptation" "Loading/Steps = auto needs Adaptation/Mode = none" "$src/prm/cattaneo_mindlin.prm" --set "Loading/Steps=auto" --set "Adaptation/Mode=nested" --set "Adaptation/Bodies=upper"
 # A load that is infinite at one load time only is refused before the run

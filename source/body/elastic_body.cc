@@ -604,8 +604,8 @@ namespace ddcontact
                   << "load's " << report.load_norm
                   << " (no step along its direction reduces it: a load "
                      "beyond what the body carries, such as a perfectly "
-                     "plastic body past its limit load); more Loading/Steps, "
-                     "or hardening";
+                     "plastic body past its limit load); lower the load, add "
+                     "hardening, or take more Loading/Steps";
           throw NotConvergedError(message.str());
         }
         tau /= 2;
