@@ -17,6 +17,27 @@
 
 namespace ddcontact
 {
+  namespace
+  {
+    /** The stress of @p law at one point of @p strain from the point's
+     * state at the start of the step @p state (empty for a law without
+     * state); the new state is not kept. */
+    SymmetricTensor<2, 3>
+    stress_of_state(const MaterialLaw             &law,
+                    const SymmetricTensor<2, 3>   &strain,
+                    const ArrayView<const double> &state)
+    {
+      SymmetricTensor<2, 3> sigma;
+      std::vector<double>   new_state(state.size());
+      law.evaluate(make_array_view(&strain, &strain + 1),
+                   state,
+                   make_array_view(&sigma, &sigma + 1),
+                   nullptr,
+                   make_array_view(new_state));
+      return sigma;
+    }
+  } // namespace
+
   template <int dim>
   BodyStresses<dim>::BodyStresses(const ElasticBody<dim> &body,
                                   const BodyVector       &u)
@@ -73,23 +94,11 @@ namespace ddcontact
     // linear law (MaterialLawInfo::reduced_integration).
     if (!dilatation.empty())
       return law.linear_tangent().apply(strain, dilatation[cell]);
-    SymmetricTensor<2, 3> sigma;
-    if (committed_mean.empty())
-      law.evaluate(make_array_view(&strain, &strain + 1),
-                   {},
-                   make_array_view(&sigma, &sigma + 1),
-                   nullptr,
-                   {});
-    else
-    {
-      std::vector<double> new_state(committed_mean[cell].size());
-      law.evaluate(make_array_view(&strain, &strain + 1),
-                   make_array_view(committed_mean[cell]),
-                   make_array_view(&sigma, &sigma + 1),
-                   nullptr,
-                   make_array_view(new_state));
-    }
-    return sigma;
+    return stress_of_state(law,
+                           strain,
+                           committed_mean.empty()
+                             ? ArrayView<const double>()
+                             : make_array_view(committed_mean[cell]));
   }
 
   template <int dim>
@@ -101,16 +110,12 @@ namespace ddcontact
   {
     if (committed.empty())
       return stress(strain, cell);
-    const unsigned int    n_values = law.n_state_variables();
-    std::vector<double>   new_state(n_values);
-    SymmetricTensor<2, 3> sigma;
-    law.evaluate(make_array_view(&strain, &strain + 1),
-                 make_array_view(committed[cell].data() + q * n_values,
-                                 committed[cell].data() + (q + 1) * n_values),
-                 make_array_view(&sigma, &sigma + 1),
-                 nullptr,
-                 make_array_view(new_state));
-    return sigma;
+    const unsigned int n_values = law.n_state_variables();
+    return stress_of_state(
+      law,
+      strain,
+      make_array_view(committed[cell].data() + q * n_values,
+                      committed[cell].data() + (q + 1) * n_values));
   }
 
   template <int dim>

@@ -1,9 +1,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <ddcontact/body/material_state_fields.h>
 #include <ddcontact/body/reaction_forces.h>
 #include <ddcontact/interruption.h>
+#include <ddcontact/io/material_state_json.h>
 #include <ddcontact/io/process_report.h>
 #include <ddcontact/io/run_report.h>
 #include <ddcontact/output_file.h>
@@ -248,10 +248,7 @@ namespace ddcontact
         continue;
       Json b;
       b["body"] = body->name();
-      for (unsigned int k = 0; k < state.names.size(); ++k)
-        if (state.names[k] != "yielded")
-          b["largest_" + state.names[k]] = state.largest[k];
-      b["plastic_zone_measure"] = state.yielded_measure;
+      add_material_state(state, b);
       if (state.yielded())
         b["location_of_largest"] = state.location_of_largest;
       bodies.push_back(b);

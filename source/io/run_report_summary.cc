@@ -1,9 +1,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <ddcontact/body/material_state_fields.h>
 #include <ddcontact/body/reaction_forces.h>
 #include <ddcontact/interruption.h>
+#include <ddcontact/io/material_state_json.h>
 #include <ddcontact/io/process_report.h>
 #include <ddcontact/io/run_report.h>
 #include <ddcontact/output_file.h>
@@ -237,11 +237,8 @@ namespace ddcontact
       if (body->get_material_law().is_linear())
         b["strain_energy"] = body->stresses().strain_energy();
       const MaterialStateSummary state = summarize_material_state(*body);
-      for (unsigned int k = 0; k < state.names.size(); ++k)
-        if (state.names[k] != "yielded")
-          b["largest_" + state.names[k]] = state.largest[k];
       if (!state.names.empty())
-        b["plastic_zone_measure"] = state.yielded_measure;
+        add_material_state(state, b);
       const auto [strain, rotation] =
         body->stresses().largest_strain_and_rotation();
       b["largest_strain"]   = Utilities::MPI::max(strain, MPI_COMM_WORLD);

@@ -197,19 +197,20 @@ namespace ddcontact
     // forces, which the contact solver's tolerance bounds relative to the
     // scene's forces, not to its own: measured against at least 1e-3 of
     // the largest force scale of the bodies (E max |u|).
-    double scene_scale = 0;
+    std::vector<double> force_scales;
+    double              scene_scale = 0;
     for (const auto &body : results.bodies)
-      scene_scale =
-        std::max(scene_scale,
-                 ReactionForces<2>::force_scale(*body, body->get_solution()));
+    {
+      force_scales.push_back(
+        ReactionForces<2>::force_scale(*body, body->get_solution()));
+      scene_scale = std::max(scene_scale, force_scales.back());
+    }
     for (unsigned int b = 0; b < results.bodies.size(); ++b)
     {
       const auto  &body      = results.bodies[b];
       const double imbalance = answer.reactions[b].relative_imbalance(
         body->get_geometry() == Geometry::axisymmetric,
-        std::max(1e-6 *
-                   ReactionForces<2>::force_scale(*body, body->get_solution()),
-                 1e-3 * scene_scale));
+        std::max(1e-6 * force_scales[b], 1e-3 * scene_scale));
       if (!(imbalance <= equilibrium.value))
       {
         equilibrium.value = imbalance;

@@ -127,13 +127,9 @@ namespace ddcontact
     {
       // A new load step starts from the last step's displacement; a new
       // mesh from zero.
-      ContactProblem::Iterate warm(problem.get_bodies().size());
-      if (kept_mesh && u_0.size() == warm.size())
-      {
-        ContactProblem::assign(warm, u_0);
-        add(warm, 1., u_p);
-      }
-      relinearize(warm);
+      relinearize(kept_mesh && u_0.size() == problem.get_bodies().size()
+                    ? prediction()
+                    : ContactProblem::Iterate(problem.get_bodies().size()));
       // From zero pressure (a new mesh or the first step) the first
       // iterates keep this linearization: the contact problem of the start's
       // tangent first, its pressure then the first load of the bodies' own
@@ -163,6 +159,15 @@ namespace ddcontact
     Sp.assign(p.size(), 0.);
     if (std::any_of(p.begin(), p.end(), [](const double x) { return x != 0; }))
       interface.apply(p, u_p, Sp);
+  }
+
+  ContactProblem::Iterate
+  DDNewtonSolver::prediction() const
+  {
+    ContactProblem::Iterate u;
+    ContactProblem::assign(u, u_0);
+    add(u, 1., u_p);
+    return u;
   }
 
   void
@@ -457,10 +462,7 @@ namespace ddcontact
       // peaks at a node) stops the body's Newton loop: the step is halved.
       try
       {
-        ContactProblem::Iterate prediction;
-        ContactProblem::assign(prediction, u_0);
-        add(prediction, 1., u_p);
-        relinearize(prediction);
+        relinearize(prediction());
       }
       catch (const DivergenceError &e)
       {
@@ -598,10 +600,7 @@ namespace ddcontact
       // The start's tangent problem is solved: from here every step
       // relinearizes at its pressure.
       tangent_start = false;
-      ContactProblem::Iterate prediction;
-      ContactProblem::assign(prediction, u_0);
-      add(prediction, 1., u_p);
-      relinearize(prediction);
+      relinearize(prediction());
       update_data();
       store_iterate();
       converged = false;

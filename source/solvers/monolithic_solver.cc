@@ -11,12 +11,13 @@ namespace ddcontact
   namespace
   {
     /** Body @p b's part of the flattened displacement @p u. */
-    BodyVector
+    template <typename VectorType>
+    VectorType
     body_part(const Vector<double>                       &u,
               const std::vector<types::global_dof_index> &offset,
               const unsigned int                          b)
     {
-      BodyVector u_b(offset[b + 1] - offset[b]);
+      VectorType u_b(offset[b + 1] - offset[b]);
       std::copy(u.begin() + offset[b], u.begin() + offset[b + 1], u_b.begin());
       return u_b;
     }
@@ -224,7 +225,7 @@ namespace ddcontact
     {
       const bool linear = bodies[b]->get_material_law().is_linear();
       if (!linear)
-        bodies[b]->linearize_at(body_part(u, offset, b));
+        bodies[b]->linearize_at(body_part<BodyVector>(u, offset, b));
       const auto &K = bodies[b]->get_stiffness_matrix();
       for (types::global_dof_index i = 0; i < K.m(); ++i)
         for (auto it = K.begin(i); it != K.end(i); ++it)
@@ -233,10 +234,8 @@ namespace ddcontact
       std::copy(L.begin(), L.end(), rhs.begin() + offset[b]);
       if (!linear)
       {
-        Vector<double> u_b(K.m()), K_u(K.m());
-        std::copy(
-          u.begin() + offset[b], u.begin() + offset[b + 1], u_b.begin());
-        K.vmult(K_u, u_b);
+        Vector<double> K_u(K.m());
+        K.vmult(K_u, body_part<Vector<double>>(u, offset, b));
         for (types::global_dof_index i = 0; i < K.m(); ++i)
           rhs(i + offset[b]) += K_u(i);
       }
@@ -289,18 +288,17 @@ namespace ddcontact
     Vector<double> r(u.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
     {
-      Vector<double> u_b(bodies[b]->n_dofs()), r_b(bodies[b]->n_dofs());
+      Vector<double> r_b(bodies[b]->n_dofs());
       if (bodies[b]->get_material_law().is_linear())
       {
-        std::copy(
-          u.begin() + offset[b], u.begin() + offset[b + 1], u_b.begin());
-        bodies[b]->get_stiffness_matrix().vmult(r_b, u_b);
+        bodies[b]->get_stiffness_matrix().vmult(
+          r_b, body_part<Vector<double>>(u, offset, b));
         r_b -= bodies[b]->get_load_vector();
       }
       else
       {
         // F(u) - l_a of the linearization at u (which sets the trial state).
-        bodies[b]->linearize_at(body_part(u, offset, b));
+        bodies[b]->linearize_at(body_part<BodyVector>(u, offset, b));
         r_b = bodies[b]->get_load_vector();
         r_b *= -1.;
       }
@@ -425,13 +423,11 @@ namespace ddcontact
     std::vector<std::vector<NodeStatus>> seen;
     bool                                 full_step = false, damped = false;
     unsigned int                         iteration = 0;
-    // Nonlinear bodies: the Newton residual decides as well, relative to
-    // that of the zero iterate.
+    // The Newton residual of the zero iterate: the reference of the
+    // history's residual, and with nonlinear bodies of the stopping test.
     const bool   nonlinear = problem.has_nonlinear_bodies();
-    const double reference =
-      nonlinear
-        ? residual_norm(Vector<double>(u.size()), PointVector(p.size(), 0.))
-        : 0.;
+    const double zero_residual =
+      residual_norm(Vector<double>(u.size()), PointVector(p.size(), 0.));
     for (; iteration < max_iterations; ++iteration)
     {
       const auto active = active_set(u, p, iteration == 0);
@@ -439,8 +435,8 @@ namespace ddcontact
       // Settled: (u, p) solves the linear system of its own active set;
       // with nonlinear bodies once the residual is below the tolerance too.
       const bool settled = full_step && active == seen.back();
-      if (settled && (!nonlinear ||
-                      residual_norm(u, p) <= parameters.tolerance * reference))
+      if (settled && (!nonlinear || residual_norm(u, p) <=
+                                      parameters.tolerance * zero_residual))
         break;
       // A cycle: an active set met before, not the last one (which
       // nonlinear bodies keep while their laws iterate).
@@ -473,8 +469,6 @@ namespace ddcontact
     store_iterate(u, p);
     // The Newton residual relative to that of the zero iterate, for the
     // history (round-off once the active set has settled).
-    const double zero_residual =
-      residual_norm(Vector<double>(u.size()), PointVector(p.size(), 0.));
     final_residual =
       residual_norm(u, p) / (zero_residual > 0 ? zero_residual : 1.);
     if (iteration == max_iterations)

@@ -160,6 +160,11 @@ namespace ddcontact
     void
     respond_to_pressure();
 
+    /** u_0 + u_p: the bodies' displacement under p by the current model
+     * (with a nonlinear body, the warm start of its next Newton loop). */
+    ContactProblem::Iterate
+    prediction() const;
+
     /**
      * Bodies of a nonlinear law (plasticity): the affine model d(x) = d_0 -
      * S x of the interface problem, taken at the pressure p. Every body is
